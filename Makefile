@@ -1,0 +1,52 @@
+# dpd reproducibility package. `make figures`, `make check`, `make test`,
+# `make reproduce`, `make paper`, `make bench`. See README.md.
+SHELL := /bin/bash
+TIER ?= quick
+CC ?= gcc
+GIT_DESCRIBE := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+OPT ?= -O2
+WARN := -std=c11 -Wall -Wextra -Werror
+PKGS := gsl hdf5 libconfig
+ifeq ($(SANITIZE),1)
+  OPT := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+  BUILD := build/asan
+else
+  BUILD := build/release
+endif
+CFLAGS_ALL := $(WARN) $(OPT) -fopenmp -D_DEFAULT_SOURCE
+DEPS_STAMP := build/.deps-ok
+
+SRC := $(filter-out src/main.c,$(wildcard src/*.c))
+OBJ := $(patsubst src/%.c,$(BUILD)/%.o,$(SRC))
+BIN := bin/dpd
+
+.PHONY: all deps test figures check reproduce paper bench bench-peer clean
+all: $(BIN)
+
+# Install any missing Debian package (idempotent, fast when all present).
+deps:
+	@tools/deps
+
+$(DEPS_STAMP): tools/deps
+	@tools/deps && mkdir -p build && touch $@
+
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+
+$(BUILD)/%.o: src/%.c src/*.h | $(DEPS_STAMP)
+	@mkdir -p $(BUILD)
+	@echo "CC $<"
+	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL)"' -c $< -o $@
+
+$(BUILD)/libdpd.a: $(OBJ)
+	ar rcs $@ $^
+
+$(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
+	@mkdir -p bin
+	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
+
+include tests/tests.mk
+include experiments/experiments.mk
+
+clean:
+	rm -rf build bin

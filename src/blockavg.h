@@ -1,0 +1,23 @@
+/* blockavg.h - time series with block-averaged standard errors
+ * (Flyvbjerg & Petersen, J. Chem. Phys. 91, 461, 1989: the error of the mean
+ * of correlated data from the scatter of the means of contiguous blocks). */
+#ifndef DPD_BLOCKAVG_H
+#define DPD_BLOCKAVG_H
+
+#include <stddef.h>
+
+typedef struct {
+    double *v;
+    size_t n, cap;
+} Series;
+
+int    series_push(Series *s, double x);
+void   series_free(Series *s);
+/* Mean and the standard error from nblocks equal contiguous blocks (the
+ * remainder at the start is dropped). With fewer samples than blocks the
+ * error is nan. */
+void   series_stats(const Series *s, int nblocks, double *mean, double *stderr_);
+/* Same for a plain array. */
+void   block_stats(const double *v, size_t n, int nblocks, double *mean, double *stderr_);
+
+#endif

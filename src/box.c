@@ -1,0 +1,42 @@
+/* box.c - periodic and Lees-Edwards boundaries. */
+#include "box.h"
+
+void box_init(Box *b, int dim, const double L[3], double shear_rate)
+{
+    b->dim = dim;
+    for (int d = 0; d < 3; d++) {
+        b->L[d] = (d < dim) ? L[d] : 0.0;
+        b->half[d] = 0.5 * b->L[d];
+        b->inv[d] = (d < dim) ? 1.0 / L[d] : 0.0;
+    }
+    b->shear_rate = shear_rate;
+    b->le_offset = 0.0;
+}
+
+void box_advance(Box *b, double dt)
+{
+    if (b->shear_rate == 0.0) return;
+    b->le_offset = fmod(b->le_offset + b->shear_rate * b->L[1] * dt, b->L[0]);
+    if (b->le_offset < 0.0) b->le_offset += b->L[0];
+}
+
+void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
+{
+    const double jump = b->shear_rate * b->L[1];
+    while (x[1] >= b->L[1]) {
+        x[1] -= b->L[1]; x[0] -= b->le_offset; img[1]++;
+        if (vx1) *vx1 -= jump;
+        if (vx2) *vx2 -= jump;
+    }
+    while (x[1] < 0.0) {
+        x[1] += b->L[1]; x[0] += b->le_offset; img[1]--;
+        if (vx1) *vx1 += jump;
+        if (vx2) *vx2 += jump;
+    }
+    for (int d = 0; d < b->dim; d++) {
+        if (d == 1) continue; /* y done above */
+        double n = floor(x[d] * b->inv[d]);
+        if (n != 0.0) { x[d] -= n * b->L[d]; img[d] += (int)n; }
+        if (x[d] >= b->L[d]) x[d] -= b->L[d]; /* round-off at the upper edge */
+    }
+}

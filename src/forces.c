@@ -1,0 +1,201 @@
+/* forces.c - DPD pair forces and body forces. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "forces.h"
+#include "random.h"
+
+#define R_EPSILON 1e-10   /* pairs closer than this have no direction: skipped */
+
+int forces_init(ForceWork *w, int n, int nbins)
+{
+    memset(w, 0, sizeof *w);
+    w->n = n;
+    w->nbins = nbins;
+    w->buf = malloc((size_t)FORCE_CHUNKS * 3 * (size_t)n * sizeof(double) + 1);
+    if (!w->buf) return -1;
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        w->chunk[c].nbins = nbins;
+        if (nbins > 0) {
+            w->chunk[c].Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double));
+            if (!w->chunk[c].Wbin) { forces_free(w); return -1; }
+        }
+    }
+    return 0;
+}
+
+void forces_free(ForceWork *w)
+{
+    free(w->buf);
+    for (int c = 0; c < FORCE_CHUNKS; c++) free(w->chunk[c].Wbin);
+    memset(w, 0, sizeof *w);
+}
+
+/* w_R = (1 - r/rc)^(s/2), so that w_D = w_R^2 = (1 - r/rc)^s (eqs 6-7). */
+static inline double random_weight(double wc, double s)
+{
+    if (s == 2.0) return wc;
+    if (s == 1.0) return sqrt(wc);
+    if (s == 0.5) return sqrt(sqrt(wc));
+    return pow(wc, 0.5 * s);
+}
+
+void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
+                         double inv_sqrt_dt, double *fc, double *fd, double *fr)
+{
+    const double wc = 1.0 - r / p->rc;                 /* w_C, eq. 5 */
+    const double wr = random_weight(wc, p->s);         /* w_R = sqrt(w_D), eq. 7 */
+    *fc = p->a * wc;                                   /* conservative, eq. 2 */
+    *fd = -p->gamma * wr * wr * e_dot_v;               /* dissipative, eq. 3 */
+    *fr = p->sigma * wr * theta * inv_sqrt_dt;         /* random, eq. 4 */
+}
+
+void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
+                   double xi_axis, double d_axis, const double t[9])
+{
+    const double h = Laxis / nbins;
+    double lo = xi_axis - d_axis, hi = xi_axis;
+    if (lo > hi) { double tmp = lo; lo = hi; hi = tmp; }
+    const double len = hi - lo;
+    (void)axis;
+    if (len < 1e-14) {
+        int b = (int)floor(xi_axis / h);
+        b = ((b % nbins) + nbins) % nbins;
+        for (int k = 0; k < 9; k++) Wbin[9 * b + k] += t[k];
+        return;
+    }
+    int b0 = (int)floor(lo / h), b1 = (int)floor(hi / h);
+    for (int b = b0; b <= b1; b++) {
+        const double s0 = fmax(lo, b * h), s1 = fmin(hi, (b + 1) * h);
+        if (s1 <= s0) continue;
+        const double frac = (s1 - s0) / len;
+        const int bb = ((b % nbins) + nbins) % nbins;
+        for (int k = 0; k < 9; k++) Wbin[9 * bb + k] += frac * t[k];
+    }
+}
+
+static void zero_virial(PairVirial *pv)
+{
+    double *wb = pv->Wbin;
+    int nb = pv->nbins, ax = pv->bin_axis;
+    memset(pv, 0, sizeof *pv);
+    pv->Wbin = wb; pv->nbins = nb; pv->bin_axis = ax;
+    if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
+}
+
+/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial. */
+static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
+                      double *f, PairVirial *pv)
+{
+    const Box *b = &s->box;
+    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
+    const double *x = s->x, *v = s->v_pred;
+    for (int i = i0; i < i1; i++) {
+        const int ti = s->type[i];
+        double fi[3] = {0.0, 0.0, 0.0};
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int j = nl->nbr[k];
+            const PairParams *p = &s->pair[ti][s->type[j]];
+            double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
+            double dvx = v[3 * i] - v[3 * j];
+            box_min_image(b, d, &dvx);
+            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= p->rc * p->rc || r2 < R_EPSILON * R_EPSILON) continue;
+            const double r = sqrt(r2), inv_r = 1.0 / r;
+            const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
+            const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
+                             + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
+            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
+            double F[PAIR_PARTS];
+            dpd_pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
+                                &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
+            const double ft = F[0] + F[1] + F[2];
+            const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
+            fi[0] += fx; fi[1] += fy; fi[2] += fz;
+            f[3 * j] -= fx; f[3 * j + 1] -= fy; f[3 * j + 2] -= fz;
+            if (pv) {
+                for (int q = 0; q < PAIR_PARTS; q++) {
+                    double t[9];
+                    const double g = F[q] * inv_r;
+                    for (int a = 0; a < 3; a++)
+                        for (int c = 0; c < 3; c++) t[3 * a + c] = d[a] * d[c] * g;
+                    for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
+                    if (pv->nbins > 0)
+                        ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
+                                      b->L[pv->bin_axis], x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
+                }
+                pv->epot += 0.5 * p->a * p->rc * (1.0 - r / p->rc) * (1.0 - r / p->rc);
+                const int tj = s->type[j];
+                if (s->types[tj].frozen) {
+                    pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
+                }
+                if (s->types[ti].frozen) {
+                    pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
+                }
+            }
+        }
+        f[3 * i] += fi[0]; f[3 * i + 1] += fi[1]; f[3 * i + 2] += fi[2];
+    }
+}
+
+static void body_forces(System *s)
+{
+    if (!s->has_body_force) return;
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        double sign = 1.0;
+        if (t->body_force_flip_axis >= 0) {
+            const int a = t->body_force_flip_axis;
+            sign = s->x[3 * i + a] < s->box.half[a] ? 1.0 : -1.0;
+        }
+        for (int d = 0; d < 3; d++) s->f[3 * i + d] += sign * t->body_force[d];
+    }
+}
+
+void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
+{
+    const int n = s->n;
+    const size_t stride = 3 * (size_t)n;
+    #pragma omp parallel for schedule(static, 1)
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        double *buf = w->buf + (size_t)c * stride;
+        memset(buf, 0, stride * sizeof(double));
+        /* equal numbers of pairs per chunk, cut at particle boundaries */
+        const size_t np = (size_t)nl->start[n];
+        int i0 = 0, i1 = n;
+        {
+            size_t want0 = np * (size_t)c / FORCE_CHUNKS, want1 = np * (size_t)(c + 1) / FORCE_CHUNKS;
+            int lo = 0, hi = n;
+            while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want0) lo = mid + 1; else hi = mid; }
+            i0 = lo;
+            lo = 0; hi = n;
+            while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want1) lo = mid + 1; else hi = mid; }
+            i1 = (c == FORCE_CHUNKS - 1) ? n : lo;
+        }
+        PairVirial *cv = NULL;
+        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; zero_virial(cv); }
+        pair_loop(s, nl, i0, i1, buf, cv);
+    }
+    #pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < stride; k++) {
+        double sum = 0.0;
+        for (int c = 0; c < FORCE_CHUNKS; c++) sum += w->buf[(size_t)c * stride + k];
+        s->f[k] = sum;
+    }
+    if (pv) {
+        zero_virial(pv);
+        for (int c = 0; c < FORCE_CHUNKS; c++) {
+            const PairVirial *cv = &w->chunk[c];
+            for (int q = 0; q < PAIR_PARTS; q++)
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++) pv->W[q][a][b] += cv->W[q][a][b];
+            pv->epot += cv->epot;
+            for (int t = 0; t < DPD_MAX_TYPES; t++)
+                for (int d = 0; d < 3; d++) pv->frozen_force[t][d] += cv->frozen_force[t][d];
+            if (pv->nbins > 0)
+                for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
+        }
+    }
+    body_forces(s);
+}

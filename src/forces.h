@@ -1,0 +1,48 @@
+/* forces.h - DPD pair forces (Groot & Warren 1997; Mai-Duy et al. 2019 eqs 2-7)
+ * and body forces. Sums are deterministic for any thread count: the pair list
+ * is cut into FORCE_CHUNKS fixed ranges, each accumulates into its own buffer,
+ * and the buffers are added in a fixed order. */
+#ifndef DPD_FORCES_H
+#define DPD_FORCES_H
+
+#include "system.h"
+#include "neighbor.h"
+
+#define FORCE_CHUNKS 4
+
+enum { PART_CONSERVATIVE = 0, PART_DISSIPATIVE = 1, PART_RANDOM = 2, PAIR_PARTS = 3 };
+
+/* Pair virial sum_{i<j} r_ij F_ij (components [a][b] = r_a F_b), kept by part,
+ * and optionally split over slabs along one axis (Irving & Kirkwood 1950). */
+typedef struct {
+    double W[PAIR_PARTS][3][3];
+    double epot;
+    int bin_axis, nbins;      /* nbins = 0: no binned stress */
+    double *Wbin;             /* PAIR_PARTS x nbins x 9 */
+    double frozen_force[DPD_MAX_TYPES][3]; /* force of mobile particles on frozen ones, by frozen type */
+} PairVirial;
+
+typedef struct {
+    double *buf;              /* FORCE_CHUNKS x 3 n */
+    PairVirial chunk[FORCE_CHUNKS];
+    int n, nbins;
+} ForceWork;
+
+int  forces_init(ForceWork *w, int n, int nbins);
+void forces_free(ForceWork *w);
+/* f = pair forces (with v_pred as the velocity) + body forces. If pv != NULL
+ * the virial is accumulated into it (zeroed first; pv->Wbin must hold
+ * PAIR_PARTS x nbins x 9 doubles when nbins > 0). */
+void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv);
+
+/* The three pair force magnitudes along e_ij for one pair (exposed for tests).
+ * theta is the N(0,1) variate; inv_sqrt_dt scales the noise (theta/sqrt(dt)). */
+void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
+                         double inv_sqrt_dt, double *fc, double *fd, double *fr);
+
+/* Distribute one pair term t[a][b] over slabs along axis (segment from the image
+ * of j at x_i - d to x_i); used by forces and tests. */
+void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
+                   double xi_axis, double d_axis, const double t[9]);
+
+#endif

@@ -1,0 +1,43 @@
+/* integrator.c - Groot-Warren velocity Verlet. */
+#include "integrator.h"
+
+double integrate_predict(System *s)
+{
+    const double dt = s->dt, lam = s->lambda;
+    const double old_offset = s->box.le_offset;
+    box_advance(&s->box, dt);
+    double doff = s->box.le_offset - old_offset;
+    if (doff < -s->box.half[0]) doff += s->box.L[0];
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
+        const double *f = s->f + 3 * i;
+        if (t->frozen) {
+            for (int d = 0; d < 3; d++) { x[d] += dt * t->wall_velocity[d]; v[d] = vp[d] = t->wall_velocity[d]; }
+        } else {
+            const double im = 1.0 / t->mass;
+            for (int d = 0; d < 3; d++) {
+                x[d] += dt * v[d] + 0.5 * dt * dt * f[d] * im;
+                vp[d] = v[d] + lam * dt * f[d] * im;
+                v[d] += 0.5 * dt * f[d] * im;
+            }
+        }
+        box_wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+    }
+    s->step++;
+    s->time += dt;
+    return doff;
+}
+
+void integrate_correct(System *s)
+{
+    const double dt = s->dt;
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        const double h = 0.5 * dt / t->mass;
+        for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
+    }
+}

@@ -1,0 +1,19 @@
+/* integrator.h - modified velocity Verlet of Groot & Warren (J. Chem. Phys.
+ * 107, 4423, 1997, eq. 16):
+ *   r(t+dt)  = r + dt v + dt^2 f / 2m
+ *   v~       = v + lambda dt f / m          (velocity the forces see)
+ *   f(t+dt)  = f(r(t+dt), v~(t+dt))
+ *   v(t+dt)  = v + dt (f(t) + f(t+dt)) / 2m
+ * lambda = 0.5 is the plain velocity Verlet. */
+#ifndef DPD_INTEGRATOR_H
+#define DPD_INTEGRATOR_H
+
+#include "system.h"
+
+/* Positions, half-kick and prediction; advances the Lees-Edwards offset and
+ * wraps. Returns the change of the offset. */
+double integrate_predict(System *s);
+/* Second half-kick with the new forces. */
+void integrate_correct(System *s);
+
+#endif

@@ -1,0 +1,107 @@
+/* main.c - the dpd command line. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "run.h"
+#include "params.h"
+
+#ifndef DPD_GIT
+#define DPD_GIT "unknown"
+#endif
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+        "dpd - dissipative particle dynamics for the reproducibility package\n"
+        "\n"
+        "usage:\n"
+        "  dpd run SCENE [--set key=value ...] [--out DIR] [--threads N] [--quiet]\n"
+        "      run a libconfig scene; --set overrides any key (e.g. --set pairs.[0].a=6.5,\n"
+        "      --set measure.profile.bins=40); results go to DIR (default: out/)\n"
+        "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
+        "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
+        "      2019, eqs 14-21), as quantity/value/stderr rows\n"
+        "  dpd --help | --version\n"
+        "\n"
+        "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure\n");
+}
+
+static int cmd_params(int argc, char **argv)
+{
+    double eta = -1, Sc = -1, n = 4, rc = 1.5, m = 1, kBT = 1;
+    int dim = 3;
+    for (int k = 0; k < argc; k++) {
+        if (k + 1 >= argc) { fprintf(stderr, "dpd params: %s needs a value\n", argv[k]); return 1; }
+        const char *o = argv[k];
+        char *end;
+        double v = strtod(argv[++k], &end);
+        if (*end) { fprintf(stderr, "dpd params: %s: '%s' is not a number\n", o, argv[k]); return 1; }
+        if (!strcmp(o, "--eta")) eta = v;
+        else if (!strcmp(o, "--Sc")) Sc = v;
+        else if (!strcmp(o, "--n")) n = v;
+        else if (!strcmp(o, "--rc")) rc = v;
+        else if (!strcmp(o, "--m")) m = v;
+        else if (!strcmp(o, "--kBT")) kBT = v;
+        else if (!strcmp(o, "--dim")) dim = (int)v;
+        else { fprintf(stderr, "dpd params: unknown option %s\n", o); return 1; }
+    }
+    if (eta <= 0 || Sc <= 0 || n <= 0 || rc <= 0 || m <= 0 || kBT <= 0 || (dim != 2 && dim != 3)) {
+        fprintf(stderr, "dpd params: need --eta > 0 and --Sc > 0 (and n, rc, m, kBT > 0, dim 2 or 3)\n");
+        return 1;
+    }
+    ImposedParams p = params_from_eta_sc(dim, eta, Sc, m, kBT, n, rc);
+    printf("quantity\tvalue\tstderr\n");
+    printf("s_%dd\t%.10g\t0\n", dim, p.s);
+    printf("gamma_%dd\t%.10g\t0\n", dim, p.gamma);
+    printf("C_%dd\t%.10g\t0\n", dim, p.C);
+    printf("eta_max_%dd\t%.10g\t0\n", dim, p.eta_max);
+    printf("Sc_min_%dd\t%.10g\t0\n", dim, p.Sc_min);
+    if (!p.valid) {
+        fprintf(stderr, "dpd params: s = %g <= 0: eta must be below %g (eq. %d) or Sc above %g (eq. %d)\n",
+                p.s, p.eta_max, dim == 3 ? 16 : 20, p.Sc_min, dim == 3 ? 17 : 21);
+        return 2;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) { usage(stderr); return 1; }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) { usage(stdout); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("dpd %s\n", DPD_GIT); return 0; }
+    if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
+    if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
+    RunOptions opt = {.outdir = "out"};
+    char **sets = calloc((size_t)argc, sizeof *sets);
+    size_t cl = 1;
+    for (int k = 0; k < argc; k++) cl += strlen(argv[k]) + 1;
+    char *cmdline = calloc(cl, 1);
+    if (!sets || !cmdline) return 4;
+    for (int k = 0; k < argc; k++) { strcat(cmdline, argv[k]); if (k + 1 < argc) strcat(cmdline, " "); }
+    opt.command_line = cmdline;
+    for (int k = 2; k < argc; k++) {
+        const char *a = argv[k];
+        if (!strcmp(a, "--set") || !strcmp(a, "--out") || !strcmp(a, "--threads")) {
+            if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); return 1; }
+            const char *v = argv[++k];
+            if (!strcmp(a, "--set")) sets[opt.noverrides++] = (char *)v;
+            else if (!strcmp(a, "--out")) opt.outdir = v;
+            else {
+                char *end;
+                long t = strtol(v, &end, 10);
+                if (*end || t < 1 || t > 1024) { fprintf(stderr, "dpd run: --threads %s: allowed 1 to 1024\n", v); return 1; }
+                opt.threads = (int)t;
+            }
+        } else if (!strncmp(a, "--set=", 6)) sets[opt.noverrides++] = (char *)a + 6;
+        else if (!strcmp(a, "--quiet")) opt.quiet = 1;
+        else if (a[0] == '-' && a[1]) { fprintf(stderr, "dpd run: unknown option %s\n", a); usage(stderr); return 1; }
+        else if (!opt.scene) opt.scene = a;
+        else { fprintf(stderr, "dpd run: more than one scene given ('%s', '%s')\n", opt.scene, a); return 1; }
+    }
+    if (!opt.scene) { fprintf(stderr, "dpd run: no scene file given\n"); usage(stderr); return 1; }
+    opt.overrides = sets;
+    int rc = run_scene(&opt);
+    free(sets);
+    free(cmdline);
+    return rc;
+}

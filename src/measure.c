@@ -1,0 +1,376 @@
+/* measure.c - measurements and their block statistics. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "measure.h"
+
+static int block_of(const Measure *m, long long sample)
+{
+    long long nb = m->nblocks, ns = m->nsamples_expected > 0 ? m->nsamples_expected : 1;
+    long long b = sample * nb / ns;
+    return (int)(b >= nb ? nb - 1 : b);
+}
+
+int measure_init(Measure *m, const System *s)
+{
+    m->n = s->n;
+    if (m->prof_on) {
+        m->prof = calloc((size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double));
+        m->prof_samples = calloc((size_t)m->nblocks, sizeof(long long));
+        if (!m->prof || !m->prof_samples) return -1;
+    }
+    if (m->rdf_on) {
+        m->rdf_hist = calloc((size_t)m->nblocks * m->rdf_bins, sizeof(double));
+        m->rdf_samples = calloc((size_t)m->nblocks, sizeof(long long));
+        if (!m->rdf_hist || !m->rdf_samples) return -1;
+        long long na = 0, nb = 0;
+        for (int i = 0; i < s->n; i++) {
+            if (s->types[s->type[i]].frozen) continue;
+            if (m->rdf_types[0] < 0 || s->type[i] == m->rdf_types[0]) na++;
+            if (m->rdf_types[1] < 0 || s->type[i] == m->rdf_types[1]) nb++;
+        }
+        double V = s->box.L[0] * s->box.L[1] * (s->box.dim == 3 ? s->box.L[2] : 1.0);
+        /* expected ordered pairs per unit volume of separation */
+        m->rdf_norm_pairs = (double)na * (double)nb / V;
+    }
+    if (m->msd_on) {
+        m->msd_nlags = m->msd_window / m->msd_every + 1;
+        m->msd_norig = m->msd_window / m->msd_origin_every + 1;
+        m->msd_origin_pos = calloc((size_t)m->msd_norig * 3 * s->n, sizeof(double));
+        m->msd_origin_step = malloc((size_t)m->msd_norig * sizeof(long long));
+        m->msd_curve = calloc((size_t)m->msd_norig * m->msd_nlags, sizeof(double));
+        if (!m->msd_origin_pos || !m->msd_origin_step || !m->msd_curve) return -1;
+        for (int k = 0; k < m->msd_norig; k++) m->msd_origin_step[k] = -1;
+        m->msd_count = 0;
+        for (int i = 0; i < s->n; i++)
+            if (!s->types[s->type[i]].frozen && (m->msd_type < 0 || s->type[i] == m->msd_type)) m->msd_count++;
+    }
+    return 0;
+}
+
+void measure_free(Measure *m)
+{
+    series_free(&m->temperature); series_free(&m->pressure); series_free(&m->epot);
+    for (int p = 0; p < STRESS_PARTS; p++)
+        for (int k = 0; k < 9; k++) series_free(&m->P[p][k]);
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) series_free(&m->frozen_force[t][d]);
+    free(m->prof); free(m->prof_samples);
+    free(m->rdf_hist); free(m->rdf_samples);
+    free(m->msd_origin_pos); free(m->msd_origin_step); free(m->msd_curve);
+    series_free(&m->msd_done);
+}
+
+int measure_wants_virial(const Measure *m, long long step)
+{
+    return step >= 0 && step % m->every == 0;
+}
+
+static double volume(const Box *b)
+{
+    return b->L[0] * b->L[1] * (b->dim == 3 ? b->L[2] : 1.0);
+}
+
+static void sample_thermo(Measure *m, const System *s, const PairVirial *pv)
+{
+    double K[9] = {0};
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        const double c[3] = {s->v[3 * i] - box_stream_vx(&s->box, s->x[3 * i + 1]), s->v[3 * i + 1], s->v[3 * i + 2]};
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++) K[3 * a + b] += t->mass * c[a] * c[b];
+    }
+    const double V = volume(&s->box);
+    for (int k = 0; k < 9; k++) {
+        series_push(&m->P[STRESS_KINETIC][k], K[k] / V);
+        for (int p = 0; p < PAIR_PARTS; p++) series_push(&m->P[1 + p][k], pv->W[p][k / 3][k % 3] / V);
+    }
+    const int dim = s->box.dim;
+    double tr = 0.0;
+    for (int a = 0; a < dim; a++) {
+        tr += K[4 * a];
+        for (int p = 0; p < PAIR_PARTS; p++) tr += pv->W[p][a][a];
+    }
+    series_push(&m->pressure, tr / (dim * V));
+    series_push(&m->temperature, system_kinetic_temperature(s));
+    series_push(&m->epot, pv->epot / s->n);
+    for (int t = 0; t < s->ntypes; t++)
+        if (s->types[t].frozen)
+            for (int d = 0; d < 3; d++) series_push(&m->frozen_force[t][d], pv->frozen_force[t][d]);
+}
+
+static void sample_profile(Measure *m, const System *s, const PairVirial *pv, int blk)
+{
+    const int ax = m->prof_axis, nb = m->prof_bins;
+    const double h = s->box.L[ax] / nb;
+    double *P = m->prof + (size_t)blk * nb * PROF_Q;
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        int b = (int)(s->x[3 * i + ax] / h);
+        if (b >= nb) b = nb - 1;
+        if (b < 0) b = 0;
+        double *q = P + (size_t)b * PROF_Q;
+        const double *v = s->v + 3 * i;
+        q[0] += 1.0;
+        q[1] += t->mass;
+        for (int a = 0; a < 3; a++) q[2 + a] += t->mass * v[a];
+        for (int a = 0; a < 3; a++)
+            for (int c = 0; c < 3; c++) q[5 + 3 * a + c] += t->mass * v[a] * v[c];
+    }
+    for (int p = 0; p < PAIR_PARTS; p++)
+        for (int b = 0; b < nb; b++)
+            for (int k = 0; k < 9; k++)
+                P[(size_t)b * PROF_Q + 14 + 9 * p + k] += pv->Wbin[((size_t)p * nb + b) * 9 + k];
+    m->prof_samples[blk]++;
+}
+
+static void sample_rdf(Measure *m, const System *s, const NeighborList *nl, int blk)
+{
+    double *H = m->rdf_hist + (size_t)blk * m->rdf_bins;
+    const double dr = m->rdf_rmax / m->rdf_bins, r2max = m->rdf_rmax * m->rdf_rmax;
+    const int ta = m->rdf_types[0], tb = m->rdf_types[1];
+    for (int i = 0; i < s->n; i++) {
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int j = nl->nbr[k];
+            const int ti = s->type[i], tj = s->type[j];
+            if (s->types[ti].frozen || s->types[tj].frozen) continue;
+            /* count ordered pairs (a in A, b in B) */
+            const int w = ((ta < 0 || ti == ta) && (tb < 0 || tj == tb)) + ((ta < 0 || tj == ta) && (tb < 0 || ti == tb));
+            if (!w) continue;
+            double d[3] = {s->x[3 * i] - s->x[3 * j], s->x[3 * i + 1] - s->x[3 * j + 1], s->x[3 * i + 2] - s->x[3 * j + 2]};
+            box_min_image(&s->box, d, NULL);
+            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            if (r2 >= r2max) continue;
+            int b = (int)(sqrt(r2) / dr);
+            if (b < m->rdf_bins) H[b] += w;
+        }
+    }
+    m->rdf_samples[blk]++;
+}
+
+static void sample_msd(Measure *m, const System *s, long long step)
+{
+    const int n = s->n;
+    /* start an origin */
+    if (step % m->msd_origin_every == 0) {
+        const int slot = (int)((step / m->msd_origin_every) % m->msd_norig);
+        double *o = m->msd_origin_pos + (size_t)slot * 3 * n;
+        for (int i = 0; i < n; i++)
+            for (int d = 0; d < 3; d++)
+                o[3 * s->id[i] + d] = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d];
+        m->msd_origin_step[slot] = step;
+        memset(m->msd_curve + (size_t)slot * m->msd_nlags, 0, (size_t)m->msd_nlags * sizeof(double));
+    }
+    for (int slot = 0; slot < m->msd_norig; slot++) {
+        const long long t0 = m->msd_origin_step[slot];
+        if (t0 < 0 || step - t0 > m->msd_window || (step - t0) % m->msd_every) continue;
+        const int lag = (int)((step - t0) / m->msd_every);
+        const double *o = m->msd_origin_pos + (size_t)slot * 3 * n;
+        double sum = 0.0;
+        for (int i = 0; i < n; i++) {
+            if (s->types[s->type[i]].frozen || (m->msd_type >= 0 && s->type[i] != m->msd_type)) continue;
+            for (int d = 0; d < s->box.dim; d++) {
+                const double dd = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d] - o[3 * s->id[i] + d];
+                sum += dd * dd;
+            }
+        }
+        double *curve = m->msd_curve + (size_t)slot * m->msd_nlags;
+        curve[lag] = sum / m->msd_count;
+        if (step - t0 == m->msd_window) {
+            for (int l = 0; l < m->msd_nlags; l++) series_push(&m->msd_done, curve[l]);
+            m->msd_ndone++;
+            m->msd_origin_step[slot] = -1;
+        }
+    }
+}
+
+void measure_sample(Measure *m, const System *s, const NeighborList *nl, const PairVirial *pv,
+                    long long prod_step)
+{
+    if (prod_step < 0) return;
+    if (m->msd_on && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
+    if (m->rdf_on && prod_step % m->rdf_every == 0)
+        sample_rdf(m, s, nl, block_of(m, prod_step / m->every));
+    if (prod_step % m->every) return;
+    const long long sample = prod_step / m->every;
+    sample_thermo(m, s, pv);
+    if (m->prof_on) sample_profile(m, s, pv, block_of(m, sample));
+}
+
+static void row(FILE *f, const char *name, double v, double se)
+{
+    fprintf(f, "%s\t%.10g\t%.4g\n", name, v, se);
+}
+
+/* Mean and standard error over blocks of per-block values. */
+static void over_blocks(const double *v, int nb, double *mean, double *se)
+{
+    block_stats(v, (size_t)nb, nb, mean, se);
+}
+
+static int write_profile(const Measure *m, const System *s, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/profile.tsv", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    const int nb = m->prof_bins, ax = m->prof_axis, B = m->nblocks;
+    const double h = s->box.L[ax] / nb, Vbin = volume(&s->box) / nb;
+    const int flow = ax == 0 ? 1 : 0;
+    fprintf(f, "# bins along %c; stress = -P[%c][%c] (momentum flux of %c across planes normal to %c)\n",
+            "xyz"[ax], "xyz"[ax], "xyz"[flow], "xyz"[flow], "xyz"[ax]);
+    fprintf(f, "pos\tdensity\tdensity_se\tvx\tvx_se\tvy\tvy_se\tvz\tvz_se\ttemperature\ttemperature_se"
+               "\tstress\tstress_se\tstress_kinetic\tstress_conservative\tstress_dissipative\tstress_random\n");
+    double *tmp = malloc((size_t)B * 10 * sizeof(double));
+    if (!tmp) { fclose(f); return -1; }
+    for (int b = 0; b < nb; b++) {
+        int nbk = 0;
+        for (int k = 0; k < B; k++) {
+            const double *q = m->prof + ((size_t)k * nb + b) * PROF_Q;
+            const double S = (double)m->prof_samples[k];
+            if (S <= 0 || q[1] <= 0) continue;
+            double *o = tmp + 10 * nbk++;
+            o[0] = q[0] / (S * Vbin);
+            for (int a = 0; a < 3; a++) o[1 + a] = q[2 + a] / q[1];
+            /* kinetic P_ab = (sum m v_a v_b - M u_a u_b) / (S V) */
+            double Kab[9], trK = 0.0;
+            for (int a = 0; a < 3; a++)
+                for (int c = 0; c < 3; c++) Kab[3 * a + c] = (q[5 + 3 * a + c] - q[2 + a] * q[2 + c] / q[1]) / (S * Vbin);
+            for (int a = 0; a < s->box.dim; a++) trK += Kab[4 * a];
+            o[4] = trK * S * Vbin / (s->box.dim * q[0]);
+            const int comp = 3 * ax + flow;
+            o[6] = -Kab[comp];
+            for (int p = 0; p < PAIR_PARTS; p++) o[7 + p] = -q[14 + 9 * p + comp] / (S * Vbin);
+            o[5] = o[6] + o[7] + o[8] + o[9];
+        }
+        double mean[10], se[10];
+        for (int c = 0; c < 10; c++) {
+            double col[1024];
+            for (int k = 0; k < nbk && k < 1024; k++) col[k] = tmp[10 * k + c];
+            over_blocks(col, nbk, &mean[c], &se[c]);
+        }
+        fprintf(f, "%.6g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\n",
+                (b + 0.5) * h, mean[0], se[0], mean[1], se[1], mean[2], se[2], mean[3], se[3],
+                mean[4], se[4], mean[5], se[5], mean[6], mean[7], mean[8], mean[9]);
+    }
+    free(tmp);
+    return fclose(f);
+}
+
+static int write_rdf(const Measure *m, const System *s, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/rdf.tsv", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    fprintf(f, "r\tg\tg_se\n");
+    const double dr = m->rdf_rmax / m->rdf_bins;
+    const int B = m->nblocks;
+    for (int b = 0; b < m->rdf_bins; b++) {
+        const double r0 = b * dr, r1 = r0 + dr;
+        const double shell = s->box.dim == 3 ? 4.0 / 3.0 * M_PI * (r1 * r1 * r1 - r0 * r0 * r0)
+                                             : M_PI * (r1 * r1 - r0 * r0);
+        double g[1024];
+        int nbk = 0;
+        for (int k = 0; k < B && nbk < 1024; k++) {
+            if (m->rdf_samples[k] == 0) continue;
+            g[nbk++] = m->rdf_hist[(size_t)k * m->rdf_bins + b] / (m->rdf_samples[k] * m->rdf_norm_pairs * shell);
+        }
+        double mean, se;
+        over_blocks(g, nbk, &mean, &se);
+        fprintf(f, "%.6g\t%.6g\t%.3g\n", r0 + 0.5 * dr, mean, se);
+    }
+    return fclose(f);
+}
+
+static int write_msd(const Measure *m, const System *s, FILE *summary, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/msd.tsv", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    const int L = m->msd_nlags, dim = s->box.dim;
+    const long long no = m->msd_ndone;
+    int nb = m->nblocks;
+    if (no < nb) nb = (int)no;
+    fprintf(f, "# %lld time origins, errors from %d blocks of consecutive origins\n", no, nb);
+    fprintf(f, "t\tmsd\tmsd_se\tD\tD_se\n");
+    double *col = malloc((size_t)(no > 0 ? no : 1) * sizeof(double));
+    if (!col) { fclose(f); return -1; }
+    for (int l = 1; l < L; l++) {
+        const double t = (double)l * m->msd_every * s->dt;
+        for (long long o = 0; o < no; o++) col[o] = m->msd_done.v[o * L + l];
+        double mean, se;
+        block_stats(col, (size_t)no, nb, &mean, &se);
+        fprintf(f, "%.6g\t%.8g\t%.3g\t%.8g\t%.3g\n", t, mean, se, mean / (2 * dim * t), se / (2 * dim * t));
+    }
+    /* D from the slope over the second half of the window, per origin */
+    const int l1 = L - 1, l0 = (L - 1) / 2;
+    const double T1 = l1 * m->msd_every * s->dt, T0 = l0 * m->msd_every * s->dt;
+    for (long long o = 0; o < no; o++)
+        col[o] = (m->msd_done.v[o * L + l1] - m->msd_done.v[o * L + l0]) / (2 * dim * (T1 - T0));
+    double D, Dse;
+    block_stats(col, (size_t)no, nb, &D, &Dse);
+    row(summary, "D", D, Dse);
+    /* flatness of D(t) = msd / (2 d t): late over half-window */
+    for (long long o = 0; o < no; o++)
+        col[o] = (m->msd_done.v[o * L + l1] / T1) / (m->msd_done.v[o * L + l0] / T0);
+    block_stats(col, (size_t)no, nb, &D, &Dse);
+    row(summary, "D_t_ratio_late_half", D, Dse);
+    free(col);
+    return fclose(f);
+}
+
+int measure_write(const Measure *m, const System *s, FILE *summary, const char *dir)
+{
+    double v, se;
+    const int B = m->nblocks;
+    series_stats(&m->temperature, B, &v, &se);
+    row(summary, "temperature", v, se);
+    series_stats(&m->pressure, B, &v, &se);
+    row(summary, "pressure", v, se);
+    series_stats(&m->epot, B, &v, &se);
+    row(summary, "potential_energy_per_particle", v, se);
+    /* shear stress T_xy = -P_yx: x momentum carried across planes normal to y */
+    static const char *part[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
+    const size_t ns = m->P[0][3].n;
+    if (ns > 0) {
+        double *tot = malloc(ns * sizeof(double));
+        if (!tot) return -1;
+        for (size_t k = 0; k < ns; k++) {
+            tot[k] = 0.0;
+            for (int p = 0; p < STRESS_PARTS; p++) tot[k] -= m->P[p][3].v[k];
+        }
+        block_stats(tot, ns, B, &v, &se);
+        row(summary, "stress_xy", v, se);
+        const double rate = s->box.shear_rate;
+        if (rate != 0.0) {
+            for (size_t k = 0; k < ns; k++) tot[k] /= rate;
+            block_stats(tot, ns, B, &v, &se);
+            row(summary, "viscosity", v, se);
+            for (int p = 0; p < STRESS_PARTS; p++) {
+                char name[64];
+                for (size_t k = 0; k < ns; k++) tot[k] = -m->P[p][3].v[k] / rate;
+                block_stats(tot, ns, B, &v, &se);
+                snprintf(name, sizeof name, "viscosity_%s", part[p]);
+                row(summary, name, v, se);
+            }
+        }
+        free(tot);
+    }
+    for (int t = 0; t < s->ntypes; t++) {
+        if (!s->types[t].frozen) continue;
+        for (int d = 0; d < s->box.dim; d++) {
+            char name[96];
+            snprintf(name, sizeof name, "force_on_%s_%c", s->types[t].name, "xyz"[d]);
+            series_stats(&m->frozen_force[t][d], B, &v, &se);
+            row(summary, name, v, se);
+        }
+    }
+    if (m->prof_on && write_profile(m, s, dir)) return -1;
+    if (m->rdf_on && write_rdf(m, s, dir)) return -1;
+    if (m->msd_on && write_msd(m, s, summary, dir)) return -1;
+    return 0;
+}

@@ -1,0 +1,59 @@
+/* measure.h - measurements switched on by the scene: thermodynamics and the
+ * global pressure tensor, binned profiles with the Irving-Kirkwood stress,
+ * the radial distribution function and the mean-square displacement.
+ * Errors are standard errors of the mean over contiguous blocks. */
+#ifndef DPD_MEASURE_H
+#define DPD_MEASURE_H
+
+#include <stdio.h>
+#include "system.h"
+#include "neighbor.h"
+#include "forces.h"
+#include "blockavg.h"
+
+enum { STRESS_KINETIC = 0, STRESS_CONSERVATIVE, STRESS_DISSIPATIVE, STRESS_RANDOM, STRESS_PARTS };
+
+typedef struct {
+    int every;                /* sampling interval (steps) */
+    int nblocks;
+    long long nsamples_expected;
+    /* thermo */
+    Series temperature, pressure, epot;
+    Series P[STRESS_PARTS][9];   /* global pressure tensor by part (P = -T) */
+    /* profile */
+    int prof_on, prof_axis, prof_bins;
+    double *prof;             /* nblocks x bins x PROF_Q sums */
+    long long *prof_samples;  /* per block */
+    /* rdf */
+    int rdf_on, rdf_every, rdf_bins, rdf_types[2];
+    double rdf_rmax;
+    double *rdf_hist;         /* nblocks x bins */
+    long long *rdf_samples;   /* per block */
+    double rdf_norm_pairs;    /* (ordered) pair density normalisation */
+    /* msd */
+    int msd_on, msd_every, msd_window, msd_origin_every, msd_type; /* type -1: all mobile */
+    int msd_nlags, msd_norig;
+    double *msd_origin_pos;   /* norig x 3 n (by id) */
+    long long *msd_origin_step;
+    double *msd_curve;        /* norig x nlags: running sums for active origins */
+    Series msd_done;          /* completed curves, nlags values each, flattened */
+    long long msd_ndone;
+    int msd_count;            /* particles in the selection */
+    /* frozen body forces */
+    Series frozen_force[DPD_MAX_TYPES][3];
+    int n;
+} Measure;
+
+#define PROF_Q (2 + 3 + 9 + 9 * PAIR_PARTS)
+
+int  measure_init(Measure *m, const System *s);
+void measure_free(Measure *m);
+/* Does the force call of this step need the virial? */
+int  measure_wants_virial(const Measure *m, long long step);
+/* Sample after the step is complete; pv holds the virial of this step's forces. */
+void measure_sample(Measure *m, const System *s, const NeighborList *nl, const PairVirial *pv,
+                    long long prod_step);
+/* Write summary rows and the plot tables into dir. */
+int  measure_write(const Measure *m, const System *s, FILE *summary, const char *dir);
+
+#endif

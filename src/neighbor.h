@@ -1,0 +1,38 @@
+/* neighbor.h - linked cells and a Verlet half list (Verlet 1967) with a skin.
+ * Every build also sorts the particles by cell so that neighbours are close in
+ * memory. Lees-Edwards: the cells across the sheared y boundary are chosen from
+ * the current image offset, and the list is rebuilt when twice the largest
+ * displacement plus the change of offset exceeds the skin. */
+#ifndef DPD_NEIGHBOR_H
+#define DPD_NEIGHBOR_H
+
+#include <stddef.h>
+#include "system.h"
+
+typedef struct {
+    double skin, cutoff;      /* cutoff = rc_max + skin */
+    int nc[3];                /* cells per dimension (nc[2] = 1 in 2D) */
+    double cw[3];             /* cell width */
+    int brute_force;          /* box too small for cells: all pairs */
+    int *cell_start;          /* ncells + 1 */
+    int *cell_of, *perm, *count;
+    int *start;               /* n + 1: pairs of i are nbr[start[i] .. start[i+1]) */
+    int *nbr;
+    size_t cap;
+    double *x_ref;            /* positions at the last build (3 n) */
+    int *img_ref;             /* y image counter at the last build */
+    double offset_moved;      /* Lees-Edwards offset travelled since the build */
+    double *scratch;          /* 3 n doubles for permutations */
+    long builds;
+    int n;
+} NeighborList;
+
+int  neighbor_init(NeighborList *nl, const System *s, double skin);
+void neighbor_free(NeighborList *nl);
+/* Rebuild if needed (returns 1 if it rebuilt; particles may be reordered). */
+int  neighbor_update(NeighborList *nl, System *s);
+int  neighbor_build(NeighborList *nl, System *s);
+void neighbor_note_shear(NeighborList *nl, double offset_increment);
+size_t neighbor_pairs(const NeighborList *nl);
+
+#endif

@@ -1,0 +1,53 @@
+/* random.h - counter-based random numbers (Random123 Philox4x32-10,
+ * Salmon et al., SC'11). Key = (seed, stream), counter = (step, min id, max id):
+ * the noise of a pair depends only on the step and on the two stable ids,
+ * never on thread count, particle order or neighbour-list history. */
+#ifndef DPD_RANDOM_H
+#define DPD_RANDOM_H
+
+#include <stdint.h>
+#include <math.h>
+#include <Random123/philox.h>
+
+/* The one registry of stream ids. Never reuse or renumber a stream. */
+enum rng_stream {
+    STREAM_PAIR_NOISE     = 1,  /* theta_ij of eq. 4 */
+    STREAM_INIT_POSITION  = 2,  /* initial placement, counter = (particle id, attempt) */
+    STREAM_INIT_VELOCITY  = 3,  /* Maxwell-Boltzmann start, counter = (particle id) */
+    STREAM_PAIR_NOISE_ROT = 4,  /* reserved: antisymmetric noise of Pan 2008 eq. 15 */
+    STREAM_TEST           = 99
+};
+
+static inline philox4x32_ctr_t rng_block(uint32_t seed, uint32_t stream,
+                                         uint64_t a, uint32_t b, uint32_t c)
+{
+    philox4x32_ctr_t ctr = {{(uint32_t)a, (uint32_t)(a >> 32), b, c}};
+    philox4x32_key_t key = {{seed, stream}};
+    return philox4x32(ctr, key);
+}
+
+/* Uniform in the open interval (0, 1) from 32 random bits. */
+static inline double rng_u01(uint32_t u)
+{
+    return ((double)u + 0.5) * (1.0 / 4294967296.0);
+}
+
+/* Two independent standard normal variates (Box-Muller) from two words. */
+static inline void rng_normal2(uint32_t u1, uint32_t u2, double *z1, double *z2)
+{
+    const double r = sqrt(-2.0 * log(rng_u01(u1)));
+    const double phi = 6.283185307179586 * rng_u01(u2);
+    *z1 = r * cos(phi);
+    *z2 = r * sin(phi);
+}
+
+/* theta_ij = theta_ji ~ N(0,1) for the pair (i, j) at a step (eq. 5). */
+static inline double rng_pair_normal(uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
+{
+    const uint32_t lo = id_i < id_j ? id_i : id_j, hi = id_i < id_j ? id_j : id_i;
+    philox4x32_ctr_t r = rng_block(seed, STREAM_PAIR_NOISE, step, lo, hi);
+    const double rad = sqrt(-2.0 * log(rng_u01(r.v[0])));
+    return rad * cos(6.283185307179586 * rng_u01(r.v[1]));
+}
+
+#endif

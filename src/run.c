@@ -1,0 +1,272 @@
+/* run.c - the time loop, provenance and the outputs of a run. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <errno.h>
+#include <unistd.h>
+#include <sys/stat.h>
+#include <sys/resource.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include "run.h"
+#include "scene.h"
+#include "setup.h"
+#include "neighbor.h"
+#include "forces.h"
+#include "integrator.h"
+#include "measure.h"
+#include "output.h"
+#include "timers.h"
+
+#ifndef DPD_GIT
+#define DPD_GIT "unknown"
+#endif
+#ifndef DPD_CFLAGS
+#define DPD_CFLAGS "unknown"
+#endif
+
+static int mkdir_p(const char *dir)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/') continue;
+        *p = '\0';
+        if (mkdir(buf, 0775) && errno != EEXIST) return -1;
+        *p = '/';
+    }
+    if (mkdir(buf, 0775) && errno != EEXIST) return -1;
+    return access(buf, W_OK);
+}
+
+static int threads_in_use(void)
+{
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+static void progress(long long done, long long total, double t0, int force)
+{
+    static double last = 0.0;
+    const double now = wall_now();
+    if (!force && now - last < 1.0) return;
+    last = now;
+    const double rate = done / (now - t0 + 1e-12);
+    const double eta = rate > 0 ? (total - done) / rate : 0.0;
+    fprintf(stderr, "\rstep %lld/%lld  %.0f steps/s  ETA %02d:%02d:%02d ", done, total, rate,
+            (int)(eta / 3600), (int)fmod(eta / 60, 60), (int)fmod(eta, 60));
+    if (force) fputc('\n', stderr);
+}
+
+typedef struct {
+    double wall0, cpu0, timers[T_COUNT];
+    long long steps_done;
+    int threads;
+    long builds;
+} RunStats;
+
+static void provenance_text(char **buf, size_t *len, const RunOptions *opt, const System *s,
+                            const RunStats *st)
+{
+    FILE *m = open_memstream(buf, len);
+    if (!m) return;
+    char host[256] = "unknown";
+    gethostname(host, sizeof host - 1);
+    time_t now = time(NULL);
+    char date[64];
+    strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    fprintf(m, "key\tvalue\n");
+    fprintf(m, "git_commit\t%s\n", DPD_GIT);
+    fprintf(m, "compiler\t%s\n", __VERSION__);
+    fprintf(m, "flags\t%s\n", DPD_CFLAGS);
+    fprintf(m, "threads\t%d\n", st->threads);
+    fprintf(m, "seed\t%u\n", s->seed);
+    fprintf(m, "cpu_seconds\t%.3f\n", cpu_now() - st->cpu0);
+    fprintf(m, "wall_seconds\t%.3f\n", wall_now() - st->wall0);
+    fprintf(m, "peak_rss_kb\t%ld\n", ru.ru_maxrss);
+    fprintf(m, "date\t%s\n", date);
+    fprintf(m, "host\t%s\n", host);
+    fprintf(m, "scene\t%s\n", opt->scene);
+    fprintf(m, "command\t%s\n", opt->command_line ? opt->command_line : "");
+    fclose(m);
+}
+
+static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s,
+                    const Measure *m, const RunStats *st, const char *prov, const char *summary)
+{
+    int rc = 0;
+    rc |= output_attr_text(o, "/results", "summary_tsv", summary);
+    char *text = scene_text(sc);
+    rc |= output_attr_text(o, "/parameters", "scene", text ? text : "");
+    free(text);
+    rc |= output_attr_text(o, "/parameters", "scene_file", opt->scene);
+    for (int k = 0; k < opt->noverrides; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "set_%d", k);
+        rc |= output_attr_text(o, "/parameters", name, opt->overrides[k]);
+    }
+    /* provenance: one attribute per key */
+    char *copy = strdup(prov), *save = NULL;
+    for (char *line = strtok_r(copy, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        char *tab = strchr(line, '\t');
+        if (!tab || strncmp(line, "key\t", 4) == 0) continue;
+        *tab = '\0';
+        rc |= output_attr_text(o, "/provenance", line, tab + 1);
+    }
+    free(copy);
+    for (int k = 0; k < T_COUNT; k++) rc |= output_attr_double(o, "/timers", TIMER_NAMES[k], st->timers[k]);
+    rc |= output_series(o, "temperature", m->temperature.v, m->temperature.n, m->every, s->dt);
+    rc |= output_series(o, "pressure", m->pressure.v, m->pressure.n, m->every, s->dt);
+    static const char *parts[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
+    for (int p = 0; p < STRESS_PARTS; p++) {
+        char name[64];
+        snprintf(name, sizeof name, "pressure_yx_%s", parts[p]);
+        rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, m->every, s->dt);
+    }
+    static const char *tables[] = {"profile", "rdf", "msd"};
+    for (int k = 0; k < 3; k++) {
+        char f[1100], path[64];
+        snprintf(f, sizeof f, "%s/%s.tsv", opt->outdir, tables[k]);
+        snprintf(path, sizeof path, "/results/%s", tables[k]);
+        if (access(f, R_OK) == 0) rc |= output_tsv(o, path, f);
+    }
+    return rc;
+}
+
+static int check_stable(const System *s, const RunConfig *rc, double *T)
+{
+    *T = system_kinetic_temperature(s);
+    return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
+}
+
+int run_scene(const RunOptions *opt)
+{
+#ifdef _OPENMP
+    if (opt->threads > 0) omp_set_num_threads(opt->threads);
+#endif
+    Scene sc;
+    System s;
+    Measure m;
+    RunConfig rc;
+    if (scene_load(&sc, opt->scene, opt->overrides, opt->noverrides) || setup_from_scene(&sc, &s, &m, &rc)) {
+        fprintf(stderr, "dpd: %s\n", sc.error);
+        scene_free(&sc);
+        return 2;
+    }
+    if (mkdir_p(opt->outdir)) {
+        fprintf(stderr, "dpd: cannot create or write the output directory '%s': %s\n", opt->outdir, strerror(errno));
+        system_free(&s); scene_free(&sc);
+        return 4;
+    }
+    char marker[1100];
+    snprintf(marker, sizeof marker, "%s/INCOMPLETE", opt->outdir);
+    if (write_file_atomic(opt->outdir, "INCOMPLETE", "run started\n", 12)) {
+        fprintf(stderr, "dpd: cannot write in '%s': %s\n", opt->outdir, strerror(errno));
+        system_free(&s); scene_free(&sc);
+        return 4;
+    }
+    RunStats st = {.wall0 = wall_now(), .cpu0 = cpu_now(), .threads = threads_in_use()};
+    NeighborList nl;
+    ForceWork fw;
+    Output out;
+    int status = 0;
+    if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, s.n, m.prof_on ? m.prof_bins : 0)
+        || measure_init(&m, &s) || neighbor_build(&nl, &s)) {
+        fprintf(stderr, "dpd: out of memory\n");
+        return 4;
+    }
+    if (output_open(&out, opt->outdir, &s, rc.trajectory_every > 0)) {
+        fprintf(stderr, "dpd: cannot create the HDF5 file in '%s'\n", opt->outdir);
+        return 4;
+    }
+    double *wbin = m.prof_on ? calloc((size_t)m.prof_bins * PAIR_PARTS * 9, sizeof(double)) : NULL;
+    PairVirial pv = {.bin_axis = m.prof_axis, .nbins = m.prof_on ? m.prof_bins : 0, .Wbin = wbin};
+    const long long total = rc.equilibration + rc.steps;
+    const int show = !opt->quiet && isatty(2);
+    forces_compute(&s, &nl, &fw, NULL);
+    for (long long k = 0; k < total; k++) {
+        double t0 = wall_now();
+        double doff = integrate_predict(&s);
+        neighbor_note_shear(&nl, doff);
+        double t1 = wall_now();
+        if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
+        double t2 = wall_now();
+        const long long prod = (long long)s.step - rc.equilibration;
+        const int want = prod >= 0 && measure_wants_virial(&m, prod);
+        forces_compute(&s, &nl, &fw, want ? &pv : NULL);
+        double t3 = wall_now();
+        integrate_correct(&s);
+        double t4 = wall_now();
+        if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
+        if (s.step % 10 == 0 || want) {
+            double T;
+            if (!check_stable(&s, &rc, &T)) {
+                if (show) fputc('\n', stderr);
+                fprintf(stderr, "dpd: unstable at step %llu (t = %g): kinetic temperature %g is %s "
+                        "(limit %g x kBT); reduce dt (now %g), e.g. to %g\n",
+                        (unsigned long long)s.step, s.time, T, isfinite(T) ? "too high" : "not finite",
+                        rc.max_temperature_ratio, s.dt, 0.5 * s.dt);
+                status = 3;
+                break;
+            }
+        }
+        double t5 = wall_now();
+        if (rc.trajectory_every > 0 && s.step % rc.trajectory_every == 0 && output_frame(&out, &s)) {
+            fprintf(stderr, "dpd: writing the trajectory failed at step %llu\n", (unsigned long long)s.step);
+            status = 4;
+            break;
+        }
+        double t6 = wall_now();
+        st.timers[T_INTEGRATE] += (t1 - t0) + (t4 - t3);
+        st.timers[T_NEIGHBOR] += t2 - t1;
+        st.timers[T_FORCE] += t3 - t2;
+        st.timers[T_MEASURE] += t5 - t4;
+        st.timers[T_OUTPUT] += t6 - t5;
+        st.steps_done++;
+        if (show) progress(k + 1, total, st.wall0, k + 1 == total);
+    }
+    st.builds = nl.builds;
+    if (status == 0) {
+        char *sum = NULL;
+        size_t len = 0;
+        FILE *f = open_memstream(&sum, &len);
+        fprintf(f, "quantity\tvalue\tstderr\n");
+        if (measure_write(&m, &s, f, opt->outdir)) status = 4;
+        const double wall = wall_now() - st.wall0;
+        fprintf(f, "particles\t%d\t0\n", s.n);
+        fprintf(f, "steps\t%lld\t0\n", total);
+        fprintf(f, "cpu_seconds\t%.3f\t0\n", cpu_now() - st.cpu0);
+        fprintf(f, "wall_seconds\t%.3f\t0\n", wall);
+        fprintf(f, "particle_steps_per_second\t%.6g\t0\n", (double)s.n * total / (wall > 0 ? wall : 1e-9));
+        fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
+        fclose(f);
+        char *prov = NULL;
+        size_t plen = 0;
+        provenance_text(&prov, &plen, opt, &s, &st);
+        if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
+        if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
+        if (status == 0 && write_h5(&out, opt, &sc, &s, &m, &st, prov, sum)) status = 4;
+        free(sum);
+        free(prov);
+        if (status == 4) fprintf(stderr, "dpd: writing the results in '%s' failed\n", opt->outdir);
+    }
+    if (output_close(&out, status == 0) && status == 0) {
+        fprintf(stderr, "dpd: closing %s failed\n", out.path);
+        status = 4;
+    }
+    if (status == 0) unlink(marker);
+    free(wbin);
+    measure_free(&m);
+    forces_free(&fw);
+    neighbor_free(&nl);
+    system_free(&s);
+    scene_free(&sc);
+    return status;
+}

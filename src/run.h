@@ -1,0 +1,18 @@
+/* run.h - one simulation from a scene file to its output directory. */
+#ifndef DPD_RUN_H
+#define DPD_RUN_H
+
+typedef struct {
+    const char *scene;
+    char **overrides;
+    int noverrides;
+    const char *outdir;
+    int threads;              /* 0: OpenMP default */
+    const char *command_line;
+    int quiet;
+} RunOptions;
+
+/* Exit status: 0 success, 2 bad input, 3 unstable run, 4 I/O failure. */
+int run_scene(const RunOptions *opt);
+
+#endif

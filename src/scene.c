@@ -1,0 +1,424 @@
+/* scene.c - libconfig scene loading, overrides and validation. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <stdarg.h>
+#include <math.h>
+#include "scene.h"
+
+static char READ_MARK;
+
+static void mark(config_setting_t *s) { if (s) config_setting_set_hook(s, &READ_MARK); }
+static int marked(const config_setting_t *s) { return config_setting_get_hook(s) == &READ_MARK; }
+
+void scene_path(const config_setting_t *s, char *buf, size_t len)
+{
+    const config_setting_t *chain[64];
+    int n = 0;
+    for (const config_setting_t *p = s; p && !config_setting_is_root(p) && n < 64;
+         p = config_setting_parent(p))
+        chain[n++] = p;
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int k = n - 1; k >= 0; k--) {
+        const char *name = config_setting_name(chain[k]);
+        int w;
+        if (name) w = snprintf(buf + used, len - used, "%s%s", used ? "." : "", name);
+        else w = snprintf(buf + used, len - used, "%s[%d]", used ? "." : "", config_setting_index(chain[k]));
+        if (w < 0 || (size_t)w >= len - used) break;
+        used += (size_t)w;
+    }
+}
+
+static int line_of(const config_setting_t *s)
+{
+    for (const config_setting_t *p = s; p; p = config_setting_parent(p)) {
+        int l = config_setting_source_line(p);
+        if (l > 0) return l;
+    }
+    return 0;
+}
+
+int scene_fail(Scene *sc, const config_setting_t *at, const char *fmt, ...)
+{
+    if (sc->failed) return -1;
+    char msg[600], path[256] = "";
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (at) scene_path(at, path, sizeof path);
+    const int line = at ? config_setting_source_line(at) : 0;
+    if (at && line > 0)
+        snprintf(sc->error, sizeof sc->error, "%s:%d: key '%s': %s", sc->file, line, path, msg);
+    else if (at)
+        snprintf(sc->error, sizeof sc->error, "%s: key '%s' (set on the command line or near line %d): %s",
+                 sc->file, path, line_of(at), msg);
+    else
+        snprintf(sc->error, sizeof sc->error, "%s: %s", sc->file, msg);
+    sc->failed = 1;
+    return -1;
+}
+
+static void remember(Scene *sc, const config_setting_t *parent, const char *key)
+{
+    for (int k = 0; k < sc->nasked; k++)
+        if (sc->asked[k].parent == parent && strcmp(sc->asked[k].key, key) == 0) return;
+    if (sc->nasked == sc->capasked) {
+        int cap = sc->capasked ? 2 * sc->capasked : 64;
+        void *p = realloc(sc->asked, (size_t)cap * sizeof *sc->asked);
+        if (!p) return;
+        sc->asked = p;
+        sc->capasked = cap;
+    }
+    sc->asked[sc->nasked].parent = parent;
+    snprintf(sc->asked[sc->nasked].key, sizeof sc->asked[0].key, "%s", key);
+    sc->nasked++;
+}
+
+static config_setting_t *lookup(Scene *sc, const config_setting_t *grp, const char *key)
+{
+    if (!grp) grp = config_root_setting(&sc->cfg);
+    remember(sc, grp, key);
+    config_setting_t *s = config_setting_get_member(grp, key);
+    mark(s);
+    return s;
+}
+
+static int is_number(const config_setting_t *s)
+{
+    int t = config_setting_type(s);
+    return t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64 || t == CONFIG_TYPE_FLOAT;
+}
+
+static double number_of(const config_setting_t *s)
+{
+    switch (config_setting_type(s)) {
+    case CONFIG_TYPE_INT: return config_setting_get_int(s);
+    case CONFIG_TYPE_INT64: return (double)config_setting_get_int64(s);
+    default: return config_setting_get_float(s);
+    }
+}
+
+static const char *type_name(int t)
+{
+    switch (t) {
+    case CONFIG_TYPE_INT: case CONFIG_TYPE_INT64: return "integer";
+    case CONFIG_TYPE_FLOAT: return "number";
+    case CONFIG_TYPE_STRING: return "string";
+    case CONFIG_TYPE_BOOL: return "boolean";
+    case CONFIG_TYPE_ARRAY: return "array";
+    case CONFIG_TYPE_LIST: return "list";
+    case CONFIG_TYPE_GROUP: return "group";
+    default: return "unknown";
+    }
+}
+
+static int check_range(Scene *sc, const config_setting_t *s, double v, double lo, double hi)
+{
+    if (!isfinite(v)) return scene_fail(sc, s, "value %g is not finite; allowed [%g, %g]", v, lo, hi);
+    if (v < lo || v > hi) return scene_fail(sc, s, "value %g out of range; allowed [%g, %g]", v, lo, hi);
+    return 0;
+}
+
+int scene_double(Scene *sc, const config_setting_t *grp, const char *key, double *out,
+                 double def, double lo, double hi, int required)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) {
+        if (required) {
+            char path[256] = "";
+            if (grp && !config_setting_is_root(grp)) scene_path(grp, path, sizeof path);
+            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
+                              "required key '%s%s%s' is missing (a number in [%g, %g])",
+                              path, path[0] ? "." : "", key, lo, hi);
+        }
+        *out = def;
+        return 0;
+    }
+    if (!is_number(s))
+        return scene_fail(sc, s, "expected a number in [%g, %g], found a %s", lo, hi,
+                          type_name(config_setting_type(s)));
+    *out = number_of(s);
+    return check_range(sc, s, *out, lo, hi) ? -1 : 1;
+}
+
+int scene_int(Scene *sc, const config_setting_t *grp, const char *key, long long *out,
+              long long def, long long lo, long long hi, int required)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) {
+        if (required)
+            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
+                              "required key '%s' is missing (an integer in [%lld, %lld])", key, lo, hi);
+        *out = def;
+        return 0;
+    }
+    int t = config_setting_type(s);
+    if (t != CONFIG_TYPE_INT && t != CONFIG_TYPE_INT64)
+        return scene_fail(sc, s, "expected an integer in [%lld, %lld], found a %s", lo, hi, type_name(t));
+    *out = t == CONFIG_TYPE_INT ? config_setting_get_int(s) : config_setting_get_int64(s);
+    if (*out < lo || *out > hi)
+        return scene_fail(sc, s, "value %lld out of range; allowed [%lld, %lld]", *out, lo, hi);
+    return 1;
+}
+
+int scene_bool(Scene *sc, const config_setting_t *grp, const char *key, int *out, int def)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) { *out = def; return 0; }
+    if (config_setting_type(s) != CONFIG_TYPE_BOOL)
+        return scene_fail(sc, s, "expected true or false, found a %s", type_name(config_setting_type(s)));
+    *out = config_setting_get_bool(s);
+    return 1;
+}
+
+int scene_string(Scene *sc, const config_setting_t *grp, const char *key, const char **out,
+                 const char *def, const char *const *allowed, int required)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) {
+        if (required)
+            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
+                              "required key '%s' is missing (a string)", key);
+        *out = def;
+        return 0;
+    }
+    if (config_setting_type(s) != CONFIG_TYPE_STRING)
+        return scene_fail(sc, s, "expected a string, found a %s", type_name(config_setting_type(s)));
+    *out = config_setting_get_string(s);
+    if (allowed) {
+        char list[300] = "";
+        for (int k = 0; allowed[k]; k++) {
+            if (strcmp(allowed[k], *out) == 0) return 1;
+            strncat(list, k ? ", " : "", sizeof list - strlen(list) - 1);
+            strncat(list, allowed[k], sizeof list - strlen(list) - 1);
+        }
+        return scene_fail(sc, s, "value \"%s\" not allowed; allowed: %s", *out, list);
+    }
+    return 1;
+}
+
+int scene_vector(Scene *sc, const config_setting_t *grp, const char *key, double *out, int n,
+                 int *got, double lo, double hi, int required)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) {
+        if (required)
+            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
+                              "required key '%s' is missing (an array of numbers)", key);
+        return 0;
+    }
+    int t = config_setting_type(s);
+    if (t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST)
+        return scene_fail(sc, s, "expected an array of numbers [...], found a %s", type_name(t));
+    const int len = config_setting_length(s);
+    if ((n >= 0 && len != n) || (n < 0 && (len < 1 || len > -n)))
+        return scene_fail(sc, s, "expected %s%d numbers, found %d", n < 0 ? "1 to " : "", n < 0 ? -n : n, len);
+    for (int k = 0; k < len; k++) {
+        config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
+        if (!is_number(e)) return scene_fail(sc, s, "element %d is a %s, expected a number", k, type_name(config_setting_type(e)));
+        out[k] = number_of(e);
+        if (check_range(sc, s, out[k], lo, hi)) return -1;
+    }
+    if (got) *got = len;
+    return 1;
+}
+
+config_setting_t *scene_child(Scene *sc, const config_setting_t *grp, const char *key, int want_type)
+{
+    config_setting_t *s = lookup(sc, grp, key);
+    if (!s) return NULL;
+    if (config_setting_type(s) != want_type) {
+        scene_fail(sc, s, "expected a %s, found a %s", type_name(want_type), type_name(config_setting_type(s)));
+        return NULL;
+    }
+    return s;
+}
+
+static int edit_distance(const char *a, const char *b)
+{
+    int la = (int)strlen(a), lb = (int)strlen(b);
+    if (la > 63 || lb > 63) return 99;
+    int d[64][64];
+    for (int i = 0; i <= la; i++) d[i][0] = i;
+    for (int j = 0; j <= lb; j++) d[0][j] = j;
+    for (int i = 1; i <= la; i++)
+        for (int j = 1; j <= lb; j++) {
+            int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < c) c = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < c) c = d[i][j - 1] + 1;
+            d[i][j] = c;
+        }
+    return d[la][lb];
+}
+
+static int walk_unknown(Scene *sc, config_setting_t *s)
+{
+    const int t = config_setting_type(s);
+    if (!config_setting_is_root(s) && !marked(s)) {
+        const config_setting_t *parent = config_setting_parent(s);
+        const char *name = config_setting_name(s);
+        if (!name) return scene_fail(sc, s, "this element is not read by anything");
+        const char *best = NULL;
+        int bestd = 99;
+        char known[400] = "";
+        for (int k = 0; k < sc->nasked; k++) {
+            if (sc->asked[k].parent != parent) continue;
+            int dd = edit_distance(name, sc->asked[k].key);
+            if (dd < bestd) { bestd = dd; best = sc->asked[k].key; }
+            if (strlen(known) + strlen(sc->asked[k].key) + 3 < sizeof known) {
+                if (known[0]) strcat(known, ", ");
+                strcat(known, sc->asked[k].key);
+            }
+        }
+        if (best && bestd <= 3)
+            return scene_fail(sc, s, "unknown key; did you mean '%s'? (known here: %s)", best, known);
+        return scene_fail(sc, s, "unknown key (known here: %s)", known[0] ? known : "none");
+    }
+    if (t == CONFIG_TYPE_GROUP || t == CONFIG_TYPE_LIST) {
+        const int len = config_setting_length(s);
+        for (int k = 0; k < len; k++) {
+            config_setting_t *c = config_setting_get_elem(s, (unsigned)k);
+            if (t == CONFIG_TYPE_LIST) mark(c);   /* list elements are read as a whole */
+            if (walk_unknown(sc, c)) return -1;
+        }
+    }
+    return 0;
+}
+
+int scene_check_unknown(Scene *sc)
+{
+    return walk_unknown(sc, config_root_setting(&sc->cfg));
+}
+
+/* Deep copy of src into a new member/element of dst. */
+static int copy_setting(config_setting_t *dst_parent, const char *name, const config_setting_t *src)
+{
+    const int t = config_setting_type(src);
+    config_setting_t *d = config_setting_add(dst_parent, name, t);
+    if (!d) return -1;
+    switch (t) {
+    case CONFIG_TYPE_INT: config_setting_set_int(d, config_setting_get_int(src)); break;
+    case CONFIG_TYPE_INT64: config_setting_set_int64(d, config_setting_get_int64(src)); break;
+    case CONFIG_TYPE_FLOAT: config_setting_set_float(d, config_setting_get_float(src)); break;
+    case CONFIG_TYPE_BOOL: config_setting_set_bool(d, config_setting_get_bool(src)); break;
+    case CONFIG_TYPE_STRING: config_setting_set_string(d, config_setting_get_string(src)); break;
+    default: {
+        const int len = config_setting_length(src);
+        for (int k = 0; k < len; k++) {
+            const config_setting_t *e = config_setting_get_elem(src, (unsigned)k);
+            if (copy_setting(d, config_setting_name(e), e)) return -1;
+        }
+    }
+    }
+    return 0;
+}
+
+static int apply_override(Scene *sc, const char *spec)
+{
+    char path[512];
+    const char *eq = strchr(spec, '=');
+    if (!eq || eq == spec || (size_t)(eq - spec) >= sizeof path) {
+        snprintf(sc->error, sizeof sc->error, "--set '%s': expected key=value", spec);
+        return -1;
+    }
+    memcpy(path, spec, (size_t)(eq - spec));
+    path[eq - spec] = '\0';
+    /* parse the value with libconfig itself */
+    config_t tmp;
+    config_init(&tmp);
+    size_t len = strlen(eq + 1) + 16;
+    char *text = malloc(len);
+    if (!text) { config_destroy(&tmp); return -1; }
+    snprintf(text, len, "v = %s;", eq + 1);
+    int ok = config_read_string(&tmp, text);
+    free(text);
+    if (!ok) {
+        snprintf(sc->error, sizeof sc->error, "--set '%s': cannot parse the value: %s", spec, config_error_text(&tmp));
+        config_destroy(&tmp);
+        return -1;
+    }
+    const config_setting_t *val = config_lookup(&tmp, "v");
+    config_setting_t *cur = config_root_setting(&sc->cfg);
+    char *save = NULL, *tok = strtok_r(path, ".", &save);
+    int rc = 0;
+    while (tok) {
+        char *next = strtok_r(NULL, ".", &save);
+        const int t = config_setting_type(cur);
+        if (tok[0] == '[') {
+            int idx = atoi(tok + 1);
+            if ((t != CONFIG_TYPE_LIST && t != CONFIG_TYPE_ARRAY) || idx < 0 || idx >= config_setting_length(cur)) {
+                snprintf(sc->error, sizeof sc->error, "--set '%s': no element %s here", spec, tok);
+                rc = -1; break;
+            }
+            if (!next) {
+                snprintf(sc->error, sizeof sc->error, "--set '%s': replace whole elements by their key", spec);
+                rc = -1; break;
+            }
+            cur = config_setting_get_elem(cur, (unsigned)idx);
+        } else {
+            if (t != CONFIG_TYPE_GROUP) {
+                snprintf(sc->error, sizeof sc->error, "--set '%s': '%s' is inside a %s, not a group", spec, tok, type_name(t));
+                rc = -1; break;
+            }
+            config_setting_t *m = config_setting_get_member(cur, tok);
+            if (!next) {
+                if (m) config_setting_remove(cur, tok);
+                if (copy_setting(cur, tok, val)) {
+                    snprintf(sc->error, sizeof sc->error, "--set '%s': invalid key name", spec);
+                    rc = -1;
+                }
+                break;
+            }
+            if (!m) m = config_setting_add(cur, tok, CONFIG_TYPE_GROUP);
+            if (!m) { snprintf(sc->error, sizeof sc->error, "--set '%s': invalid key '%s'", spec, tok); rc = -1; break; }
+            cur = m;
+        }
+        tok = next;
+    }
+    config_destroy(&tmp);
+    return rc;
+}
+
+int scene_load(Scene *sc, const char *file, char *const *overrides, int noverrides)
+{
+    memset(sc, 0, sizeof *sc);
+    snprintf(sc->file, sizeof sc->file, "%s", file);
+    config_init(&sc->cfg);
+    FILE *fp = fopen(file, "r");
+    if (!fp) {
+        snprintf(sc->error, sizeof sc->error, "%s: cannot open the scene file", file);
+        sc->failed = 1;
+        return -1;
+    }
+    int ok = config_read(&sc->cfg, fp);
+    fclose(fp);
+    if (!ok) {
+        snprintf(sc->error, sizeof sc->error, "%s:%d: syntax error: %s", file,
+                 config_error_line(&sc->cfg), config_error_text(&sc->cfg));
+        sc->failed = 1;
+        return -1;
+    }
+    for (int k = 0; k < noverrides; k++)
+        if (apply_override(sc, overrides[k])) { sc->failed = 1; return -1; }
+    return 0;
+}
+
+void scene_free(Scene *sc)
+{
+    config_destroy(&sc->cfg);
+    free(sc->asked);
+    sc->asked = NULL;
+}
+
+char *scene_text(Scene *sc)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    if (!m) return NULL;
+    config_write(&sc->cfg, m);
+    fclose(m);
+    return buf;
+}

@@ -1,0 +1,312 @@
+/* setup.c - scene to system. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "setup.h"
+#include "random.h"
+
+static const char *const AXES[] = {"x", "y", "z", NULL};
+static const char *const AXES_NONE[] = {"none", "x", "y", "z", NULL};
+static const char *const PLACEMENTS[] = {"random", "lattice", NULL};
+
+typedef struct {
+    long long count;
+    double lo[3], hi[3];
+    int lattice;
+} TypeInit;
+
+static int type_index(const System *s, const char *name)
+{
+    for (int t = 0; t < s->ntypes; t++)
+        if (strcmp(s->types[t].name, name) == 0) return t;
+    return -1;
+}
+
+static int read_types(Scene *sc, System *s, TypeInit *ti)
+{
+    config_setting_t *list = scene_child(sc, NULL, "types", CONFIG_TYPE_LIST);
+    if (!list) return sc->failed ? -1 : scene_fail(sc, NULL, "required key 'types' is missing (a list of groups)");
+    s->ntypes = config_setting_length(list);
+    if (s->ntypes < 1 || s->ntypes > DPD_MAX_TYPES)
+        return scene_fail(sc, list, "%d types; allowed 1 to %d", s->ntypes, DPD_MAX_TYPES);
+    const int dim = s->box.dim;
+    for (int t = 0; t < s->ntypes; t++) {
+        config_setting_t *g = config_setting_get_elem(list, (unsigned)t);
+        if (config_setting_type(g) != CONFIG_TYPE_GROUP)
+            return scene_fail(sc, g, "each type must be a group { name = ...; ... }");
+        ParticleType *pt = &s->types[t];
+        memset(pt, 0, sizeof *pt);
+        const char *name;
+        if (scene_string(sc, g, "name", &name, NULL, NULL, 1) < 0) return -1;
+        if (strlen(name) == 0 || strlen(name) >= sizeof pt->name)
+            return scene_fail(sc, g, "type name must have 1 to %zu characters", sizeof pt->name - 1);
+        if (type_index(s, name) >= 0 && type_index(s, name) < t)
+            return scene_fail(sc, g, "type name \"%s\" used twice", name);
+        snprintf(pt->name, sizeof pt->name, "%s", name);
+        if (scene_double(sc, g, "mass", &pt->mass, 1.0, 1e-12, 1e12, 0) < 0) return -1;
+        if (scene_bool(sc, g, "frozen", &pt->frozen, 0) < 0) return -1;
+        if (scene_vector(sc, g, "velocity", pt->wall_velocity, dim, NULL, -1e6, 1e6, 0) < 0) return -1;
+        if (scene_vector(sc, g, "body_force", pt->body_force, dim, NULL, -1e6, 1e6, 0) < 0) return -1;
+        const char *flip;
+        if (scene_string(sc, g, "body_force_flip_axis", &flip, "none", AXES_NONE, 0) < 0) return -1;
+        pt->body_force_flip_axis = strcmp(flip, "none") == 0 ? -1 : flip[0] - 'x';
+        if (pt->body_force_flip_axis >= dim)
+            return scene_fail(sc, g, "body_force_flip_axis \"%s\" does not exist in %dD", flip, dim);
+        for (int d = 0; d < dim; d++) if (pt->body_force[d] != 0.0 && !pt->frozen) s->has_body_force = 1;
+        /* placement */
+        for (int d = 0; d < 3; d++) { ti[t].lo[d] = 0.0; ti[t].hi[d] = d < dim ? s->box.L[d] : 0.0; }
+        config_setting_t *reg = scene_child(sc, g, "region", CONFIG_TYPE_GROUP);
+        if (sc->failed) return -1;
+        if (reg) {
+            if (scene_vector(sc, reg, "lo", ti[t].lo, dim, NULL, 0.0, 1e9, 1) < 0) return -1;
+            if (scene_vector(sc, reg, "hi", ti[t].hi, dim, NULL, 0.0, 1e9, 1) < 0) return -1;
+            for (int d = 0; d < dim; d++)
+                if (ti[t].hi[d] <= ti[t].lo[d] || ti[t].hi[d] > s->box.L[d])
+                    return scene_fail(sc, reg, "region must satisfy 0 <= lo < hi <= box along %c (lo %g, hi %g, box %g)",
+                                      "xyz"[d], ti[t].lo[d], ti[t].hi[d], s->box.L[d]);
+        }
+        double vol = 1.0;
+        for (int d = 0; d < dim; d++) vol *= ti[t].hi[d] - ti[t].lo[d];
+        double density;
+        long long count;
+        const int hd = scene_double(sc, g, "density", &density, 0.0, 0.0, 1e3, 0);
+        const int hc = scene_int(sc, g, "count", &count, 0, 0, 100000000LL, 0);
+        if (hd < 0 || hc < 0) return -1;
+        if (hd == hc) return scene_fail(sc, g, "give exactly one of 'density' and 'count'");
+        ti[t].count = hd ? llround(density * vol) : count;
+        const char *pl;
+        if (scene_string(sc, g, "placement", &pl, "random", PLACEMENTS, 0) < 0) return -1;
+        ti[t].lattice = strcmp(pl, "lattice") == 0;
+    }
+    return 0;
+}
+
+static int read_pairs(Scene *sc, System *s)
+{
+    config_setting_t *list = scene_child(sc, NULL, "pairs", CONFIG_TYPE_LIST);
+    if (!list) return sc->failed ? -1 : scene_fail(sc, NULL, "required key 'pairs' is missing (a list of groups)");
+    int seen[DPD_MAX_TYPES][DPD_MAX_TYPES] = {{0}};
+    s->rc_max = 0.0;
+    for (int k = 0; k < config_setting_length(list); k++) {
+        config_setting_t *g = config_setting_get_elem(list, (unsigned)k);
+        if (config_setting_type(g) != CONFIG_TYPE_GROUP)
+            return scene_fail(sc, g, "each pair must be a group { types = [\"a\", \"b\"]; ... }");
+        config_setting_t *tl = scene_child(sc, g, "types", CONFIG_TYPE_ARRAY);
+        if (!tl) return sc->failed ? -1 : scene_fail(sc, g, "required key 'types' is missing (two type names)");
+        if (config_setting_length(tl) != 2 || config_setting_type(config_setting_get_elem(tl, 0)) != CONFIG_TYPE_STRING)
+            return scene_fail(sc, tl, "expected two type names, e.g. [\"solvent\", \"solvent\"]");
+        int t2[2];
+        for (int e = 0; e < 2; e++) {
+            const char *nm = config_setting_get_string_elem(tl, e);
+            t2[e] = type_index(s, nm);
+            if (t2[e] < 0) return scene_fail(sc, tl, "unknown type \"%s\"", nm);
+        }
+        if (seen[t2[0]][t2[1]]) return scene_fail(sc, g, "pair (%s, %s) defined twice",
+                                                  s->types[t2[0]].name, s->types[t2[1]].name);
+        seen[t2[0]][t2[1]] = seen[t2[1]][t2[0]] = 1;
+        PairParams p = {.active = 1};
+        if (scene_double(sc, g, "a", &p.a, 0.0, 0.0, 1e5, 1) < 0) return -1;
+        if (scene_double(sc, g, "gamma", &p.gamma, 0.0, 0.0, 1e6, 1) < 0) return -1;
+        if (scene_double(sc, g, "s", &p.s, 2.0, 1e-3, 10.0, 0) < 0) return -1;
+        if (scene_double(sc, g, "rc", &p.rc, 1.0, 1e-3, 1e3, 0) < 0) return -1;
+        int active;
+        if (scene_bool(sc, g, "interact", &active, 1) < 0) return -1;
+        p.active = active;
+        system_set_pair(s, t2[0], t2[1], p);
+    }
+    for (int a = 0; a < s->ntypes; a++)
+        for (int b = a; b < s->ntypes; b++)
+            if (!seen[a][b])
+                return scene_fail(sc, list, "pair (%s, %s) is not defined; every pair of types needs an entry "
+                                  "(use interact = false for none)", s->types[a].name, s->types[b].name);
+    return 0;
+}
+
+static void place_particles(System *s, const TypeInit *ti)
+{
+    const int dim = s->box.dim;
+    int i = 0;
+    for (int t = 0; t < s->ntypes; t++) {
+        double ext[3] = {1, 1, 1};
+        for (int d = 0; d < dim; d++) ext[d] = ti[t].hi[d] - ti[t].lo[d];
+        long long msite[3] = {1, 1, 1};
+        if (ti[t].lattice && ti[t].count > 0) {
+            double vol = 1.0;
+            for (int d = 0; d < dim; d++) vol *= ext[d];
+            const double h = pow(vol / ti[t].count, 1.0 / dim);
+            for (int d = 0; d < dim; d++) msite[d] = llround(ext[d] / h) > 0 ? llround(ext[d] / h) : 1;
+            while (msite[0] * msite[1] * msite[2] < ti[t].count) {
+                int dm = 0;
+                for (int d = 1; d < dim; d++) if (ext[d] / msite[d] > ext[dm] / msite[dm]) dm = d;
+                msite[dm]++;
+            }
+        }
+        for (long long k = 0; k < ti[t].count; k++, i++) {
+            s->id[i] = (uint32_t)i;
+            s->type[i] = (uint8_t)t;
+            double *x = s->x + 3 * i;
+            if (ti[t].lattice) {
+                long long q = k;
+                for (int d = 0; d < dim; d++) {
+                    const long long c = q % msite[d];
+                    q /= msite[d];
+                    x[d] = ti[t].lo[d] + (c + 0.5) * ext[d] / msite[d];
+                }
+            } else {
+                philox4x32_ctr_t r = rng_block(s->seed, STREAM_INIT_POSITION, (uint64_t)i, 0, 0);
+                for (int d = 0; d < dim; d++) x[d] = ti[t].lo[d] + rng_u01(r.v[d]) * ext[d];
+            }
+            for (int d = 0; d < dim; d++) if (x[d] >= s->box.L[d]) x[d] -= s->box.L[d];
+        }
+    }
+}
+
+static void initial_velocities(System *s)
+{
+    double p[3] = {0, 0, 0}, mtot = 0.0;
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        double *v = s->v + 3 * i;
+        if (t->frozen) { for (int d = 0; d < 3; d++) v[d] = t->wall_velocity[d]; continue; }
+        philox4x32_ctr_t r = rng_block(s->seed, STREAM_INIT_VELOCITY, s->id[i], 0, 0);
+        double z[4];
+        rng_normal2(r.v[0], r.v[1], &z[0], &z[1]);
+        rng_normal2(r.v[2], r.v[3], &z[2], &z[3]);
+        const double sd = sqrt(s->kBT / t->mass);
+        for (int d = 0; d < s->box.dim; d++) { v[d] = sd * z[d]; p[d] += t->mass * v[d]; }
+        mtot += t->mass;
+    }
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        double *v = s->v + 3 * i;
+        if (mtot > 0 && s->n_frozen == 0)
+            for (int d = 0; d < s->box.dim; d++) v[d] -= p[d] / mtot;
+        v[0] += box_stream_vx(&s->box, s->x[3 * i + 1]);
+    }
+    memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
+}
+
+static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
+{
+    memset(m, 0, sizeof *m);
+    config_setting_t *g = scene_child(sc, NULL, "measure", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    long long v;
+    if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
+    m->every = (int)v;
+    if (scene_int(sc, g, "blocks", &v, 20, 2, 1000, 0) < 0) return -1;
+    m->nblocks = (int)v;
+    m->nsamples_expected = steps / m->every + 1;
+    if (!g) return 0;
+    config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (p) {
+        const char *ax;
+        m->prof_on = 1;
+        if (scene_string(sc, p, "axis", &ax, "y", AXES, 0) < 0) return -1;
+        m->prof_axis = ax[0] - 'x';
+        if (m->prof_axis >= s->box.dim) return scene_fail(sc, p, "axis \"%s\" does not exist in %dD", ax, s->box.dim);
+        if (scene_int(sc, p, "bins", &v, 20, 1, 100000, 0) < 0) return -1;
+        m->prof_bins = (int)v;
+    }
+    config_setting_t *r = scene_child(sc, g, "rdf", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (r) {
+        m->rdf_on = 1;
+        if (scene_double(sc, r, "rmax", &m->rdf_rmax, s->rc_max, 1e-6, s->rc_max, 0) < 0) return -1;
+        if (scene_int(sc, r, "bins", &v, 100, 1, 100000, 0) < 0) return -1;
+        m->rdf_bins = (int)v;
+        if (scene_int(sc, r, "every", &v, m->every, 1, 1000000, 0) < 0) return -1;
+        m->rdf_every = (int)v;
+        m->rdf_types[0] = m->rdf_types[1] = -1;
+        config_setting_t *tl = scene_child(sc, r, "types", CONFIG_TYPE_ARRAY);
+        if (sc->failed) return -1;
+        if (tl) {
+            if (config_setting_length(tl) != 2) return scene_fail(sc, tl, "expected two type names");
+            for (int e = 0; e < 2; e++) {
+                const char *nm = config_setting_get_string_elem(tl, e);
+                m->rdf_types[e] = nm ? type_index(s, nm) : -1;
+                if (m->rdf_types[e] < 0) return scene_fail(sc, tl, "unknown type \"%s\"", nm ? nm : "(not a string)");
+            }
+        }
+    }
+    config_setting_t *d = scene_child(sc, g, "msd", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (d) {
+        m->msd_on = 1;
+        if (scene_int(sc, d, "every", &v, m->every, 1, 1000000, 0) < 0) return -1;
+        m->msd_every = (int)v;
+        if (scene_int(sc, d, "window", &v, 100 * m->msd_every, 1, 100000000, 1) < 0) return -1;
+        m->msd_window = (int)v;
+        if (scene_int(sc, d, "origin_every", &v, m->msd_window / 10 > 0 ? m->msd_window / 10 : 1, 1, 100000000, 0) < 0) return -1;
+        m->msd_origin_every = (int)v;
+        if (m->msd_window % m->msd_every || m->msd_origin_every % m->msd_every)
+            return scene_fail(sc, d, "window (%d) and origin_every (%d) must be multiples of every (%d)",
+                              m->msd_window, m->msd_origin_every, m->msd_every);
+        if (m->msd_window / m->msd_origin_every + 1 > 1000)
+            return scene_fail(sc, d, "window / origin_every = %d origins in flight; allowed up to 999",
+                              m->msd_window / m->msd_origin_every);
+        if (m->msd_window > steps)
+            return scene_fail(sc, d, "window %d is longer than the run (%lld steps)", m->msd_window, steps);
+        const char *tn;
+        if (scene_string(sc, d, "type", &tn, NULL, NULL, 0) < 0) return -1;
+        m->msd_type = tn ? type_index(s, tn) : -1;
+        if (tn && m->msd_type < 0) return scene_fail(sc, d, "unknown type \"%s\"", tn);
+    }
+    return 0;
+}
+
+int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
+{
+    memset(s, 0, sizeof *s);
+    memset(rc, 0, sizeof *rc);
+    long long v;
+    if (scene_int(sc, NULL, "dimension", &v, 3, 2, 3, 1) < 0) return -1;
+    const int dim = (int)v;
+    double L[3] = {0, 0, 0};
+    if (scene_vector(sc, NULL, "box", L, dim, NULL, 1e-6, 1e6, 1) < 0) return -1;
+    double rate;
+    if (scene_double(sc, NULL, "shear_rate", &rate, 0.0, -1e3, 1e3, 0) < 0) return -1;
+    box_init(&s->box, dim, L, rate);
+    if (scene_double(sc, NULL, "kBT", &s->kBT, 1.0, 0.0, 1e6, 0) < 0) return -1;
+    if (scene_double(sc, NULL, "dt", &s->dt, 0.01, 1e-9, 10.0, 1) < 0) return -1;
+    if (scene_double(sc, NULL, "lambda", &s->lambda, 0.5, 0.0, 1.0, 0) < 0) return -1;
+    if (scene_int(sc, NULL, "seed", &v, 1, 0, 4294967295LL, 0) < 0) return -1;
+    s->seed = (uint32_t)v;
+    if (scene_int(sc, NULL, "steps", &rc->steps, 0, 0, 1000000000000LL, 1) < 0) return -1;
+    if (scene_int(sc, NULL, "equilibration", &rc->equilibration, 0, 0, 1000000000000LL, 0) < 0) return -1;
+    if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
+    if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
+    TypeInit ti[DPD_MAX_TYPES];
+    if (read_types(sc, s, ti)) return -1;
+    if (read_pairs(sc, s)) return -1;
+    for (int d = 0; d < dim; d++)
+        if (s->rc_max + rc->skin > 0.5 * L[d]) {
+            config_setting_t *b = config_lookup(&sc->cfg, "box");
+            return scene_fail(sc, b, "largest rc (%g) plus skin (%g) exceeds half the box along %c (%g); "
+                              "enlarge the box or reduce rc", s->rc_max, rc->skin, "xyz"[d], 0.5 * L[d]);
+        }
+    long long total = 0;
+    int nfrozen = 0;
+    for (int t = 0; t < s->ntypes; t++) {
+        total += ti[t].count;
+        if (s->types[t].frozen) nfrozen += (int)ti[t].count;
+    }
+    if (total < 1 || total > 200000000LL)
+        return scene_fail(sc, NULL, "the scene makes %lld particles; allowed 1 to 2e8", total);
+    config_setting_t *out = scene_child(sc, NULL, "output", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (scene_int(sc, out, "trajectory_every", &v, 0, 0, 1000000000LL, 0) < 0) return -1;
+    rc->trajectory_every = (int)v;
+    if (read_measure(sc, s, m, rc->steps)) return -1;
+    if (scene_check_unknown(sc)) return -1;
+    if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
+    s->box.le_offset = 0.0;
+    s->n_frozen = nfrozen;
+    s->seed = (uint32_t)s->seed;
+    place_particles(s, ti);
+    initial_velocities(s);
+    return 0;
+}

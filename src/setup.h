@@ -1,0 +1,20 @@
+/* setup.h - from a validated scene to a ready system: types, pair table,
+ * initial positions and velocities, measurement and run settings. */
+#ifndef DPD_SETUP_H
+#define DPD_SETUP_H
+
+#include "scene.h"
+#include "system.h"
+#include "measure.h"
+
+typedef struct {
+    long long steps, equilibration;
+    double skin;
+    int trajectory_every;
+    double max_temperature_ratio;  /* blow-up guard: stop if T > this x kBT */
+} RunConfig;
+
+/* Reads every key; on error returns -1 with sc->error set. */
+int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc);
+
+#endif

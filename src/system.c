@@ -1,0 +1,86 @@
+/* system.c - particle storage. */
+#include <stdlib.h>
+#include <string.h>
+#include "system.h"
+
+int system_alloc(System *s, int n)
+{
+    s->n = n;
+    s->x = calloc(3 * (size_t)n, sizeof *s->x);
+    s->v = calloc(3 * (size_t)n, sizeof *s->v);
+    s->f = calloc(3 * (size_t)n, sizeof *s->f);
+    s->v_pred = calloc(3 * (size_t)n, sizeof *s->v_pred);
+    s->img = calloc(3 * (size_t)n, sizeof *s->img);
+    s->id = calloc((size_t)n, sizeof *s->id);
+    s->type = calloc((size_t)n, sizeof *s->type);
+    if (n > 0 && !(s->x && s->v && s->f && s->v_pred && s->img && s->id && s->type)) {
+        system_free(s);
+        return -1;
+    }
+    return 0;
+}
+
+void system_free(System *s)
+{
+    free(s->x); free(s->v); free(s->f); free(s->v_pred);
+    free(s->img); free(s->id); free(s->type);
+    s->x = s->v = s->f = s->v_pred = NULL;
+    s->img = NULL; s->id = NULL; s->type = NULL;
+    s->n = 0;
+}
+
+static void permute_vec3(double *a, const int *perm, int n, double *scratch)
+{
+    for (int k = 0; k < n; k++)
+        memcpy(scratch + 3 * k, a + 3 * perm[k], 3 * sizeof *a);
+    memcpy(a, scratch, 3 * (size_t)n * sizeof *a);
+}
+
+void system_permute(System *s, const int *perm, double *scratch)
+{
+    const int n = s->n;
+    permute_vec3(s->x, perm, n, scratch);
+    permute_vec3(s->v, perm, n, scratch);
+    permute_vec3(s->f, perm, n, scratch);
+    permute_vec3(s->v_pred, perm, n, scratch);
+    int32_t *ti = (int32_t *)scratch;
+    for (int k = 0; k < n; k++) memcpy(ti + 3 * k, s->img + 3 * perm[k], 3 * sizeof *ti);
+    memcpy(s->img, ti, 3 * (size_t)n * sizeof *ti);
+    uint32_t *tu = (uint32_t *)scratch;
+    for (int k = 0; k < n; k++) tu[k] = s->id[perm[k]];
+    memcpy(s->id, tu, (size_t)n * sizeof *tu);
+    uint8_t *tb = (uint8_t *)scratch;
+    for (int k = 0; k < n; k++) tb[k] = s->type[perm[k]];
+    memcpy(s->type, tb, (size_t)n);
+}
+
+int system_dof(const System *s)
+{
+    const int dim = s->box.dim;
+    int mobile = s->n - s->n_frozen;
+    /* Momentum is conserved only without walls and body forces. */
+    int conserved = (s->n_frozen == 0 && !s->has_body_force);
+    return dim * mobile - (conserved ? dim : 0);
+}
+
+double system_kinetic_temperature(const System *s)
+{
+    double sum = 0.0;
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        const double *v = s->v + 3 * i;
+        const double vx = v[0] - box_stream_vx(&s->box, s->x[3 * i + 1]);
+        sum += t->mass * (vx * vx + v[1] * v[1] + v[2] * v[2]);
+    }
+    const int dof = system_dof(s);
+    return dof > 0 ? sum / dof : 0.0;
+}
+
+void system_set_pair(System *s, int ti, int tj, PairParams p)
+{
+    p.sigma = sqrt(2.0 * p.gamma * s->kBT); /* eq. 7: sigma from gamma, never read */
+    s->pair[ti][tj] = p;
+    s->pair[tj][ti] = p;
+    if (p.active && p.rc > s->rc_max) s->rc_max = p.rc;
+}

@@ -1,0 +1,64 @@
+/* system.h - particles, particle types and per-type-pair DPD parameters.
+ *
+ * Units: every quantity is in DPD reduced units (mass m, length rc of the
+ * scene, energy kBT); the code never converts units.
+ * Vectors are stored as 3 doubles even in 2D, where z (and L[2]) is unused. */
+#ifndef DPD_SYSTEM_H
+#define DPD_SYSTEM_H
+
+#include <stdint.h>
+#include <stddef.h>
+#include "box.h"
+
+#define DPD_MAX_TYPES 8
+
+typedef struct {
+    char name[32];
+    double mass;
+    int frozen;               /* frozen particles move at wall_velocity, feel no force */
+    double wall_velocity[3];
+    double body_force[3];     /* per particle */
+    int body_force_flip_axis; /* -1: none; else sign flips in the upper half along this axis */
+} ParticleType;
+
+typedef struct {
+    int active;               /* 0: the pair does not interact at all */
+    double a;                 /* repulsion, eq. 2 */
+    double gamma;             /* dissipation, eq. 3 */
+    double sigma;             /* noise amplitude, eq. 7: sqrt(2 gamma kBT), derived */
+    double s;                 /* w_D = (1 - r/rc)^s, eq. 6 */
+    double rc;
+} PairParams;
+
+typedef struct {
+    Box box;
+    int n;                    /* number of particles */
+    double *x, *v, *f;        /* position, velocity, force: 3 n each */
+    double *v_pred;           /* Groot-Warren predicted velocity: 3 n */
+    int32_t *img;             /* periodic image counters (unwrapped positions): 3 n */
+    uint32_t *id;             /* stable particle id, 0..n-1 */
+    uint8_t *type;
+    int ntypes;
+    ParticleType types[DPD_MAX_TYPES];
+    PairParams pair[DPD_MAX_TYPES][DPD_MAX_TYPES];
+    double rc_max;
+    double kBT;
+    double dt;
+    double lambda;            /* Groot-Warren velocity prediction, lambda = 0.5: velocity Verlet */
+    uint64_t step;
+    double time;
+    uint32_t seed;
+    int has_body_force;
+    int n_frozen;
+} System;
+
+int  system_alloc(System *s, int n);
+void system_free(System *s);
+/* Reorder all per-particle arrays so that particle perm[k] becomes particle k. */
+void system_permute(System *s, const int *perm, double *scratch);
+/* Count of mobile particles and degrees of freedom used for the temperature. */
+int  system_dof(const System *s);
+double system_kinetic_temperature(const System *s);
+void system_set_pair(System *s, int ti, int tj, PairParams p);
+
+#endif

@@ -1,0 +1,223 @@
+#!/usr/bin/env bash
+# tools/test-harness.sh -- self-test of tools/check, tools/mkpaper and
+# tools/render-paper on a fixture tree built in a temporary directory.
+# usage: tools/test-harness.sh [-k]   (-k: keep the fixture and print its path)
+set -uo pipefail
+tools=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)
+keep=0; [ "${1:-}" = -k ] && keep=1
+root=$(mktemp -d "${TMPDIR:-/tmp}/dpd-harness.XXXXXX")
+[ "$keep" = 1 ] && echo "fixture: $root" || trap 'rm -rf "$root"' EXIT
+export DPD_ROOT=$root
+unset TIER MKPAPER_ALLOW_MISSING DPD_EXPERIMENTS_MD
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "ok   - $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL - $1"; [ -n "${2:-}" ] && sed 's/^/       | /' "$2" | head -40; }
+T() { # T DESCRIPTION EXPECTED_RC COMMAND... ; output in $root/out
+    local d=$1 want=$2 rc; shift 2
+    "$@" > "$root/out" 2>&1; rc=$?
+    if [ "$rc" = "$want" ]; then ok "$d (exit $rc)"; else bad "$d: exit $rc, wanted $want" "$root/out"; fi
+}
+has()   { if grep -q -e "$2" "$root/out"; then ok "$1"; else bad "$1: no match for '$2'" "$root/out"; fi; }
+lacks() { if grep -q -e "$2" "$root/out"; then bad "$1: unexpected match for '$2'" "$root/out"; else ok "$1"; fi; }
+in_file() { if grep -q -e "$3" "$2"; then ok "$1"; else bad "$1: no '$3' in ${2#"$root"/}" "$2"; fi; }
+
+tab() { local IFS=$'\t'; printf '%s\n' "$*"; }
+mkexp() { # mkexp ID ; bands rows on stdin (TSV)
+    mkdir -p "$root/experiments/$1"
+    { tab quantity tier lo hi k_sigma paper source; cat; } > "$root/experiments/$1/bands.tsv"
+}
+mkres() { # mkres ID TIER CPU ; summary rows on stdin
+    local d="$root/results/$1/$2"
+    mkdir -p "$d"
+    { tab quantity value stderr; cat; } > "$d/summary.tsv"
+    { tab git_commit abc123; tab compiler gcc; tab flags -O2; tab threads 1
+      tab cpu_seconds "$3"; tab wall_seconds "$3"; tab date 2024-01-01; tab tier "$2"; } > "$d/provenance.tsv"
+}
+
+# ---------------------------------------------------------------- fixture
+mkexp x/y <<EOF2
+$(tab eta quick 28.5 30.5 0 29.08 'fixture: paper +- 5 %')
+$(tab eta paper 28.5 30.5 2 29.08 'fixture')
+$(tab ratio paper 3 inf 0 3.65 'one-sided')
+EOF2
+mkres x/y quick 1.5 <<EOF2
+$(tab eta 29.3170 0.25)
+EOF2
+mkres x/y paper 4321.5 <<EOF2
+$(tab eta 30.9 0.3)
+$(tab ratio 3.71 0)
+EOF2
+mkexp x/out  <<< "$(tab q quick 1 2 0 1.5 fixture)"
+mkres x/out quick 2 <<< "$(tab q 5.5 0.1)"
+mkexp x/miss <<EOF2
+$(tab a quick 1 2 0 - fixture)
+$(tab b quick 1 2 0 - fixture)
+EOF2
+mkres x/miss quick 3 <<< "$(tab a 1.75 0)"
+mkexp x/kappa <<EOF2
+$(tab k2 quick 1 2 2 - 'inside only with 2 sigma')
+$(tab k1 quick 1 2 1 - 'outside with 1 sigma')
+$(tab klo quick 1 2 2 - 'below, inside with 2 sigma')
+EOF2
+mkres x/kappa quick 4 <<EOF2
+$(tab k2 2.3 0.2)
+$(tab k1 2.3 0.2)
+$(tab klo 0.65 0.2)
+EOF2
+mkexp x/nan <<EOF2
+$(tab vnan quick -inf inf 0 - 'nan value')
+$(tab vinf quick -inf inf 0 - 'inf value')
+$(tab senan quick 1 2 3 - 'nan stderr counts as 0')
+$(tab senan_out quick 1 2 3 - 'nan stderr counts as 0')
+EOF2
+mkres x/nan quick 5 <<EOF2
+$(tab vnan nan 0.1)
+$(tab vinf inf 0)
+$(tab senan 1.5 nan)
+$(tab senan_out 2.01 nan)
+EOF2
+mkexp x/nores <<< "$(tab q quick 0 1 0 - fixture)"
+mkexp x/incomplete <<< "$(tab q quick 0 1 0 - fixture)"
+mkres x/incomplete quick 6 <<< "$(tab q 0.5 0)"
+touch "$root/results/x/incomplete/quick/INCOMPLETE"
+mkexp x/paperonly <<< "$(tab q paper 0 1 0 - fixture)"
+mkres x/paperonly paper 7 <<< "$(tab q 0.5 0)"
+cat > "$root/EXPERIMENTS.md" <<'EOF2'
+| experiment | what |
+|---|---|
+| `x/y` | fixture |
+| `x/ghost` | listed, never built |
+EOF2
+mkdir -p "$root/figures/x/y" "$root/data"
+# a 1x1 PNG
+echo 'iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==' \
+    | base64 -d > "$root/figures/x/y/fig.png"
+touch -d '2001-01-01' "$root"/results/x/y/*/summary.tsv
+touch -d '2002-01-01' "$root/figures/x/y/fig.png"
+printf 'phi\teta_r\n0.0119\t1.0273\n0.4940\t5.1700\n' > "$root/data/t.tsv"
+cat > "$root/paper.md" <<'EOF2'
+---
+title: Fixture paper
+---
+
+# Summary
+
+<!-- summary-table -->
+
+# Results
+
+<!-- results: x/y -->
+
+<!-- figure: x/y/fig.png -->
+
+<!-- tsv: data/t.tsv -->
+
+# Environment
+
+<!-- environment -->
+EOF2
+
+# ---------------------------------------------------------------- check
+C="$tools/check"
+T "check: value inside band passes" 0 "$C" x/y
+has "check: PASS row for eta" '^x/y  *eta .*PASS'
+has "check: final count line" '^1 passed, 0 failed$'
+T "check: paper tier (k_sigma=2 widens band, one-sided inf band)" 0 "$C" --tier paper x/y
+has "check: paper tier counted" '^2 passed, 0 failed$'
+T "check: TIER env picks the tier" 0 env TIER=paper "$C" x/y
+has "check: TIER env count" '^2 passed, 0 failed$'
+T "check: value outside band fails" 1 "$C" x/out
+has "check: FAIL row" 'q .*FAIL'
+has "check: count for failure" '^0 passed, 1 failed$'
+T "check: quantity missing from summary.tsv" 1 "$C" x/miss
+has "check: MISSING row" '^x/miss  *b .*MISSING'
+has "check: MISSING counts as failure" '^1 passed, 1 failed$'
+T "check: k_sigma applied" 1 "$C" x/kappa
+has "check: 2.3+-0.2 in [1,2] at k=2 passes" 'k2 .*PASS'
+has "check: 2.3+-0.2 in [1,2] at k=1 fails" 'k1 .*FAIL'
+has "check: 0.65+-0.2 in [1,2] at k=2 passes (low side)" 'klo .*PASS'
+T "check: nan / inf handling" 1 "$C" x/nan
+has "check: nan value fails" 'vnan .*FAIL'
+has "check: inf value fails even in (-inf, inf)" 'vinf .*FAIL'
+has "check: nan stderr counts as 0 (inside)" 'senan  .*PASS'
+has "check: nan stderr counts as 0 (outside)" 'senan_out .*FAIL'
+T "check: no summary.tsv" 1 "$C" x/nores
+has "check: no summary -> MISSING" 'nores .*MISSING'
+T "check: INCOMPLETE result rejected" 1 "$C" experiments/x/incomplete/
+has "check: INCOMPLETE -> MISSING" 'incomplete .*MISSING .*INCOMPLETE'
+T "check: no bands for tier does not fail" 0 "$C" --tier quick x/paperonly
+has "check: no-bands note" '(no bands for tier quick)'
+has "check: zero count" '^0 passed, 0 failed$'
+T "check: unknown experiment fails" 1 "$C" x/nonesuch
+T "check: all experiments by default" 1 "$C"
+has "check: default run lists x/y" '^x/y '
+has "check: default run count" '^5 passed, 8 failed$'
+lacks "check: no awk errors" 'awk:'
+T "check: bad option" 2 "$C" --bogus
+
+# ---------------------------------------------------------------- mkpaper
+M="$tools/mkpaper"; G="$root/build/paper.gen.md"
+T "mkpaper: builds the fixture paper" 0 "$M"
+if [ -f "$G" ]; then
+    in_file "mkpaper: placeholders replaced" "$G" '^| experiment | verdict'
+    if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
+    in_file "mkpaper: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
+    in_file "mkpaper: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 |$'
+    in_file "mkpaper: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
+    in_file "mkpaper: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\]'
+    in_file "mkpaper: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 |$'
+    in_file "mkpaper: summary not run" "$G" '^| `x/nores` | not run |'
+    in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
+    in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
+    in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
+    in_file "mkpaper: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
+    in_file "mkpaper: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
+    in_file "mkpaper: results cpu per tier" "$G" 'CPU time: paper 4321.5 s, quick 1.5 s'
+    in_file "mkpaper: figure line" "$G" '^!\[.*\](figures/x/y/fig.png)$'
+    in_file "mkpaper: tsv table header" "$G" '^| phi | eta_r |$'
+    in_file "mkpaper: tsv table row" "$G" '^| 0.4940 | 5.1700 |$'
+    in_file "mkpaper: environment gcc row" "$G" '^| gcc | '
+    in_file "mkpaper: environment nproc row" "$G" "^| cores (nproc) | $(nproc) |"
+    in_file "mkpaper: front matter kept" "$G" '^title: Fixture paper$'
+else
+    bad "mkpaper: no output $G"
+fi
+
+# figure missing
+mv "$root/figures/x/y/fig.png" "$root/fig.bak"
+rm -f "$G"
+T "mkpaper: missing figure fails" 1 "$M"
+has "mkpaper: message names the placeholder" 'figure: x/y/fig.png'
+if [ -e "$G" ]; then bad "mkpaper: output written despite error"; else ok "mkpaper: no output on error"; fi
+T "mkpaper: MKPAPER_ALLOW_MISSING=1 gives a draft" 0 env MKPAPER_ALLOW_MISSING=1 "$M"
+in_file "mkpaper: draft marks the gap" "$G" 'missing: '
+mv "$root/fig.bak" "$root/figures/x/y/fig.png"
+touch -d '2002-01-01' "$root/figures/x/y/fig.png"
+# figure older than a result
+touch -d '2003-01-01' "$root/results/x/y/quick/summary.tsv"
+T "mkpaper: stale figure fails" 1 "$M"
+has "mkpaper: stale message" 'older than results/x/y/quick/summary.tsv'
+touch -d '2004-01-01' "$root/figures/x/y/fig.png"
+T "mkpaper: fresh figure passes again" 0 "$M"
+# results / tsv missing
+printf '%s\n' '<!-- results: x/nores -->' '<!-- tsv: data/none.tsv -->' '<!-- figure: x/nores/a.svg -->' > "$root/bad.md"
+T "mkpaper: missing result, tsv and figure fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
+has "mkpaper: names results placeholder" 'results: x/nores'
+has "mkpaper: names tsv placeholder" 'tsv: data/none.tsv'
+has "mkpaper: names figure placeholder" 'figure: x/nores/a.svg'
+
+# ---------------------------------------------------------------- render
+if command -v pandoc >/dev/null; then
+    T "render-paper: HTML" 0 "$tools/render-paper"
+    H="$root/build/paper.html"
+    if [ -f "$H" ]; then
+        in_file "render-paper: title from front matter" "$H" '<title>Fixture paper</title>'
+        in_file "render-paper: image embedded" "$H" 'data:image/png;base64'
+        in_file "render-paper: table rendered" "$H" '<table'
+    else bad "render-paper: no $H"; fi
+else
+    echo "skip - render-paper (no pandoc)"
+fi
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
