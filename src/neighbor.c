@@ -2,6 +2,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
+#include <stdint.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include "neighbor.h"
 
 static int cell_index(const NeighborList *nl, const double *x)
@@ -58,6 +62,7 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
 void neighbor_free(NeighborList *nl)
 {
     free(nl->cell_start); free(nl->count); free(nl->cell_of); free(nl->perm);
+    for (int t = 0; t < NL_MAX_THREADS; t++) free(nl->tbuf[t]);
     free(nl->start); free(nl->nbr); free(nl->x_ref); free(nl->img_ref); free(nl->scratch);
     memset(nl, 0, sizeof *nl);
 }
@@ -78,75 +83,110 @@ static void sort_by_cell(NeighborList *nl, System *s)
     system_permute(s, nl->perm, nl->scratch);
 }
 
-static int pair_wanted(const System *s, int i, int j, double cut2)
-{
-    const int ti = s->type[i], tj = s->type[j];
-    if (!s->pair[ti][tj].active) return 0;
-    if (s->types[ti].frozen && s->types[tj].frozen) return 0;
-    double d[3] = {s->x[3 * i] - s->x[3 * j], s->x[3 * i + 1] - s->x[3 * j + 1],
-                   s->x[3 * i + 2] - s->x[3 * j + 2]};
-    box_min_image(&s->box, d, NULL);
-    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2;
-}
+/* Stencil of cell c: the cells holding possible partners through the half
+ * stencil and the shift that brings their particles next to cell c (periodic
+ * images and the Lees-Edwards offset). */
+typedef struct { int cell; double shift[3]; } StencilCell;
 
-/* Cells that can hold neighbours of particles in cell (cx, cy, cz) through
- * the half stencil; returns their count. */
-static int half_stencil(const NeighborList *nl, const Box *b, int cx, int cy, int cz, int *out)
+#define MAX_STENCIL 20
+
+static int half_stencil(const NeighborList *nl, const Box *b, int c, StencilCell *out)
 {
     const int nx = nl->nc[0], ny = nl->nc[1], nz = nl->nc[2];
+    const int cx = c % nx, cz = (c / nx) % nz, cy = c / (nx * nz);
     int m = 0;
     const int zlo = nz > 1 ? -1 : 0, zhi = nz > 1 ? 1 : 0;
-#define CELL(X, Y, Z) ((((X) % nx + nx) % nx) + nx * ((((Z) % nz + nz) % nz) + nz * (((Y) % ny + ny) % ny)))
-    /* dy = +1 row */
     int xlo = cx - 1, xhi = cx + 1;
-    if (cy == ny - 1 && b->shear_rate != 0.0) {
+    const int le = (cy == ny - 1 && b->shear_rate != 0.0);
+    if (le) {
         /* the row above is row 0 seen through the Lees-Edwards image, shifted by +offset */
         xlo = (int)floor((cx * nl->cw[0] - b->le_offset - nl->cutoff) / nl->cw[0]);
         xhi = (int)floor(((cx + 1) * nl->cw[0] - b->le_offset + nl->cutoff) / nl->cw[0]);
         if (xhi - xlo + 1 > nx) xhi = xlo + nx - 1;
     }
+    int off[MAX_STENCIL][3];
     for (int dz = zlo; dz <= zhi; dz++)
-        for (int X = xlo; X <= xhi; X++) out[m++] = CELL(X, cy + 1, cz + dz);
-    /* dy = 0, dz = +1 */
+        for (int X = xlo; X <= xhi; X++) { off[m][0] = X; off[m][1] = cy + 1; off[m][2] = cz + dz; m++; }
     if (nz > 1)
-        for (int dx = -1; dx <= 1; dx++) out[m++] = CELL(cx + dx, cy, cz + 1);
-    /* dy = 0, dz = 0, dx = +1 */
-    out[m++] = CELL(cx + 1, cy, cz);
-#undef CELL
+        for (int dx = -1; dx <= 1; dx++) { off[m][0] = cx + dx; off[m][1] = cy; off[m][2] = cz + 1; m++; }
+    off[m][0] = cx + 1; off[m][1] = cy; off[m][2] = cz; m++;
+    for (int k = 0; k < m; k++) {
+        int w[3];
+        for (int d = 0; d < 3; d++) {
+            const int nd = nl->nc[d];
+            const int q = (int)floor((double)off[k][d] / nd);
+            w[d] = off[k][d] - q * nd;
+            out[k].shift[d] = q * (d < b->dim ? b->L[d] : 0.0);
+        }
+        if (le && off[k][1] == ny) out[k].shift[0] += b->le_offset;
+        out[k].cell = w[0] + nx * (w[2] + nz * w[1]);
+    }
     return m;
 }
 
-static int ensure_capacity(NeighborList *nl, size_t need)
+static int ensure_capacity(int **buf, size_t *cap, size_t need)
 {
-    if (need <= nl->cap) return 0;
-    size_t cap = need + need / 4 + 16;
-    int *p = realloc(nl->nbr, cap * sizeof(int));
+    if (need <= *cap) return 0;
+    size_t nc = need + need / 2 + 1024;
+    int *p = realloc(*buf, nc * sizeof(int));
     if (!p) return -1;
-    nl->nbr = p;
-    nl->cap = cap;
+    *buf = p;
+    *cap = nc;
     return 0;
 }
 
-/* Visit the candidate neighbours of particle i; mode 0 counts, mode 1 fills. */
-static int candidates(const NeighborList *nl, const System *s, int i, double cut2, int *fill)
+static inline int keep_pair(const System *s, int filter, int i, int j)
 {
-    int cnt = 0;
-    if (nl->brute_force) {
-        for (int j = i + 1; j < s->n; j++)
-            if (pair_wanted(s, i, j, cut2)) { if (fill) fill[cnt] = j; cnt++; }
-        return cnt;
+    if (!filter) return 1;
+    const int ti = s->type[i], tj = s->type[j];
+    return s->pair[ti][tj].active && !(s->types[ti].frozen && s->types[tj].frozen);
+}
+
+/* Neighbours of the particles [i0, i1) appended to *buf; counts in start[i+1]. */
+static int build_range(const NeighborList *nl, const System *s, int i0, int i1, int filter,
+                       int **buf, size_t *cap, size_t *len)
+{
+    const double cut2 = nl->cutoff * nl->cutoff;
+    const double *x = s->x;
+    StencilCell st[MAX_STENCIL];
+    int cur_cell = -1, m = 0;
+    for (int i = i0; i < i1; i++) {
+        if (ensure_capacity(buf, cap, *len + (size_t)(s->n - i) + 64)) return -1;
+        size_t before = *len;
+        if (nl->brute_force) {
+            for (int j = i + 1; j < s->n; j++) {
+                if (!keep_pair(s, filter, i, j)) continue;
+                double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
+                box_min_image(&s->box, d, NULL);
+                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2) {
+                    if (ensure_capacity(buf, cap, *len + 1)) return -1;
+                    (*buf)[(*len)++] = j;
+                }
+            }
+            nl->start[i + 1] = (int)(*len - before);
+            continue;
+        }
+        const int c = nl->cell_of[i];
+        if (c != cur_cell) { cur_cell = c; m = half_stencil(nl, &s->box, c, st); }
+        const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
+        int *out = *buf;
+        size_t L = *len;
+        for (int j = i + 1; j < nl->cell_start[c + 1]; j++) {
+            const double dx = xi - x[3 * j], dy = yi - x[3 * j + 1], dz = zi - x[3 * j + 2];
+            if (dx * dx + dy * dy + dz * dz < cut2 && keep_pair(s, filter, i, j)) out[L++] = j;
+        }
+        for (int k = 0; k < m; k++) {
+            const double sx = xi - st[k].shift[0], sy = yi - st[k].shift[1], sz = zi - st[k].shift[2];
+            const int j1 = nl->cell_start[st[k].cell + 1];
+            for (int j = nl->cell_start[st[k].cell]; j < j1; j++) {
+                const double dx = sx - x[3 * j], dy = sy - x[3 * j + 1], dz = sz - x[3 * j + 2];
+                if (dx * dx + dy * dy + dz * dz < cut2 && keep_pair(s, filter, i, j)) out[L++] = j;
+            }
+        }
+        *len = L;
+        nl->start[i + 1] = (int)(L - before);
     }
-    const int c = nl->cell_of[i];
-    const int nx = nl->nc[0], nz = nl->nc[2];
-    const int cx = c % nx, cz = (c / nx) % nz, cy = c / (nx * nz);
-    for (int j = i + 1; j < nl->cell_start[c + 1]; j++)
-        if (pair_wanted(s, i, j, cut2)) { if (fill) fill[cnt] = j; cnt++; }
-    int cells[32];
-    const int m = half_stencil(nl, &s->box, cx, cy, cz, cells);
-    for (int k = 0; k < m; k++)
-        for (int j = nl->cell_start[cells[k]]; j < nl->cell_start[cells[k] + 1]; j++)
-            if (pair_wanted(s, i, j, cut2)) { if (fill) fill[cnt] = j; cnt++; }
-    return cnt;
+    return 0;
 }
 
 int neighbor_build(NeighborList *nl, System *s)
@@ -154,16 +194,43 @@ int neighbor_build(NeighborList *nl, System *s)
     const int n = s->n;
     sort_by_cell(nl, s);
     for (int i = 0; i < n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
-    const double cut2 = nl->cutoff * nl->cutoff;
-    /* pass 1: count */
-    #pragma omp parallel for schedule(dynamic, 256)
-    for (int i = 0; i < n; i++) nl->start[i + 1] = candidates(nl, s, i, cut2, NULL);
+    int filter = s->n_frozen > 0;
+    for (int a = 0; a < s->ntypes; a++)
+        for (int b = 0; b < s->ntypes; b++) if (!s->pair[a][b].active) filter = 1;
+    int failed = 0;
+    /* contiguous ranges per thread, concatenated in order: the list does not
+     * depend on the thread count */
+    #pragma omp parallel
+    {
+        int tid = 0, nth = 1;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+        nth = omp_get_num_threads();
+#endif
+        if (nth > NL_MAX_THREADS) nth = NL_MAX_THREADS;
+        if (tid < nth) {
+            const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
+            nl->tlen[tid] = 0;
+            if (build_range(nl, s, i0, i1, filter, &nl->tbuf[tid], &nl->tcap[tid], &nl->tlen[tid])) {
+                #pragma omp atomic write
+                failed = 1;
+            }
+        }
+        #pragma omp single
+        nl->nthreads_used = nth;
+    }
+    if (failed) return -1;
+    size_t total = 0;
+    for (int t = 0; t < nl->nthreads_used; t++) total += nl->tlen[t];
+    if (total > (size_t)INT32_MAX) return -1;
+    if (ensure_capacity(&nl->nbr, &nl->cap, total + 1)) return -1;
+    size_t at = 0;
+    for (int t = 0; t < nl->nthreads_used; t++) {
+        memcpy(nl->nbr + at, nl->tbuf[t], nl->tlen[t] * sizeof(int));
+        at += nl->tlen[t];
+    }
     nl->start[0] = 0;
     for (int i = 0; i < n; i++) nl->start[i + 1] += nl->start[i];
-    if (ensure_capacity(nl, (size_t)nl->start[n])) return -1;
-    /* pass 2: fill */
-    #pragma omp parallel for schedule(dynamic, 256)
-    for (int i = 0; i < n; i++) candidates(nl, s, i, cut2, nl->nbr + nl->start[i]);
     memcpy(nl->x_ref, s->x, 3 * (size_t)n * sizeof(double));
     for (int i = 0; i < n; i++) nl->img_ref[i] = s->img[3 * i + 1];
     nl->offset_moved = 0.0;

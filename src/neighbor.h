@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include "system.h"
 
+#define NL_MAX_THREADS 64
+
 typedef struct {
     double skin, cutoff;      /* cutoff = rc_max + skin */
     int nc[3];                /* cells per dimension (nc[2] = 1 in 2D) */
@@ -25,6 +27,10 @@ typedef struct {
     double *scratch;          /* 3 n doubles for permutations */
     long builds;
     int n;
+    /* per-thread build buffers */
+    int *tbuf[NL_MAX_THREADS];
+    size_t tcap[NL_MAX_THREADS], tlen[NL_MAX_THREADS];
+    int nthreads_used;
 } NeighborList;
 
 int  neighbor_init(NeighborList *nl, const System *s, double skin);

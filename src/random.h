@@ -41,13 +41,34 @@ static inline void rng_normal2(uint32_t u1, uint32_t u2, double *z1, double *z2)
     *z2 = r * sin(phi);
 }
 
+/* A GSL generator whose words are the Philox blocks of one counter: GSL's
+ * ziggurat (Marsaglia & Tsang 2000, gsl_ran_gaussian_ziggurat) then turns them
+ * into N(0,1) variates. Further blocks, rarely needed, count up in the top
+ * byte of the counter's second word (steps stay below 2^56). */
+typedef struct {
+    philox4x32_ctr_t ctr, out;
+    philox4x32_key_t key;
+    int used;
+} CounterRng;
+
+double rng_counter_normal(CounterRng *c);
+
+static inline void rng_counter_start(CounterRng *c, uint32_t seed, uint32_t stream,
+                                     uint64_t a, uint32_t b, uint32_t d)
+{
+    c->ctr.v[0] = (uint32_t)a; c->ctr.v[1] = (uint32_t)(a >> 32); c->ctr.v[2] = b; c->ctr.v[3] = d;
+    c->key.v[0] = seed; c->key.v[1] = stream;
+    c->out = philox4x32(c->ctr, c->key);
+    c->used = 0;
+}
+
 /* theta_ij = theta_ji ~ N(0,1) for the pair (i, j) at a step (eq. 5). */
 static inline double rng_pair_normal(uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
 {
+    CounterRng c;
     const uint32_t lo = id_i < id_j ? id_i : id_j, hi = id_i < id_j ? id_j : id_i;
-    philox4x32_ctr_t r = rng_block(seed, STREAM_PAIR_NOISE, step, lo, hi);
-    const double rad = sqrt(-2.0 * log(rng_u01(r.v[0])));
-    return rad * cos(6.283185307179586 * rng_u01(r.v[1]));
+    rng_counter_start(&c, seed, STREAM_PAIR_NOISE, step, lo, hi);
+    return rng_counter_normal(&c);
 }
 
 #endif
