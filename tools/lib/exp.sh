@@ -1,0 +1,44 @@
+# tools/lib/exp.sh - sourced by experiments/*/*/run.sh.
+# Environment from tools/run-experiment: DPD (simulator), TIER, OUT (result dir).
+set -euo pipefail
+: "${DPD:?run through tools/run-experiment}" "${OUT:?}" "${TIER:?}"
+mkdir -p "$OUT/runs"
+[ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
+
+# dpd_run NAME SCENE [--set k=v ...]: one simulation into $OUT/runs/NAME.
+dpd_run() {
+    local name=$1 scene=$2; shift 2
+    "$DPD" run "$scene" --out "$OUT/runs/$name" --quiet "$@"
+}
+
+# get NAME QUANTITY -> "value<TAB>stderr" from a run's summary.
+get() {
+    awk -F'\t' -v q="$2" '$1==q{print $2 "\t" $3; f=1} END{exit !f}' "$OUT/runs/$1/summary.tsv" \
+        || { echo "exp.sh: quantity '$2' missing in run '$1'" >&2; return 1; }
+}
+
+# emit QUANTITY VALUE STDERR: a row of the experiment summary.
+emit() { printf '%s\t%s\t%s\n' "$1" "$2" "$3" >> "$OUT/summary.tsv"; }
+
+# emit_from NAME QUANTITY [AS]: copy a run quantity into the summary.
+emit_from() {
+    local v; v=$(get "$1" "$2") || return 1
+    printf '%s\t%s\n' "${3:-$2}" "$v" >> "$OUT/summary.tsv"
+}
+
+
+# emit_diff QUANTITY NAME1 Q1 NAME2 Q2: value1 - value2 with the errors in quadrature.
+emit_diff() {
+    local a b
+    a=$(get "$2" "$3") b=$(get "$4" "$5")
+    awk -F'\t' -v q="$1" -v a="$a" -v b="$b" 'BEGIN{split(a,x,"\t"); split(b,y,"\t");
+        printf "%s\t%.10g\t%.4g\n", q, x[1]-y[1], sqrt(x[2]^2+y[2]^2)}' >> "$OUT/summary.tsv"
+}
+
+# emit_ratio QUANTITY NAME1 Q1 NAME2 Q2: value1 / value2 with first-order error propagation.
+emit_ratio() {
+    local a b
+    a=$(get "$2" "$3") b=$(get "$4" "$5")
+    awk -F'\t' -v q="$1" -v a="$a" -v b="$b" 'BEGIN{split(a,x,"\t"); split(b,y,"\t"); r=x[1]/y[1];
+        printf "%s\t%.10g\t%.4g\n", q, r, (r<0?-r:r)*sqrt((x[2]/x[1])^2+(y[2]/y[1])^2)}' >> "$OUT/summary.tsv"
+}
