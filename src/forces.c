@@ -84,54 +84,87 @@ static void zero_virial(PairVirial *pv)
 }
 
 /* The pair loop for the particles [i0, i1); pv != NULL also sums the virial. */
+/* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
+ * energy and the force on frozen particles. Only on measurement steps. */
+static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
+                              double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
+{
+    const Box *b = &s->box;
+    const double inv_r = 1.0 / r;
+    const PairParams *p = &s->pair[s->type[i]][s->type[j]];
+    for (int q = 0; q < PAIR_PARTS; q++) {
+        double t[9];
+        const double g = F[q] * inv_r;
+        for (int a = 0; a < 3; a++)
+            for (int c = 0; c < 3; c++) t[3 * a + c] = d[a] * d[c] * g;
+        for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
+        if (pv->nbins > 0)
+            ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
+                          b->L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
+    }
+    const double wc = 1.0 - r / p->rc;
+    pv->epot += 0.5 * p->a * p->rc * wc * wc;
+    const int ti = s->type[i], tj = s->type[j];
+    if (s->types[tj].frozen) {
+        pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
+    }
+    if (s->types[ti].frozen) {
+        pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
+    }
+}
+
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                       double *f, PairVirial *pv)
 {
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *x = s->x, *v = s->v_pred;
+    const double rc2_max = s->rc_max * s->rc_max;
+    enum { BATCH = 256 };
+    int near[BATCH];
+    double dd[BATCH][4];
     for (int i = i0; i < i1; i++) {
         const int ti = s->type[i];
         double fi[3] = {0.0, 0.0, 0.0};
-        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            const int j = nl->nbr[k];
-            const PairParams *p = &s->pair[ti][s->type[j]];
-            double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
-            double dvx = v[3 * i] - v[3 * j];
-            box_min_image(b, d, &dvx);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (r2 >= p->rc * p->rc || r2 < R_EPSILON * R_EPSILON) continue;
-            const double r = sqrt(r2), inv_r = 1.0 / r;
-            const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
-            const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
-                             + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
-            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
-            double F[PAIR_PARTS];
-            dpd_pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
-                                &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
-            const double ft = F[0] + F[1] + F[2];
-            const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
-            fi[0] += fx; fi[1] += fy; fi[2] += fz;
-            f[3 * j] -= fx; f[3 * j + 1] -= fy; f[3 * j + 2] -= fz;
-            if (pv) {
-                for (int q = 0; q < PAIR_PARTS; q++) {
-                    double t[9];
-                    const double g = F[q] * inv_r;
-                    for (int a = 0; a < 3; a++)
-                        for (int c = 0; c < 3; c++) t[3 * a + c] = d[a] * d[c] * g;
-                    for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
-                    if (pv->nbins > 0)
-                        ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
-                                      b->L[pv->bin_axis], x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
+            const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
+            /* pass 1, branch free: keep the list entries inside the largest cutoff */
+            int m = 0;
+            for (int k = k0; k < k1; k++) {
+                const int j = nl->nbr[k];
+                double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
+                box_min_image(b, d, NULL);
+                const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                near[m] = j;
+                dd[m][0] = d[0]; dd[m][1] = d[1]; dd[m][2] = d[2]; dd[m][3] = r2;
+                m += (r2 < rc2_max);
+            }
+            /* pass 2: the forces */
+            for (int q = 0; q < m; q++) {
+                const int j = near[q];
+                const PairParams *p = &s->pair[ti][s->type[j]];
+                const double r2 = dd[q][3];
+                if (r2 >= p->rc * p->rc || r2 < R_EPSILON * R_EPSILON) continue;
+                const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
+                double dvx = v[3 * i] - v[3 * j];
+                if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
+                    const double dy = x[3 * i + 1] - x[3 * j + 1];
+                    if (dy > b->half[1]) dvx -= b->shear_rate * b->L[1];
+                    else if (dy < -b->half[1]) dvx += b->shear_rate * b->L[1];
                 }
-                pv->epot += 0.5 * p->a * p->rc * (1.0 - r / p->rc) * (1.0 - r / p->rc);
-                const int tj = s->type[j];
-                if (s->types[tj].frozen) {
-                    pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
-                }
-                if (s->types[ti].frozen) {
-                    pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
-                }
+                const double r = sqrt(r2), inv_r = 1.0 / r;
+                const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
+                const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
+                                 + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
+                const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
+                double F[PAIR_PARTS];
+                dpd_pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
+                                    &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
+                const double ft = F[0] + F[1] + F[2];
+                const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
+                fi[0] += fx; fi[1] += fy; fi[2] += fz;
+                f[3 * j] -= fx; f[3 * j + 1] -= fy; f[3 * j + 2] -= fz;
+                if (pv) accumulate_virial(pv, s, i, j, d, r, F, fx, fy, fz);
             }
         }
         f[3 * i] += fi[0]; f[3 * i + 1] += fi[1]; f[3 * i + 2] += fi[2];

@@ -171,17 +171,26 @@ static int build_range(const NeighborList *nl, const System *s, int i0, int i1, 
         const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
         int *out = *buf;
         size_t L = *len;
+        /* branch-free appends: the test result advances the write index */
         for (int j = i + 1; j < nl->cell_start[c + 1]; j++) {
             const double dx = xi - x[3 * j], dy = yi - x[3 * j + 1], dz = zi - x[3 * j + 2];
-            if (dx * dx + dy * dy + dz * dz < cut2 && keep_pair(s, filter, i, j)) out[L++] = j;
+            out[L] = j;
+            L += (dx * dx + dy * dy + dz * dz < cut2);
         }
         for (int k = 0; k < m; k++) {
             const double sx = xi - st[k].shift[0], sy = yi - st[k].shift[1], sz = zi - st[k].shift[2];
             const int j1 = nl->cell_start[st[k].cell + 1];
             for (int j = nl->cell_start[st[k].cell]; j < j1; j++) {
                 const double dx = sx - x[3 * j], dy = sy - x[3 * j + 1], dz = sz - x[3 * j + 2];
-                if (dx * dx + dy * dy + dz * dz < cut2 && keep_pair(s, filter, i, j)) out[L++] = j;
+                out[L] = j;
+                L += (dx * dx + dy * dy + dz * dz < cut2);
             }
+        }
+        if (filter) {   /* drop frozen-frozen and non-interacting pairs */
+            size_t w = before;
+            for (size_t q = before; q < L; q++)
+                if (keep_pair(s, 1, i, out[q])) out[w++] = out[q];
+            L = w;
         }
         *len = L;
         nl->start[i + 1] = (int)(L - before);

@@ -142,9 +142,9 @@ int output_series(Output *o, const char *name, const double *v, size_t n, int ev
     return rc;
 }
 
-static hid_t extensible(hid_t g, const char *name, hid_t type, int cols)
+static hid_t extensible(hid_t g, const char *name, hid_t type, int cols, int dim)
 {
-    hsize_t dims[3] = {0, 0, 3}, maxd[3] = {H5S_UNLIMITED, 0, 3}, chunk[3] = {1, 0, 3};
+    hsize_t dims[3] = {0, 0, (hsize_t)dim}, maxd[3] = {H5S_UNLIMITED, 0, (hsize_t)dim}, chunk[3] = {1, 0, (hsize_t)dim};
     int rank = cols > 0 ? 3 : 1;
     dims[1] = maxd[1] = chunk[1] = (hsize_t)(cols > 0 ? cols : 1);
     hid_t sp = H5Screate_simple(rank, dims, maxd);
@@ -195,18 +195,28 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
         hid_t de = H5Dcreate2(box, "edges", H5T_NATIVE_DOUBLE, spn, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         H5Dwrite(de, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s->box.L);
         H5Dclose(de); H5Sclose(spn); H5Gclose(box);
+        /* species (time independent), in id order like the frames */
+        int *sp_id = malloc((size_t)s->n * sizeof(int) + 1);
+        if (!sp_id) return -1;
+        for (int i = 0; i < s->n; i++) sp_id[s->id[i]] = s->type[i];
+        hsize_t nn = (hsize_t)s->n;
+        hid_t sps = H5Screate_simple(1, &nn, NULL);
+        hid_t all = ensure_group(o->file, "/particles/all");
+        hid_t dsp = H5Dcreate2(all, "species", H5T_NATIVE_INT, sps, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        if (dsp >= 0) { H5Dwrite(dsp, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, sp_id); H5Dclose(dsp); }
+        H5Sclose(sps); H5Gclose(all); free(sp_id);
         hid_t pg = ensure_group(o->file, "/particles/all/position");
-        o->pos = extensible(pg, "value", H5T_NATIVE_DOUBLE, s->n);
-        o->step = extensible(pg, "step", H5T_NATIVE_LLONG, 0);
-        o->time = extensible(pg, "time", H5T_NATIVE_DOUBLE, 0);
+        o->pos = extensible(pg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
+        o->step = extensible(pg, "step", H5T_NATIVE_LLONG, 0, 1);
+        o->time = extensible(pg, "time", H5T_NATIVE_DOUBLE, 0, 1);
         H5Gclose(pg);
         hid_t vg = ensure_group(o->file, "/particles/all/velocity");
-        o->vel = extensible(vg, "value", H5T_NATIVE_DOUBLE, s->n);
+        o->vel = extensible(vg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
         H5Lcreate_hard(o->file, "/particles/all/position/step", vg, "step", H5P_DEFAULT, H5P_DEFAULT);
         H5Lcreate_hard(o->file, "/particles/all/position/time", vg, "time", H5P_DEFAULT, H5P_DEFAULT);
         H5Gclose(vg);
         hid_t ig = ensure_group(o->file, "/particles/all/image");
-        o->img = extensible(ig, "value", H5T_NATIVE_INT, s->n);
+        o->img = extensible(ig, "value", H5T_NATIVE_INT, s->n, dim);
         H5Lcreate_hard(o->file, "/particles/all/position/step", ig, "step", H5P_DEFAULT, H5P_DEFAULT);
         H5Lcreate_hard(o->file, "/particles/all/position/time", ig, "time", H5P_DEFAULT, H5P_DEFAULT);
         H5Gclose(ig);
@@ -215,13 +225,13 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     return 0;
 }
 
-static int append(hid_t d, hid_t type, long long frame, int cols, const void *buf)
+static int append(hid_t d, hid_t type, long long frame, int cols, int dim, const void *buf)
 {
     const int rank = cols > 0 ? 3 : 1;
-    hsize_t dims[3] = {(hsize_t)frame + 1, (hsize_t)(cols > 0 ? cols : 1), 3};
+    hsize_t dims[3] = {(hsize_t)frame + 1, (hsize_t)(cols > 0 ? cols : 1), (hsize_t)dim};
     if (H5Dset_extent(d, dims) < 0) return -1;
     hid_t fs = H5Dget_space(d);
-    hsize_t start[3] = {(hsize_t)frame, 0, 0}, count[3] = {1, dims[1], 3};
+    hsize_t start[3] = {(hsize_t)frame, 0, 0}, count[3] = {1, dims[1], (hsize_t)dim};
     H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL);
     hid_t ms = H5Screate_simple(rank, count, NULL);
     herr_t rc = H5Dwrite(d, type, ms, fs, H5P_DEFAULT, buf);
@@ -238,15 +248,16 @@ int output_frame(Output *o, const System *s)
     int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
     if (!buf || !ib) { free(buf); free(ib); return -1; }
     int rc = 0;
-    for (int i = 0; i < n; i++) memcpy(buf + 3 * s->id[i], s->x + 3 * i, 3 * sizeof(double));
-    rc |= append(o->pos, H5T_NATIVE_DOUBLE, o->frames, n, buf);
-    for (int i = 0; i < n; i++) memcpy(buf + 3 * s->id[i], s->v + 3 * i, 3 * sizeof(double));
-    rc |= append(o->vel, H5T_NATIVE_DOUBLE, o->frames, n, buf);
-    for (int i = 0; i < n; i++) memcpy(ib + 3 * s->id[i], s->img + 3 * i, 3 * sizeof(int));
-    rc |= append(o->img, H5T_NATIVE_INT, o->frames, n, ib);
+    const int dim = s->box.dim;
+    for (int i = 0; i < n; i++) memcpy(buf + dim * s->id[i], s->x + 3 * i, dim * sizeof(double));
+    rc |= append(o->pos, H5T_NATIVE_DOUBLE, o->frames, n, dim, buf);
+    for (int i = 0; i < n; i++) memcpy(buf + dim * s->id[i], s->v + 3 * i, dim * sizeof(double));
+    rc |= append(o->vel, H5T_NATIVE_DOUBLE, o->frames, n, dim, buf);
+    for (int i = 0; i < n; i++) memcpy(ib + dim * s->id[i], s->img + 3 * i, dim * sizeof(int));
+    rc |= append(o->img, H5T_NATIVE_INT, o->frames, n, dim, ib);
     long long st = (long long)s->step;
-    rc |= append(o->step, H5T_NATIVE_LLONG, o->frames, 0, &st);
-    rc |= append(o->time, H5T_NATIVE_DOUBLE, o->frames, 0, &s->time);
+    rc |= append(o->step, H5T_NATIVE_LLONG, o->frames, 0, 1, &st);
+    rc |= append(o->time, H5T_NATIVE_DOUBLE, o->frames, 0, 1, &s->time);
     free(buf); free(ib);
     o->frames++;
     return rc;

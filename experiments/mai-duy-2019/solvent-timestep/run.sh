@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# How large a step the stiff mai-duy-2019 solvent (dissipative relaxation time
+# m / (gamma sum_j w_D) ~ 0.005) tolerates with the Groot-Warren velocity Verlet
+# (lambda = 0.5): kinetic temperature and Lees-Edwards viscosity against dt, at a
+# fixed physical run length. Sets the step of the tiers of the B experiments.
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) DTS="0.005 0.01 0.015 0.02"; T_RUN=10; T_EQ=2; box=(--set 'box=[8.0,8.0,8.0]') ;;
+    paper) DTS="0.0025 0.005 0.0075 0.01 0.0125 0.015 0.0175 0.02"; T_RUN=40; T_EQ=2; box=() ;;
+esac
+printf 'dt\tT\tT_se\teta\teta_se\tcpu_seconds\n' > "$OUT/dt-scan.tsv"
+best=0 k=0
+for dt in $DTS; do
+    steps=$(awk -v t=$T_RUN -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
+    eq=$(awk -v t=$T_EQ -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
+    every=$(awk -v d=$dt 'BEGIN{e = int(0.05/d + 0.5); print (e < 1 ? 1 : e)}')   # sample every 0.05 time units
+    if dpd_run dt$dt solvent-shear.cfg "${box[@]}" --set dt=$dt --set steps=$steps --set equilibration=$eq \
+        --set measure.every=$every --set "seed=$((40190 + k))"; then
+        emit_from dt$dt temperature "T_dt$dt"
+        emit_from dt$dt viscosity "eta_dt$dt"
+        T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(get dt$dt cpu_seconds | cut -f1)
+        printf '%s\t%s\t%s\t%s\n' "$dt" "$T" "$eta" "$cpu" >> "$OUT/dt-scan.tsv"
+        # largest dt of the scan whose temperature is within 1 % of kBT = 1 (3 stderr allowed)
+        best=$(printf '%s\n' "$T" | awk -F'\t' -v d=$dt -v b=$best '{x=$1-1; if (x<0) x=-x; print (x <= 0.01 + 3*$2 && d > b) ? d : b}')
+    else
+        echo "dt = $dt: unstable (dpd exited non-zero); recorded as a gap" >&2
+        printf '%s\tnan\tnan\tnan\tnan\tnan\n' "$dt" >> "$OUT/dt-scan.tsv"
+    fi
+    k=$((k + 1))
+done
+emit dt_max_T1pct "$best" nan
+case $TIER in
+    quick) emit_ratio eta_ratio_dt0.01_dt0.005 dt0.01 viscosity dt0.005 viscosity ;;
+    paper) emit_ratio eta_ratio_dt0.005_dt0.0025 dt0.005 viscosity dt0.0025 viscosity
+           emit_ratio eta_ratio_dt0.01_dt0.0025 dt0.01 viscosity dt0.0025 viscosity ;;
+esac
