@@ -48,5 +48,11 @@ $(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
 include tests/tests.mk
 include experiments/experiments.mk
 
+bench: $(BIN)
+	@bench/bench.sh
+
+bench-peer: $(BIN)
+	@PEER=1 bench/bench.sh
+
 clean:
 	rm -rf build bin

@@ -31,3 +31,4 @@ paper: | $(BIN)
 	@tools/render-paper
 
 .PHONY: results
+

@@ -20,6 +20,9 @@ void box_advance(Box *b, double dt);
  * relative to that image of j. */
 static inline void box_min_image(const Box *b, double d[3], double *dvx)
 {
+    /* positions are wrapped into [0, L), so one fold per direction suffices
+     * (two in x after a Lees-Edwards shift); no rint(), which is a libm call
+     * on baseline x86-64 */
     if (d[1] > b->half[1]) {
         d[1] -= b->L[1]; d[0] -= b->le_offset;
         if (dvx) *dvx -= b->shear_rate * b->L[1];
@@ -27,8 +30,12 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
         d[1] += b->L[1]; d[0] += b->le_offset;
         if (dvx) *dvx += b->shear_rate * b->L[1];
     }
-    d[0] -= b->L[0] * rint(d[0] * b->inv[0]);
-    if (b->dim == 3) d[2] -= b->L[2] * rint(d[2] * b->inv[2]);
+    if (d[0] > b->half[0]) { d[0] -= b->L[0]; if (d[0] > b->half[0]) d[0] -= b->L[0]; }
+    else if (d[0] < -b->half[0]) { d[0] += b->L[0]; if (d[0] < -b->half[0]) d[0] += b->L[0]; }
+    if (b->dim == 3) {
+        if (d[2] > b->half[2]) d[2] -= b->L[2];
+        else if (d[2] < -b->half[2]) d[2] += b->L[2];
+    }
 }
 
 /* Streaming velocity of the imposed shear at height y. */

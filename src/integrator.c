@@ -7,7 +7,8 @@ double integrate_predict(System *s)
     const double old_offset = s->box.le_offset;
     box_advance(&s->box, dt);
     double doff = s->box.le_offset - old_offset;
-    if (doff < -s->box.half[0]) doff += s->box.L[0];
+    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
+    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];

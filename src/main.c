@@ -72,6 +72,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
+    int rc = 1;
     char **sets = calloc((size_t)argc, sizeof *sets);
     size_t cl = 1;
     for (int k = 0; k < argc; k++) cl += strlen(argv[k]) + 1;
@@ -82,25 +83,26 @@ int main(int argc, char **argv)
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
         if (!strcmp(a, "--set") || !strcmp(a, "--out") || !strcmp(a, "--threads")) {
-            if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); return 1; }
+            if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); goto done; }
             const char *v = argv[++k];
             if (!strcmp(a, "--set")) sets[opt.noverrides++] = (char *)v;
             else if (!strcmp(a, "--out")) opt.outdir = v;
             else {
                 char *end;
                 long t = strtol(v, &end, 10);
-                if (*end || t < 1 || t > 1024) { fprintf(stderr, "dpd run: --threads %s: allowed 1 to 1024\n", v); return 1; }
+                if (*end || t < 1 || t > 1024) { fprintf(stderr, "dpd run: --threads %s: allowed 1 to 1024\n", v); goto done; }
                 opt.threads = (int)t;
             }
         } else if (!strncmp(a, "--set=", 6)) sets[opt.noverrides++] = (char *)a + 6;
         else if (!strcmp(a, "--quiet")) opt.quiet = 1;
-        else if (a[0] == '-' && a[1]) { fprintf(stderr, "dpd run: unknown option %s\n", a); usage(stderr); return 1; }
+        else if (a[0] == '-' && a[1]) { fprintf(stderr, "dpd run: unknown option %s\n", a); usage(stderr); goto done; }
         else if (!opt.scene) opt.scene = a;
-        else { fprintf(stderr, "dpd run: more than one scene given ('%s', '%s')\n", opt.scene, a); return 1; }
+        else { fprintf(stderr, "dpd run: more than one scene given ('%s', '%s')\n", opt.scene, a); goto done; }
     }
-    if (!opt.scene) { fprintf(stderr, "dpd run: no scene file given\n"); usage(stderr); return 1; }
+    if (!opt.scene) { fprintf(stderr, "dpd run: no scene file given\n"); usage(stderr); goto done; }
     opt.overrides = sets;
-    int rc = run_scene(&opt);
+    rc = run_scene(&opt);
+done:
     free(sets);
     free(cmdline);
     return rc;

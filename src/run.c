@@ -65,6 +65,7 @@ static void progress(long long done, long long total, double t0, int force)
 
 typedef struct {
     double wall0, cpu0, timers[T_COUNT];
+    double prod_wall0;        /* wall clock when production started */
     long long steps_done;
     int threads;
     long builds;
@@ -191,7 +192,9 @@ int run_scene(const RunOptions *opt)
     const long long total = rc.equilibration + rc.steps;
     const int show = !opt->quiet && isatty(2);
     forces_compute(&s, &nl, &fw, NULL);
+    st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
     for (long long k = 0; k < total; k++) {
+        if (k == rc.equilibration) st.prod_wall0 = wall_now();
         double t0 = wall_now();
         double doff = integrate_predict(&s);
         neighbor_note_shear(&nl, doff);
@@ -245,6 +248,13 @@ int run_scene(const RunOptions *opt)
         fprintf(f, "cpu_seconds\t%.3f\t0\n", cpu_now() - st.cpu0);
         fprintf(f, "wall_seconds\t%.3f\t0\n", wall);
         fprintf(f, "particle_steps_per_second\t%.6g\t0\n", (double)s.n * total / (wall > 0 ? wall : 1e-9));
+        const double pwall = wall_now() - st.prod_wall0;
+        fprintf(f, "production_particle_steps_per_second\t%.6g\t0\n",
+                rc.steps > 0 ? (double)s.n * rc.steps / (pwall > 0 ? pwall : 1e-9) : 0.0);
+        struct rusage ru;
+        getrusage(RUSAGE_SELF, &ru);
+        fprintf(f, "peak_memory_bytes_per_particle\t%.6g\t0\n", ru.ru_maxrss * 1024.0 / s.n);
+        for (int t = 0; t < T_COUNT; t++) fprintf(f, "time_%s_seconds\t%.4f\t0\n", TIMER_NAMES[t], st.timers[t]);
         fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
         fclose(f);
         char *prov = NULL;

@@ -51,9 +51,12 @@ int scene_fail(Scene *sc, const config_setting_t *at, const char *fmt, ...)
     const int line = at ? config_setting_source_line(at) : 0;
     if (at && line > 0)
         snprintf(sc->error, sizeof sc->error, "%s:%d: key '%s': %s", sc->file, line, path, msg);
-    else if (at)
-        snprintf(sc->error, sizeof sc->error, "%s: key '%s' (set on the command line or near line %d): %s",
+    else if (at && line_of(at) > 0)
+        snprintf(sc->error, sizeof sc->error, "%s: key '%s' (set on the command line, near line %d): %s",
                  sc->file, path, line_of(at), msg);
+    else if (at)
+        snprintf(sc->error, sizeof sc->error, "%s: key '%s' (set on the command line): %s",
+                 sc->file, path, msg);
     else
         snprintf(sc->error, sizeof sc->error, "%s: %s", sc->file, msg);
     sc->failed = 1;
@@ -395,7 +398,7 @@ int scene_load(Scene *sc, const char *file, char *const *overrides, int noverrid
     int ok = config_read(&sc->cfg, fp);
     fclose(fp);
     if (!ok) {
-        snprintf(sc->error, sizeof sc->error, "%s:%d: syntax error: %s", file,
+        snprintf(sc->error, sizeof sc->error, "%s:%d: %s", file,
                  config_error_line(&sc->cfg), config_error_text(&sc->cfg));
         sc->failed = 1;
         return -1;

@@ -194,10 +194,14 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
     config_setting_t *g = scene_child(sc, NULL, "measure", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
     long long v;
-    if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
-    m->every = (int)v;
-    if (scene_int(sc, g, "blocks", &v, 20, 2, 1000, 0) < 0) return -1;
-    m->nblocks = (int)v;
+    m->every = 10;     /* defaults when the scene has no measure group */
+    m->nblocks = 20;
+    if (g) {
+        if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
+        m->every = (int)v;
+        if (scene_int(sc, g, "blocks", &v, 20, 2, 1000, 0) < 0) return -1;
+        m->nblocks = (int)v;
+    }
     m->nsamples_expected = steps / m->every + 1;
     if (!g) return 0;
     config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
@@ -298,14 +302,16 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
         return scene_fail(sc, NULL, "the scene makes %lld particles; allowed 1 to 2e8", total);
     config_setting_t *out = scene_child(sc, NULL, "output", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
-    if (scene_int(sc, out, "trajectory_every", &v, 0, 0, 1000000000LL, 0) < 0) return -1;
-    rc->trajectory_every = (int)v;
+    rc->trajectory_every = 0;
+    if (out) {
+        if (scene_int(sc, out, "trajectory_every", &v, 0, 0, 1000000000LL, 0) < 0) return -1;
+        rc->trajectory_every = (int)v;
+    }
     if (read_measure(sc, s, m, rc->steps)) return -1;
     if (scene_check_unknown(sc)) return -1;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;
     s->n_frozen = nfrozen;
-    s->seed = (uint32_t)s->seed;
     place_particles(s, ti);
     initial_velocities(s);
     return 0;

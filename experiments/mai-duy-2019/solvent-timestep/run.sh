@@ -6,7 +6,7 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 case $TIER in
     quick) DTS="0.005 0.01 0.015 0.02"; T_RUN=10; T_EQ=2; box=(--set 'box=[8.0,8.0,8.0]') ;;
-    paper) DTS="0.0025 0.005 0.0075 0.01 0.0125 0.015 0.0175 0.02"; T_RUN=40; T_EQ=2; box=() ;;
+    paper) DTS="0.0025 0.005 0.0075 0.01 0.0125 0.015 0.0175 0.02"; T_RUN=20; T_EQ=2; box=() ;;
 esac
 printf 'dt\tT\tT_se\teta\teta_se\tcpu_seconds\n' > "$OUT/dt-scan.tsv"
 best=0 k=0

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# make bench: particle-steps per second of the standard DPD system on 1 and 2
+# threads, for 3e3, 2.4e4 and 1e6 particles, and peak memory per particle.
+# With PEER=1 (make bench-peer) LAMMPS runs the same system in the same session,
+# interleaved with ours, and the ratios are printed. Timing is of the production
+# steps only, after equilibration. Machines are noisy: compare ratios of runs
+# made side by side, not absolute numbers across sessions.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+out=build/bench; mkdir -p "$out"
+DPD=bin/dpd
+REPEAT=${REPEAT:-3}          # best of REPEAT for each configuration
+# side -> particles: round(3 L^3); 10 -> 3000, 20 -> 24000, 69.336 -> 1e6
+SIZES=${SIZES:-"10 20 69.336"}
+steps_for() { case $1 in 10) echo 3000;; 20) echo 1000;; *) echo 100;; esac; }
+eq_for() { case $1 in 10) echo 500;; 20) echo 300;; *) echo 50;; esac; }
+
+ours() {  # L threads -> "rate bytes_per_particle"
+    local L=$1 T=$2 best=0 mem=0 r
+    for k in $(seq "$REPEAT"); do
+        "$DPD" run bench/standard.cfg --out "$out/dpd-$L-$T" --threads "$T" --quiet \
+            --set "box=[$L,$L,$L]" --set steps=$(steps_for "$L") --set equilibration=$(eq_for "$L") >/dev/null
+        r=$(awk -F'\t' '$1=="production_particle_steps_per_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        mem=$(awk -F'\t' '$1=="peak_memory_bytes_per_particle"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        best=$(awk -v a="$best" -v b="$r" 'BEGIN{print (b > a) ? b : a}')
+    done
+    echo "$best $mem"
+}
+peer() {  # L threads -> rate
+    local L=$1 T=$2 best=0 r
+    for k in $(seq "$REPEAT"); do
+        r=$(EQ=$(eq_for "$L") bench/peer/run-lammps.sh "$L" $(steps_for "$L") "$T" | cut -f4)
+        best=$(awk -v a="$best" -v b="$r" 'BEGIN{print (b > a) ? b : a}')
+    done
+    echo "$best"
+}
+
+if [ "${PEER:-0}" = 1 ]; then bash bench/peer/build-lammps.sh >/dev/null; fi
+printf '%-10s %-8s %14s %14s %12s %10s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle"
+declare -A rate
+for L in $SIZES; do
+    n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
+    for T in 1 2; do
+        read -r r mem < <(ours "$L" "$T")
+        rate[$L,$T]=$r
+        if [ "${PEER:-0}" = 1 ]; then
+            p=$(peer "$L" "$T"); ratio=$(awk -v a="$r" -v b="$p" 'BEGIN{printf "%.2f", a/b}')
+        else p="-"; ratio="-"; fi
+        printf '%-10s %-8s %14.4g %14s %12s %10.0f\n' "$n" "$T" "$r" "$p" "$ratio" "$mem"
+    done
+done
+echo
+for L in $SIZES; do
+    awk -v L="$L" -v a="${rate[$L,1]}" -v b="${rate[$L,2]}" \
+        'BEGIN{printf "speed-up 1 -> 2 threads, %d particles: %.2f\n", 3*L*L*L+0.5, b/a}'
+done
+first=$(echo $SIZES | awk '{print $1}'); last=$(echo $SIZES | awk '{print $NF}')
+awk -v a="${rate[$first,1]}" -v b="${rate[$last,1]}" \
+    'BEGIN{printf "time per particle-step, largest / smallest system (1 thread): %.2f\n", a/b}'

@@ -1,0 +1,58 @@
+#!/bin/bash
+# run-tests.sh BIN... - run cmocka test binaries and tests/scene_errors.sh,
+# add up their checks, print "N passed, M failed", exit 1 if M > 0.
+# A binary that dies before cmocka's summary (crash, sanitizer abort) counts
+# its unfinished tests as failed (at least one).
+set -u
+cd "$(dirname "$0")/.."
+if [ "${SANITIZE:-}" = 1 ]; then
+    export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0:halt_on_error=1}"
+    export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+fi
+# other jobs may share the 2 cores: idle OpenMP threads sleep instead of spinning
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
+pass=0 fail=0
+t_start=$(date +%s.%N)
+for bin in "$@"; do
+    name=$(basename "$bin")
+    log=$(mktemp)
+    t0=$(date +%s.%N)
+    "$bin" >"$log" 2>&1
+    rc=$?
+    t1=$(date +%s.%N)
+    cat "$log"
+    total=$(sed -n 's/.*Running \([0-9]*\) test(s).*/\1/p' "$log" | head -1)
+    p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test(s)\..*/\1/p' "$log" | tail -1)
+    f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" | tail -1)
+    p=${p:-0}; f=${f:-0}
+    if [ $((p + f)) -eq 0 ] || { [ -n "$total" ] && [ $((p + f)) -lt "$total" ]; }; then
+        # no summary: the binary died
+        ok=$(grep -c '^\[       OK \]' "$log")
+        p=$ok
+        f=$(( ${total:-1} - ok )); [ "$f" -lt 1 ] && f=1
+        echo "$name: exited with status $rc before finishing" >&2
+    elif [ $rc -ne 0 ] && [ "$f" -eq 0 ]; then
+        f=1; echo "$name: exit status $rc although every test passed" >&2
+    fi
+    printf '%s: %d passed, %d failed (%.1f s)\n' "$name" "$p" "$f" "$(echo "$t1 - $t0" | bc)"
+    pass=$((pass + p)); fail=$((fail + f))
+    rm -f "$log"
+done
+log=$(mktemp)
+t0=$(date +%s.%N)
+DPD="${DPD:-bin/dpd}" tests/scene_errors.sh >"$log" 2>&1
+rc=$?
+t1=$(date +%s.%N)
+cat "$log"
+line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -1)
+if [ -n "$line" ]; then
+    p=${line%% passed*}; f=${line#*, }; f=${f%% failed}
+else
+    p=0; f=1; echo "scene_errors.sh: no summary (status $rc)" >&2
+fi
+[ $rc -ne 0 ] && [ "$f" -eq 0 ] && f=1
+printf 'scene_errors.sh: %d passed, %d failed (%.1f s)\n' "$p" "$f" "$(echo "$t1 - $t0" | bc)"
+pass=$((pass + p)); fail=$((fail + f))
+printf 'all tests: %.1f s wall\n' "$(echo "$(date +%s.%N) - $t_start" | bc)"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,136 @@
+/* test_random.c - the pair noise theta_ij of eq. 4: symmetric, N(0,1),
+ * independent across steps and pairs. N = 10^6 draws per statistic; every
+ * bound is 4 standard errors of the statistic for independent N(0,1) draws:
+ *   mean:        se = 1/sqrt(N)
+ *   variance:    se = sqrt(2/N)          (var of the sample variance, Gaussian)
+ *   correlation: se = 1/sqrt(N)
+ *   kurtosis:    se = sqrt(24/N)         (m4/m2^2 = 3 for a Gaussian)
+ *   P(|z| > 3):  se = sqrt(p (1-p) / N), p = 0.0026998
+ * A Gaussian passes each with probability 1 - 6e-5; a uniform variate scaled
+ * to unit variance has kurtosis 1.8 and fails the kurtosis bound (0.02) by far.
+ * The draws are deterministic (fixed seeds), so the outcome is reproducible. */
+#include "testutil.h"
+#include "random.h"
+
+#define N 1000000
+#define SEED 20240611u
+
+static void symmetric_in_i_j(void **state)
+{
+    (void)state;
+    uint64_t st = 5;
+    for (int k = 0; k < 100000; k++) {
+        const uint32_t i = (uint32_t)tu_next(&st), j = (uint32_t)tu_next(&st);
+        const uint64_t step = tu_next(&st) >> 10;
+        const double a = rng_pair_normal(SEED, step, i, j), b = rng_pair_normal(SEED, step, j, i);
+        CHECK_TRUE(memcmp(&a, &b, sizeof a) == 0, "theta(%u, %u) = %.17g != theta(%u, %u) = %.17g at step %llu",
+                   i, j, a, j, i, b, (unsigned long long)step);
+    }
+}
+
+typedef struct { double m1, m2, m4, tail; } Moments;
+
+/* draw(k) for k < N */
+static Moments moments(double (*draw)(long k))
+{
+    long double s1 = 0, s2 = 0, s4 = 0;
+    long tail = 0;
+    for (long k = 0; k < N; k++) {
+        const double z = draw(k);
+        s1 += z;
+        s2 += (long double)z * z;
+        s4 += (long double)z * z * z * z;
+        tail += fabs(z) > 3.0;
+    }
+    Moments m;
+    m.m1 = (double)(s1 / N);
+    const double var = (double)(s2 / N) - m.m1 * m.m1;
+    m.m2 = var * N / (N - 1.0);
+    m.m4 = (double)(s4 / N) / (var * var);   /* kurtosis about 0 (mean ~ 0 within 4e-3) */
+    m.tail = (double)tail / N;
+    return m;
+}
+
+static double draw_steps(long k) { return rng_pair_normal(SEED, (uint64_t)k, 3, 17); }
+static double draw_pairs(long k) { return rng_pair_normal(SEED, 77, (uint32_t)(k % 1000), (uint32_t)(1000 + k / 1000)); }
+static double draw_uniform(long k)
+{
+    /* negative control: a uniform variate with mean 0 and variance 1 */
+    philox4x32_ctr_t r = rng_block(SEED, STREAM_TEST, (uint64_t)k, 0, 0);
+    return (rng_u01(r.v[0]) - 0.5) * sqrt(12.0);
+}
+
+static void check_gaussian(const char *name, double (*draw)(long))
+{
+    const Moments m = moments(draw);
+    char what[96];
+    snprintf(what, sizeof what, "%s: mean", name);
+    CHECK_ABS(what, m.m1, 0.0, 4.0 / sqrt(N));
+    snprintf(what, sizeof what, "%s: variance", name);
+    CHECK_ABS(what, m.m2, 1.0, 4.0 * sqrt(2.0 / N));
+    snprintf(what, sizeof what, "%s: kurtosis", name);
+    CHECK_ABS(what, m.m4, 3.0, 4.0 * sqrt(24.0 / N));
+    const double p = 0.0026997960632601866;   /* 2 (1 - Phi(3)) */
+    snprintf(what, sizeof what, "%s: P(|z| > 3)", name);
+    CHECK_ABS(what, m.tail, p, 4.0 * sqrt(p * (1 - p) / N));
+}
+
+static void moments_over_steps(void **state) { (void)state; check_gaussian("one pair, 1e6 steps", draw_steps); }
+static void moments_over_pairs(void **state) { (void)state; check_gaussian("1e6 pairs, one step", draw_pairs); }
+
+/* The checks above must reject a non-Gaussian variate with the right mean and
+ * variance: the kurtosis of a uniform is 1.8. */
+static void kurtosis_rejects_uniform(void **state)
+{
+    (void)state;
+    const Moments m = moments(draw_uniform);
+    CHECK_ABS("uniform control: variance 1", m.m2, 1.0, 4.0 * sqrt(0.8 / N));   /* var of s^2: (m4 - 1)/N = 0.8/N */
+    CHECK_TRUE(fabs(m.m4 - 3.0) > 4.0 * sqrt(24.0 / N),
+               "uniform control: kurtosis %g within the Gaussian bound: the kurtosis check has no power", m.m4);
+    CHECK_ABS("uniform control: kurtosis 1.8", m.m4, 1.8, 0.01);
+}
+
+/* corr(a, b) over N draws, both N(0,1) */
+static double corr(double (*a)(long), double (*b)(long))
+{
+    long double sab = 0, sa = 0, sb = 0, saa = 0, sbb = 0;
+    for (long k = 0; k < N; k++) {
+        const double x = a(k), y = b(k);
+        sab += (long double)x * y; sa += x; sb += y; saa += (long double)x * x; sbb += (long double)y * y;
+    }
+    const long double ma = sa / N, mb = sb / N;
+    return (double)((sab / N - ma * mb) / sqrtl((saa / N - ma * ma) * (sbb / N - mb * mb)));
+}
+
+static double c_step(long k) { return rng_pair_normal(SEED, (uint64_t)k, 5, 9); }
+static double c_step_next(long k) { return rng_pair_normal(SEED, (uint64_t)k + 1, 5, 9); }
+static double c_pair_i(long k) { return rng_pair_normal(SEED, (uint64_t)k, 5, 10); }
+static double c_pair_shared(long k) { return rng_pair_normal(SEED, (uint64_t)k, 9, 12); }
+static double c_seed(long k) { return rng_pair_normal(SEED + 1, (uint64_t)k, 5, 9); }
+static double c_step_hi(long k) { return rng_pair_normal(SEED, (uint64_t)k + (1ULL << 32), 5, 9); }
+static double c_ids_big(long k) { return rng_pair_normal(SEED, 3, (uint32_t)k, (uint32_t)k + 1); }
+static double c_ids_big2(long k) { return rng_pair_normal(SEED, 3, (uint32_t)k + 1, (uint32_t)k + 2); }
+
+static void uncorrelated(void **state)
+{
+    (void)state;
+    const double tol = 4.0 / sqrt(N);
+    CHECK_ABS("corr(step t, step t+1), same pair", corr(c_step, c_step_next), 0.0, tol);
+    CHECK_ABS("corr(pair (5,9), pair (5,10)), same step", corr(c_step, c_pair_i), 0.0, tol);
+    CHECK_ABS("corr(pair (5,9), pair (9,12)), same step", corr(c_step, c_pair_shared), 0.0, tol);
+    CHECK_ABS("corr(seed, seed + 1)", corr(c_step, c_seed), 0.0, tol);
+    CHECK_ABS("corr(step t, step t + 2^32)", corr(c_step, c_step_hi), 0.0, tol);
+    CHECK_ABS("corr(pair (k,k+1), pair (k+1,k+2))", corr(c_ids_big, c_ids_big2), 0.0, tol);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(symmetric_in_i_j),
+        cmocka_unit_test(moments_over_steps),
+        cmocka_unit_test(moments_over_pairs),
+        cmocka_unit_test(kurtosis_rejects_uniform),
+        cmocka_unit_test(uncorrelated),
+    };
+    return cmocka_run_group_tests_name("random", tests, NULL, NULL);
+}
