@@ -40,14 +40,20 @@ static inline double random_weight(double wc, double s)
     return pow(wc, 0.5 * s);
 }
 
-void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
-                         double inv_sqrt_dt, double *fc, double *fd, double *fr)
+static inline void pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
+                                   double inv_sqrt_dt, double *fc, double *fd, double *fr)
 {
     const double wc = 1.0 - r / p->rc;                 /* w_C, eq. 5 */
     const double wr = random_weight(wc, p->s);         /* w_R = sqrt(w_D), eq. 7 */
     *fc = p->a * wc;                                   /* conservative, eq. 2 */
     *fd = -p->gamma * wr * wr * e_dot_v;               /* dissipative, eq. 3 */
     *fr = p->sigma * wr * theta * inv_sqrt_dt;         /* random, eq. 4 */
+}
+
+void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
+                         double inv_sqrt_dt, double *fc, double *fd, double *fr)
+{
+    pair_magnitudes(p, r, e_dot_v, theta, inv_sqrt_dt, fc, fd, fr);
 }
 
 void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
@@ -144,7 +150,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 const int j = near[q];
                 const PairParams *p = &s->pair[ti][s->type[j]];
                 const double r2 = dd[q][3];
-                if (r2 >= p->rc * p->rc || r2 < R_EPSILON * R_EPSILON) continue;
+                if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
                 const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
                 double dvx = v[3 * i] - v[3 * j];
                 if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
@@ -158,7 +164,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                                  + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
                 const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
                 double F[PAIR_PARTS];
-                dpd_pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
+                pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
                                     &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
                 const double ft = F[0] + F[1] + F[2];
                 const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];

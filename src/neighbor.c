@@ -72,10 +72,9 @@ static void sort_by_cell(NeighborList *nl, System *s)
 {
     const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
     memset(nl->count, 0, (size_t)ncell * sizeof(int));
-    for (int i = 0; i < s->n; i++) {
-        nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
-        nl->count[nl->cell_of[i]]++;
-    }
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
+    for (int i = 0; i < s->n; i++) nl->count[nl->cell_of[i]]++;
     nl->cell_start[0] = 0;
     for (int c = 0; c < ncell; c++) nl->cell_start[c + 1] = nl->cell_start[c] + nl->count[c];
     memcpy(nl->count, nl->cell_start, (size_t)ncell * sizeof(int));
@@ -202,6 +201,7 @@ int neighbor_build(NeighborList *nl, System *s)
 {
     const int n = s->n;
     sort_by_cell(nl, s);
+    #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
     int filter = s->n_frozen > 0;
     for (int a = 0; a < s->ntypes; a++)

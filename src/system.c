@@ -31,8 +31,9 @@ void system_free(System *s)
 
 static void permute_vec3(double *a, const int *perm, int n, double *scratch)
 {
+    #pragma omp parallel for schedule(static)
     for (int k = 0; k < n; k++)
-        memcpy(scratch + 3 * k, a + 3 * perm[k], 3 * sizeof *a);
+        for (int d = 0; d < 3; d++) scratch[3 * k + d] = a[3 * perm[k] + d];
     memcpy(a, scratch, 3 * (size_t)n * sizeof *a);
 }
 
@@ -44,12 +45,16 @@ void system_permute(System *s, const int *perm, double *scratch)
     permute_vec3(s->f, perm, n, scratch);
     permute_vec3(s->v_pred, perm, n, scratch);
     int32_t *ti = (int32_t *)scratch;
-    for (int k = 0; k < n; k++) memcpy(ti + 3 * k, s->img + 3 * perm[k], 3 * sizeof *ti);
+    #pragma omp parallel for schedule(static)
+    for (int k = 0; k < n; k++)
+        for (int d = 0; d < 3; d++) ti[3 * k + d] = s->img[3 * perm[k] + d];
     memcpy(s->img, ti, 3 * (size_t)n * sizeof *ti);
     uint32_t *tu = (uint32_t *)scratch;
+    #pragma omp parallel for schedule(static)
     for (int k = 0; k < n; k++) tu[k] = s->id[perm[k]];
     memcpy(s->id, tu, (size_t)n * sizeof *tu);
     uint8_t *tb = (uint8_t *)scratch;
+    #pragma omp parallel for schedule(static)
     for (int k = 0; k < n; k++) tb[k] = s->type[perm[k]];
     memcpy(s->type, tb, (size_t)n);
 }
@@ -80,6 +85,7 @@ double system_kinetic_temperature(const System *s)
 void system_set_pair(System *s, int ti, int tj, PairParams p)
 {
     p.sigma = sqrt(2.0 * p.gamma * s->kBT); /* eq. 7: sigma from gamma, never read */
+    p.rc2 = p.rc * p.rc;
     s->pair[ti][tj] = p;
     s->pair[tj][ti] = p;
     if (p.active && p.rc > s->rc_max) s->rc_max = p.rc;

@@ -28,6 +28,7 @@ typedef struct {
     double sigma;             /* noise amplitude, eq. 7: sqrt(2 gamma kBT), derived */
     double s;                 /* w_D = (1 - r/rc)^s, eq. 6 */
     double rc;
+    double rc2;               /* rc^2, derived */
 } PairParams;
 
 typedef struct {
