@@ -10,10 +10,18 @@ FIG_STAMPS := $(foreach e,$(EXP_IDS),figures/$(e)/.stamp-$(TIER))
 results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment tools/lib/exp.sh $(BIN)
 	@tools/run-experiment $* $(TIER)
 
+PLOT = mkdir -p figures/$(1) && cd experiments/$(1) && \
+       gnuplot -e "res='$(CURDIR)/results/$(1)/$(TIER)'; out='$(CURDIR)/figures/$(1)'; tier='$(TIER)'" plot.gp
+
 figures/%/.stamp-$(TIER): results/%/$(TIER)/summary.tsv experiments/%/plot.gp
-	@mkdir -p figures/$*
-	@cd experiments/$* && gnuplot -e "res='$(CURDIR)/results/$*/$(TIER)'; out='$(CURDIR)/figures/$*'; tier='$(TIER)'" plot.gp
+	@$(call PLOT,$*)
 	@touch $@
+
+# Plots from the results already there (e.g. the committed paper tier), no reruns.
+plots:
+	@for e in $(EXP_IDS); do \
+	    if [ -f results/$$e/$(TIER)/summary.tsv ]; then ( $(call PLOT,$$e) ) || exit 1; \
+	    else echo "plots: no $(TIER) results for $$e (make figures TIER=$(TIER))"; fi; done
 
 results: $(RESULTS)
 figures: $(FIG_STAMPS)
@@ -27,8 +35,9 @@ reproduce:
 	$(MAKE) check TIER=paper || true
 	$(MAKE) paper
 
-paper: | $(BIN)
+paper:
+	@$(MAKE) --no-print-directory plots TIER=paper
 	@tools/render-paper
 
-.PHONY: results
+.PHONY: results plots figures check reproduce paper
 
