@@ -124,17 +124,54 @@ static int check_range(Scene *sc, const config_setting_t *s, double v, double lo
     return 0;
 }
 
+static int edit_distance(const char *a, const char *b)
+{
+    int la = (int)strlen(a), lb = (int)strlen(b);
+    if (la > 63 || lb > 63) return 99;
+    int d[64][64];
+    for (int i = 0; i <= la; i++) d[i][0] = i;
+    for (int j = 0; j <= lb; j++) d[0][j] = j;
+    for (int i = 1; i <= la; i++)
+        for (int j = 1; j <= lb; j++) {
+            int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            if (d[i - 1][j] + 1 < c) c = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < c) c = d[i][j - 1] + 1;
+            d[i][j] = c;
+        }
+    return d[la][lb];
+}
+
+
+/* A required key is absent: say what it must be, and point at a sibling key
+ * whose name is one or two edits away (a likely typo). */
+static int missing(Scene *sc, const config_setting_t *grp, const char *key, const char *what)
+{
+    const config_setting_t *g = grp ? grp : config_root_setting(&sc->cfg);
+    char hint[160] = "";
+    for (int k = 0; k < config_setting_length(g); k++) {
+        const config_setting_t *c = config_setting_get_elem(g, (unsigned)k);
+        const char *name = config_setting_name(c);
+        if (name && strcmp(name, key) && edit_distance(name, key) <= 2) {
+            snprintf(hint, sizeof hint, "; '%s' at line %d looks like a typo for it", name,
+                     config_setting_source_line(c));
+            break;
+        }
+    }
+    char path[256] = "";
+    if (grp && !config_setting_is_root(grp)) scene_path(grp, path, sizeof path);
+    return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
+                      "required key '%s%s%s' is missing (%s)%s", path, path[0] ? "." : "", key, what, hint);
+}
+
 int scene_double(Scene *sc, const config_setting_t *grp, const char *key, double *out,
                  double def, double lo, double hi, int required)
 {
     config_setting_t *s = lookup(sc, grp, key);
     if (!s) {
         if (required) {
-            char path[256] = "";
-            if (grp && !config_setting_is_root(grp)) scene_path(grp, path, sizeof path);
-            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
-                              "required key '%s%s%s' is missing (a number in [%g, %g])",
-                              path, path[0] ? "." : "", key, lo, hi);
+            char what[96];
+            snprintf(what, sizeof what, "a number in [%g, %g]", lo, hi);
+            return missing(sc, grp, key, what);
         }
         *out = def;
         return 0;
@@ -151,9 +188,11 @@ int scene_int(Scene *sc, const config_setting_t *grp, const char *key, long long
 {
     config_setting_t *s = lookup(sc, grp, key);
     if (!s) {
-        if (required)
-            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
-                              "required key '%s' is missing (an integer in [%lld, %lld])", key, lo, hi);
+        if (required) {
+            char what[96];
+            snprintf(what, sizeof what, "an integer in [%lld, %lld]", lo, hi);
+            return missing(sc, grp, key, what);
+        }
         *out = def;
         return 0;
     }
@@ -181,9 +220,7 @@ int scene_string(Scene *sc, const config_setting_t *grp, const char *key, const 
 {
     config_setting_t *s = lookup(sc, grp, key);
     if (!s) {
-        if (required)
-            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
-                              "required key '%s' is missing (a string)", key);
+        if (required) return missing(sc, grp, key, "a string");
         *out = def;
         return 0;
     }
@@ -207,9 +244,7 @@ int scene_vector(Scene *sc, const config_setting_t *grp, const char *key, double
 {
     config_setting_t *s = lookup(sc, grp, key);
     if (!s) {
-        if (required)
-            return scene_fail(sc, grp && !config_setting_is_root(grp) ? grp : NULL,
-                              "required key '%s' is missing (an array of numbers)", key);
+        if (required) return missing(sc, grp, key, "an array of numbers");
         return 0;
     }
     int t = config_setting_type(s);
@@ -237,23 +272,6 @@ config_setting_t *scene_child(Scene *sc, const config_setting_t *grp, const char
         return NULL;
     }
     return s;
-}
-
-static int edit_distance(const char *a, const char *b)
-{
-    int la = (int)strlen(a), lb = (int)strlen(b);
-    if (la > 63 || lb > 63) return 99;
-    int d[64][64];
-    for (int i = 0; i <= la; i++) d[i][0] = i;
-    for (int j = 0; j <= lb; j++) d[0][j] = j;
-    for (int i = 1; i <= la; i++)
-        for (int j = 1; j <= lb; j++) {
-            int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
-            if (d[i - 1][j] + 1 < c) c = d[i - 1][j] + 1;
-            if (d[i][j - 1] + 1 < c) c = d[i][j - 1] + 1;
-            d[i][j] = c;
-        }
-    return d[la][lb];
 }
 
 static int walk_unknown(Scene *sc, config_setting_t *s)

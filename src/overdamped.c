@@ -1,0 +1,570 @@
+/* overdamped.c - assembly and iterative solution of the m = 0 DPD velocity
+ * system A v = f (Phan-Thien, Mai-Duy, Khoo & Duong-Hong 2016, eqs 14-46).
+ * See overdamped.h for the layout and the list of solvers. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <gsl/gsl_cblas.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_matrix.h>
+#include "overdamped.h"
+#include "random.h"
+
+#define R_EPSILON 1e-10      /* as in forces.c: coincident pairs have no direction */
+#define SINGULAR_REL 1e-12   /* det below this x (trace/dim)^dim: block treated as singular */
+
+void od_init(OdSystem *od)
+{
+    memset(od, 0, sizeof *od);
+}
+
+void od_free(OdSystem *od)
+{
+    free(od->row_of); free(od->part_of); free(od->diag); free(od->dinv);
+    free(od->ostart); free(od->ocol); free(od->oblk); free(od->f); free(od->wrow);
+    free(od->work);
+    memset(od, 0, sizeof *od);
+}
+
+/* ------------------------------------------------------------ small blocks */
+
+/* b += g e e^T (3x3 row-major) */
+static inline void add_outer(double *b, double g, const double e[3])
+{
+    for (int a = 0; a < 3; a++)
+        for (int c = 0; c < 3; c++) b[3 * a + c] += g * e[a] * e[c];
+}
+
+/* y (+)= B x for a 3x3 block */
+static inline void blk_mul_add(const double *B, const double *x, double *y)
+{
+    y[0] += B[0] * x[0] + B[1] * x[1] + B[2] * x[2];
+    y[1] += B[3] * x[0] + B[4] * x[1] + B[5] * x[2];
+    y[2] += B[6] * x[0] + B[7] * x[1] + B[8] * x[2];
+}
+
+static inline void blk_mul(const double *B, const double *x, double *y)
+{
+    y[0] = y[1] = y[2] = 0.0;
+    blk_mul_add(B, x, y);
+}
+
+/* Moore-Penrose pseudo-inverse of the leading dim x dim part of a symmetric
+ * block, eigenvalues below rel x largest dropped (gsl_eigen_symmv). */
+static void sym_pinv(const double *B, int dim, double *Binv)
+{
+    memset(Binv, 0, 9 * sizeof(double));
+    gsl_matrix *m = gsl_matrix_alloc((size_t)dim, (size_t)dim);
+    gsl_matrix *evec = gsl_matrix_alloc((size_t)dim, (size_t)dim);
+    gsl_vector *eval = gsl_vector_alloc((size_t)dim);
+    gsl_eigen_symmv_workspace *w = gsl_eigen_symmv_alloc((size_t)dim);
+    if (!m || !evec || !eval || !w) goto out;
+    for (int a = 0; a < dim; a++)
+        for (int c = 0; c < dim; c++) gsl_matrix_set(m, (size_t)a, (size_t)c, B[3 * a + c]);
+    gsl_eigen_symmv(m, eval, evec, w);
+    double lmax = 0.0;
+    for (int k = 0; k < dim; k++) lmax = fmax(lmax, fabs(gsl_vector_get(eval, (size_t)k)));
+    for (int k = 0; k < dim; k++) {
+        const double l = gsl_vector_get(eval, (size_t)k);
+        if (l <= 1e-10 * lmax || l <= 0.0) continue;
+        for (int a = 0; a < dim; a++)
+            for (int c = 0; c < dim; c++)
+                Binv[3 * a + c] += gsl_matrix_get(evec, (size_t)a, (size_t)k)
+                                 * gsl_matrix_get(evec, (size_t)c, (size_t)k) / l;
+    }
+out:
+    if (w) gsl_eigen_symmv_free(w);
+    gsl_vector_free(eval); gsl_matrix_free(evec); gsl_matrix_free(m);
+}
+
+/* Inverse of a symmetric 2x2 / 3x3 block by the adjugate formula; falls back
+ * to the pseudo-inverse (and returns 1) when the block is singular, e.g. a
+ * particle with a single neighbour (its velocity across e_ij is then free:
+ * the pseudo-inverse picks zero for that component). eq. 22 */
+static int sym_inverse(const double *B, int dim, double *Binv)
+{
+    memset(Binv, 0, 9 * sizeof(double));
+    const double tr = dim == 2 ? B[0] + B[4] : B[0] + B[4] + B[8];
+    if (!(tr > 0.0)) return 1;            /* no neighbour at all: v_i left at 0 */
+    const double sc = tr / dim;
+    if (dim == 2) {
+        const double det = B[0] * B[4] - B[1] * B[3];
+        if (det <= SINGULAR_REL * sc * sc) { sym_pinv(B, dim, Binv); return 1; }
+        Binv[0] = B[4] / det; Binv[4] = B[0] / det;
+        Binv[1] = -B[1] / det; Binv[3] = -B[3] / det;
+        return 0;
+    }
+    const double c00 = B[4] * B[8] - B[5] * B[7];
+    const double c01 = B[5] * B[6] - B[3] * B[8];
+    const double c02 = B[3] * B[7] - B[4] * B[6];
+    const double det = B[0] * c00 + B[1] * c01 + B[2] * c02;
+    if (det <= SINGULAR_REL * sc * sc * sc) { sym_pinv(B, dim, Binv); return 1; }
+    const double id = 1.0 / det;
+    Binv[0] = c00 * id; Binv[1] = c01 * id; Binv[2] = c02 * id;
+    Binv[3] = c01 * id; Binv[4] = (B[0] * B[8] - B[2] * B[6]) * id; Binv[5] = (B[2] * B[3] - B[0] * B[5]) * id;
+    Binv[6] = c02 * id; Binv[7] = Binv[5];                     Binv[8] = (B[0] * B[4] - B[1] * B[3]) * id;
+    return 0;
+}
+
+/* -------------------------------------------------------------- assembly */
+
+/* Geometry of a pair as in forces.c: unit vector e_ij, distance, and the x
+ * velocity of the Lees-Edwards image of j relative to j (dvimg, so that the
+ * relative velocity is v_i - v_j - dvimg). Returns 0 if the pair does not
+ * interact. */
+static int pair_geometry(const System *s, int i, int j, double e[3], double *r, double *dvimg)
+{
+    const Box *b = &s->box;
+    const PairParams *p = &s->pair[s->type[i]][s->type[j]];
+    double d[3] = {s->x[3 * i] - s->x[3 * j], s->x[3 * i + 1] - s->x[3 * j + 1],
+                   s->x[3 * i + 2] - s->x[3 * j + 2]};
+    box_min_image(b, d, NULL);
+    if (b->dim == 2) d[2] = 0.0;
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) return 0;
+    *r = sqrt(r2);
+    for (int a = 0; a < 3; a++) e[a] = d[a] / *r;
+    *dvimg = 0.0;
+    if (b->shear_rate != 0.0) {
+        const double dy = s->x[3 * i + 1] - s->x[3 * j + 1];
+        if (dy > b->half[1]) *dvimg = b->shear_rate * b->L[1];
+        else if (dy < -b->half[1]) *dvimg = -b->shear_rate * b->L[1];
+    }
+    return 1;
+}
+
+static int grow(void **p, size_t n, size_t size)
+{
+    void *q = realloc(*p, n * size + 1);
+    if (!q) return -1;
+    *p = q;
+    return 0;
+}
+
+/* A (eq. 16) and f (eq. 18): block CSR over the mobile particles. */
+int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
+{
+    const int n = s->n, dim = s->box.dim;
+    od->dim = dim;
+    od->n = n;
+    /* map mobile particles to rows (eq. 17: i = 1 .. Ns) */
+    if ((size_t)n > od->cap_rows || !od->row_of) {
+        if (grow((void **)&od->row_of, (size_t)n, sizeof(int)) || grow((void **)&od->part_of, (size_t)n, sizeof(int))
+            || grow((void **)&od->diag, 9 * (size_t)n, sizeof(double)) || grow((void **)&od->dinv, 9 * (size_t)n, sizeof(double))
+            || grow((void **)&od->wrow, 9 * (size_t)n, sizeof(double)) || grow((void **)&od->ostart, (size_t)n + 1, sizeof(int))
+            || grow((void **)&od->f, 3 * (size_t)n, sizeof(double)) || grow((void **)&od->work, 18 * (size_t)n, sizeof(double)))
+            return -1;
+        od->cap_rows = (size_t)n;
+    }
+    int nm = 0;
+    for (int i = 0; i < n; i++) {
+        if (s->types[s->type[i]].frozen) { od->row_of[i] = -1; continue; }
+        od->row_of[i] = nm;
+        od->part_of[nm++] = i;
+    }
+    od->nm = nm;
+    /* count the mobile-mobile pairs, listed under the row of i */
+    memset(od->ostart, 0, ((size_t)nm + 1) * sizeof(int));
+    for (int i = 0; i < n; i++) {
+        const int ri = od->row_of[i];
+        if (ri < 0) continue;
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int j = nl->nbr[k];
+            double e[3], r, dvimg;
+            if (od->row_of[j] < 0 || !pair_geometry(s, i, j, e, &r, &dvimg)) continue;
+            od->ostart[ri + 1]++;
+        }
+    }
+    for (int r = 0; r < nm; r++) od->ostart[r + 1] += od->ostart[r];
+    const size_t nb = (size_t)od->ostart[nm];
+    if (nb > od->cap_blk || !od->ocol) {
+        if (grow((void **)&od->ocol, nb, sizeof(int)) || grow((void **)&od->oblk, 9 * nb, sizeof(double)))
+            return -1;
+        od->cap_blk = nb;
+    }
+    memset(od->diag, 0, 9 * (size_t)nm * sizeof(double));
+    memset(od->wrow, 0, 9 * (size_t)nm * sizeof(double));
+    memset(od->f, 0, 3 * (size_t)nm * sizeof(double));
+    memset(od->wall, 0, sizeof od->wall);
+    memset(od->fbody, 0, sizeof od->fbody);
+    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
+    int fill = 0;
+    /* fill: rows in order, so the blocks of row ri land in ostart[ri] .. */
+    for (int i = 0; i < n; i++) {
+        const int ri = od->row_of[i];
+        const int ti = s->type[i];
+        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int j = nl->nbr[k];
+            const int rj = od->row_of[j];
+            if (ri < 0 && rj < 0) continue;             /* frozen-frozen: no unknown */
+            double e[3], r, dvimg;
+            if (!pair_geometry(s, i, j, e, &r, &dvimg)) continue;
+            const PairParams *p = &s->pair[ti][s->type[j]];
+            const double wc = 1.0 - r / p->rc;                          /* w_C */
+            const double wd = p->s == 2.0 ? wc * wc : (p->s == 1.0 ? wc : (p->s == 0.5 ? sqrt(wc) : pow(wc, p->s)));
+            const double wr = sqrt(wd);                                 /* w_R = sqrt(w_D), eq. 6 */
+            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
+            const double fcr = p->a * wc + p->sigma * wr * theta * inv_sqrt_dt; /* eq. 18, first part */
+            const double g = p->gamma * wd;
+            const double ee_img = g * e[0] * dvimg;                     /* g e e^T (dvimg, 0, 0) = ee_img e */
+            if (ri >= 0 && rj >= 0) {                                   /* eq. 16: both unknown */
+                add_outer(od->diag + 9 * (size_t)ri, g, e);
+                add_outer(od->diag + 9 * (size_t)rj, g, e);
+                double *B = od->oblk + 9 * (size_t)fill;
+                memset(B, 0, 9 * sizeof(double));
+                add_outer(B, -g, e);
+                od->ocol[fill++] = rj;
+                for (int a = 0; a < 3; a++) {
+                    od->f[3 * ri + a] += (fcr + ee_img) * e[a];
+                    od->f[3 * rj + a] -= (fcr + ee_img) * e[a];
+                }
+            } else if (ri >= 0) {                                       /* j frozen: eq. 18, last part */
+                add_outer(od->diag + 9 * (size_t)ri, g, e);
+                add_outer(od->wrow + 9 * (size_t)ri, g, e);
+                const double *vj = s->v + 3 * j;
+                const double edv = e[0] * (vj[0] + dvimg) + e[1] * vj[1] + e[2] * vj[2];
+                for (int a = 0; a < 3; a++) od->f[3 * ri + a] += (fcr + g * edv) * e[a];
+            } else {                                                    /* i frozen, j mobile */
+                add_outer(od->diag + 9 * (size_t)rj, g, e);
+                add_outer(od->wrow + 9 * (size_t)rj, g, e);
+                const double *vi = s->v + 3 * i;
+                const double edv = e[0] * (vi[0] - dvimg) + e[1] * vi[1] + e[2] * vi[2];
+                for (int a = 0; a < 3; a++) od->f[3 * rj + a] += (-fcr + g * edv) * e[a];
+            }
+        }
+    }
+    /* body force of the mobile particles, as body_forces() in forces.c */
+    if (s->has_body_force)
+        for (int r = 0; r < nm; r++) {
+            const int i = od->part_of[r];
+            const ParticleType *t = &s->types[s->type[i]];
+            double sign = 1.0;
+            if (t->body_force_flip_axis >= 0) {
+                const int a = t->body_force_flip_axis;
+                sign = s->x[3 * i + a] < s->box.half[a] ? 1.0 : -1.0;
+            }
+            for (int d = 0; d < 3; d++) {
+                od->f[3 * r + d] += sign * t->body_force[d];
+                od->fbody[d] += sign * t->body_force[d];
+            }
+        }
+    if (dim == 2) for (int r = 0; r < nm; r++) od->f[3 * r + 2] = 0.0;
+    od->n_singular = 0;
+    for (int r = 0; r < nm; r++) {
+        od->n_singular += sym_inverse(od->diag + 9 * (size_t)r, dim, od->dinv + 9 * (size_t)r);
+        for (int a = 0; a < 9; a++) od->wall[a] += od->wrow[9 * (size_t)r + a];
+    }
+    sym_inverse(od->wall, dim, od->wall_inv);     /* pseudo-inverse if no wall contact */
+    od->fnorm = cblas_dnrm2(3 * nm, od->f, 1);
+    return 0;
+}
+
+/* -------------------------------------------------------- products, norms */
+
+/* y = K v: off-diagonal part of A (eq. 21), each stored block used twice. */
+static void offdiag_mul(const OdSystem *od, const double *v, double *y)
+{
+    memset(y, 0, 3 * (size_t)od->nm * sizeof(double));
+    for (int r = 0; r < od->nm; r++)
+        for (int k = od->ostart[r]; k < od->ostart[r + 1]; k++) {
+            const int c = od->ocol[k];
+            const double *B = od->oblk + 9 * (size_t)k;
+            blk_mul_add(B, v + 3 * (size_t)c, y + 3 * (size_t)r);
+            blk_mul_add(B, v + 3 * (size_t)r, y + 3 * (size_t)c);   /* A_cr = A_rc^T = A_rc */
+        }
+}
+
+/* y = A v, eq. 15 */
+void od_matvec(const OdSystem *od, const double *v, double *y)
+{
+    offdiag_mul(od, v, y);
+    for (int r = 0; r < od->nm; r++)
+        blk_mul_add(od->diag + 9 * (size_t)r, v + 3 * (size_t)r, y + 3 * (size_t)r);
+}
+
+static double rel_to_f(const OdSystem *od, double rnorm)
+{
+    return od->fnorm > 0.0 ? rnorm / od->fnorm : rnorm;
+}
+
+double od_residual(const OdSystem *od, const double *v)
+{
+    const int n3 = 3 * od->nm;
+    double *y = malloc((size_t)n3 * sizeof(double) + 1);
+    if (!y) return NAN;
+    od_matvec(od, v, y);
+    for (int k = 0; k < n3; k++) y[k] = od->f[k] - y[k];
+    const double rn = cblas_dnrm2(n3, y, 1);
+    free(y);
+    return rel_to_f(od, rn);
+}
+
+void od_gather(const OdSystem *od, const System *s, double *v)
+{
+    for (int r = 0; r < od->nm; r++) {
+        const int i = od->part_of[r];
+        for (int a = 0; a < 3; a++) v[3 * r + a] = s->v[3 * i + a];
+        if (od->dim == 2) v[3 * r + 2] = 0.0;
+    }
+}
+
+void od_scatter(const OdSystem *od, System *s, const double *v)
+{
+    for (int r = 0; r < od->nm; r++) {
+        const int i = od->part_of[r];
+        for (int a = 0; a < od->dim; a++) s->v[3 * i + a] = v[3 * r + a];
+    }
+}
+
+/* |f - A v| from t = f - K v (already computed): f - A v = t - D v. */
+static double residual_from_t(const OdSystem *od, const double *t, const double *v, double *sum)
+{
+    double rn2 = 0.0;
+    if (sum) sum[0] = sum[1] = sum[2] = 0.0;
+    for (int r = 0; r < od->nm; r++) {
+        double dv[3];
+        blk_mul(od->diag + 9 * (size_t)r, v + 3 * (size_t)r, dv);
+        for (int a = 0; a < 3; a++) {
+            const double q = t[3 * r + a] - dv[a];
+            rn2 += q * q;
+            if (sum) sum[a] += q;
+        }
+    }
+    return sqrt(rn2);
+}
+
+static int stop_change(double dnorm, double vnorm, double tol)
+{
+    return dnorm < tol * vnorm;                  /* eq. 27 */
+}
+
+/* ---------------------------------------------------------------- Scheme 1 */
+
+/* Picard / block Jacobi: v^l = -H v^{l-1} + b = D^{-1} (f - K v^{l-1}),
+ * eqs 23-26. One product with K per sweep; the residual of v^{l-1} comes for
+ * free from t = f - K v^{l-1} (f - A v = t - D v). */
+static OdResult scheme1(OdSystem *od, double *v, OdStop stop, double tol, int max_iter)
+{
+    const int nm = od->nm, n3 = 3 * nm;
+    double *t = od->work, *vn = od->work + n3;
+    OdResult res = {0};
+    for (int l = 0;; l++) {
+        offdiag_mul(od, v, t);
+        res.matvecs++;
+        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
+        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, NULL));
+        if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
+        if (l == max_iter) break;
+        for (int r = 0; r < nm; r++) blk_mul(od->dinv + 9 * (size_t)r, t + 3 * (size_t)r, vn + 3 * (size_t)r); /* eq. 26 */
+        double d2 = 0.0;
+        for (int k = 0; k < n3; k++) { const double q = vn[k] - v[k]; d2 += q * q; v[k] = vn[k]; }
+        const double vnorm = cblas_dnrm2(n3, v, 1);
+        res.iterations++;
+        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
+        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
+            res.converged = 1;
+            res.rel_residual = od_residual(od, v);
+            break;
+        }
+    }
+    return res;
+}
+
+/* ------------------------------------------------------ Scheme 2 (paper) */
+
+/* Scheme 2 as published, eq. 46:
+ *   v^l_i = -H_i v^{l-1} - sum_k eps_k <v^{l-1}, eps_k> + b~_i,
+ *   b~_i  = D_i^{-1} (f_i - F~ / Ns)                         (eqs 26, 45)
+ * eps_k (eqs 42-44) is the normalised uniform translation along axis k, so
+ * sum_k eps_k <v, eps_k> is the mean fluid velocity in every slot.
+ *
+ * Readings where the text leaves a choice (documented, see also overdamped.h):
+ *  1. F~ (eq. 31) is the net DPD force on the fluid from the frozen particles.
+ *     It contains the dissipative force, so it depends on the unknown
+ *     velocities; the text gives no rule for when to evaluate it. We take it
+ *     from the current iterate, F~ = sum_i (f - A v^{l-1})_i: the net force on
+ *     the fluid, which is the only reading under which the converged field has
+ *     the zero velocity sum the paper reports (< 1e-8). (Evaluated once per
+ *     time step from v^0 instead, the sum would not vanish.)
+ *  2. Body force: eq. 31 has none. With the brief's "the fluid's total force is
+ *     zero" F~ includes the body forces of the fluid particles (default). With
+ *     od->s2_exclude_body = 1, F~ counts the DPD forces only (eq. 31 verbatim).
+ *  3. The deflation term of eq. 41/46 is added after the multiplication by
+ *     I^{-1} (it is not premultiplied by I^{-1}), while the -F~/Ns shift is
+ *     (eq. 45); implemented literally. Eq. 41 writes [.,.] and eq. 46 <.,.>
+ *     for the same natural inner product.
+ *  4. In 2D only eps_x and eps_y exist (U_z would have no slot).
+ *  5. "Hereafter ... notations in the moving frame are taken to be the same
+ *     as in the fixed frame": the frozen velocities in f are used unchanged
+ *     (not shifted by the centre-of-mass velocity), and the velocities
+ *     returned are the moving-frame ones.
+ * Fixed point: A v + D P v = f - 1 F~/Ns with F~ = 1^T (f - A v) gives
+ * 1^T D P v = 0, so the mean fluid velocity is zero and A v = f - 1 F~/Ns:
+ * not a solution of A v = f unless F~ = 0. */
+static OdResult scheme2_paper(OdSystem *od, double *v, OdStop stop, double tol, int max_iter)
+{
+    const int nm = od->nm, n3 = 3 * nm, dim = od->dim;
+    double *t = od->work, *vn = od->work + n3;
+    OdResult res = {0};
+    for (int l = 0;; l++) {
+        offdiag_mul(od, v, t);
+        res.matvecs++;
+        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
+        double Ft[3];                                           /* eq. 31 at v^{l-1} */
+        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, Ft));
+        if (od->s2_exclude_body) for (int a = 0; a < 3; a++) Ft[a] -= od->fbody[a];
+        if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
+        if (l == max_iter) break;
+        double mean[3] = {0.0, 0.0, 0.0};                       /* eps_k <v, eps_k>, eqs 42-44 */
+        for (int r = 0; r < nm; r++) for (int a = 0; a < dim; a++) mean[a] += v[3 * r + a];
+        for (int a = 0; a < 3; a++) { mean[a] /= nm; Ft[a] /= nm; }
+        double d2 = 0.0;
+        for (int r = 0; r < nm; r++) {
+            double q[3] = {t[3 * r] - Ft[0], t[3 * r + 1] - Ft[1], t[3 * r + 2] - Ft[2]}; /* eq. 45 */
+            blk_mul(od->dinv + 9 * (size_t)r, q, vn + 3 * (size_t)r);
+            for (int a = 0; a < dim; a++) {
+                vn[3 * r + a] -= mean[a];                       /* eq. 46 */
+                const double dd = vn[3 * r + a] - v[3 * r + a];
+                d2 += dd * dd;
+            }
+        }
+        memcpy(v, vn, (size_t)n3 * sizeof(double));
+        const double vnorm = cblas_dnrm2(n3, v, 1);
+        res.iterations++;
+        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
+        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
+            res.converged = 1;
+            res.rel_residual = od_residual(od, v);
+            break;
+        }
+    }
+    return res;
+}
+
+/* -------------------------------------------------- Scheme 2 (consistent) */
+
+/* A Jacobi sweep (eq. 26) then a uniform correction c that zeroes the net
+ * residual force on the fluid, 1^T (f - A (v' + 1 c)) = 0:
+ *   (1^T A 1) c = 1^T f - 1^T A v',  1^T A 1 = W (sum of frozen couplings),
+ *   1^T A v' = sum_i W_i v'_i (the Laplacian part has zero column sums).
+ * The correction minimises the A-norm error over uniform shifts (a two-level
+ * method with the rigid translation as coarse space), so the iteration
+ * converges to the solution of A v = f. No extra product with A is needed.
+ * Without any frozen contact W = 0 (A singular): c is then -mean(v'), i.e.
+ * the zero-mean solution is picked. */
+static OdResult scheme2_consistent(OdSystem *od, double *v, OdStop stop, double tol, int max_iter)
+{
+    const int nm = od->nm, n3 = 3 * nm, dim = od->dim;
+    double *t = od->work, *vn = od->work + n3;
+    const int has_wall = od->wall[0] + od->wall[4] + od->wall[8] > 0.0;
+    double fsum[3] = {0.0, 0.0, 0.0};
+    for (int r = 0; r < nm; r++) for (int a = 0; a < 3; a++) fsum[a] += od->f[3 * r + a];
+    OdResult res = {0};
+    for (int l = 0;; l++) {
+        offdiag_mul(od, v, t);
+        res.matvecs++;
+        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
+        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, NULL));
+        if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
+        if (l == max_iter) break;
+        double net[3] = {fsum[0], fsum[1], fsum[2]}, mean[3] = {0.0, 0.0, 0.0};
+        for (int r = 0; r < nm; r++) {
+            blk_mul(od->dinv + 9 * (size_t)r, t + 3 * (size_t)r, vn + 3 * (size_t)r); /* eq. 26 */
+            double wv[3];
+            blk_mul(od->wrow + 9 * (size_t)r, vn + 3 * (size_t)r, wv);
+            for (int a = 0; a < 3; a++) { net[a] -= wv[a]; mean[a] += vn[3 * r + a]; }
+        }
+        double c[3];
+        if (has_wall) blk_mul(od->wall_inv, net, c);
+        else for (int a = 0; a < 3; a++) c[a] = -mean[a] / nm;
+        if (dim == 2) c[2] = 0.0;
+        double d2 = 0.0;
+        for (int r = 0; r < nm; r++)
+            for (int a = 0; a < 3; a++) {
+                vn[3 * r + a] += c[a];
+                const double dd = vn[3 * r + a] - v[3 * r + a];
+                d2 += dd * dd;
+            }
+        memcpy(v, vn, (size_t)n3 * sizeof(double));
+        const double vnorm = cblas_dnrm2(n3, v, 1);
+        res.iterations++;
+        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
+        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
+            res.converged = 1;
+            res.rel_residual = od_residual(od, v);
+            break;
+        }
+    }
+    return res;
+}
+
+/* -------------------------------------------------------------------- PCG */
+
+/* Preconditioned conjugate gradients (Hestenes & Stiefel 1952) with the
+ * block-Jacobi preconditioner M = I of eq. 20 (z = I^{-1} r, eq. 22). A is
+ * symmetric positive definite when frozen particles pin the translations.
+ * The "change" of eq. 27 is |alpha p|, the residual the recurrence one
+ * (the true residual is recomputed at the end). */
+static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_iter)
+{
+    const int nm = od->nm, n3 = 3 * nm;
+    double *r = od->work, *z = od->work + n3, *p = od->work + 2 * n3, *q = od->work + 3 * n3;
+    OdResult res = {0};
+    od_matvec(od, x, q);
+    res.matvecs++;
+    for (int k = 0; k < n3; k++) r[k] = od->f[k] - q[k];
+    res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
+    if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; return res; }
+    for (int i = 0; i < nm; i++) blk_mul(od->dinv + 9 * (size_t)i, r + 3 * (size_t)i, z + 3 * (size_t)i);
+    memcpy(p, z, (size_t)n3 * sizeof(double));
+    double rz = cblas_ddot(n3, r, 1, z, 1);
+    while (res.iterations < max_iter) {
+        od_matvec(od, p, q);
+        res.matvecs++;
+        const double pq = cblas_ddot(n3, p, 1, q, 1);
+        if (!(pq > 0.0)) break;                   /* breakdown: A not positive definite on p */
+        const double alpha = rz / pq;
+        cblas_daxpy(n3, alpha, p, 1, x, 1);
+        cblas_daxpy(n3, -alpha, q, 1, r, 1);
+        res.iterations++;
+        const double dnorm = fabs(alpha) * cblas_dnrm2(n3, p, 1), vnorm = cblas_dnrm2(n3, x, 1);
+        res.change = vnorm > 0.0 ? dnorm / vnorm : dnorm;
+        res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
+        if ((stop == OD_STOP_CHANGE && stop_change(dnorm, vnorm, tol))
+            || (stop == OD_STOP_RESIDUAL && res.rel_residual < tol)) { res.converged = 1; break; }
+        for (int i = 0; i < nm; i++) blk_mul(od->dinv + 9 * (size_t)i, r + 3 * (size_t)i, z + 3 * (size_t)i);
+        const double rz_new = cblas_ddot(n3, r, 1, z, 1);
+        const double beta = rz_new / rz;
+        rz = rz_new;
+        for (int k = 0; k < n3; k++) p[k] = z[k] + beta * p[k];
+    }
+    res.rel_residual = od_residual(od, x);        /* true residual, not the recurrence */
+    if (stop == OD_STOP_RESIDUAL) res.converged = res.rel_residual < tol;
+    return res;
+}
+
+/* ------------------------------------------------------------------ entry */
+
+OdResult od_solve_vec(OdSystem *od, double *v, OdSolver solver, OdStop stop,
+                      double tol, int max_iter)
+{
+    OdResult res = {0};
+    if (od->nm == 0) { res.converged = 1; return res; }
+    switch (solver) {
+    case OD_SCHEME1:            return scheme1(od, v, stop, tol, max_iter);
+    case OD_SCHEME2_PAPER:      return scheme2_paper(od, v, stop, tol, max_iter);
+    case OD_SCHEME2_CONSISTENT: return scheme2_consistent(od, v, stop, tol, max_iter);
+    case OD_PCG:                return pcg(od, v, stop, tol, max_iter);
+    }
+    return res;
+}
+
+OdResult od_solve(OdSystem *od, System *s, OdSolver solver, OdStop stop,
+                  double tol, int max_iter)
+{
+    double *v = od->work + 4 * 3 * (size_t)od->nm;    /* the solvers use slots 0-3 */
+    od_gather(od, s, v);
+    OdResult res = od_solve_vec(od, v, solver, stop, tol, max_iter);
+    od_scatter(od, s, v);
+    return res;
+}

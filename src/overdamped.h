@@ -1,0 +1,112 @@
+/* overdamped.h - velocity solve of strongly overdamped (m = 0) DPD
+ * (Phan-Thien, Mai-Duy, Khoo & Duong-Hong 2016, "Strongly overdamped
+ * dissipative particle dynamics for fluid-solid systems", sections 2-3).
+ *
+ * With m = 0 the momentum equation of every mobile particle i is a force
+ * balance (eq. 14). Collecting the unknown velocities of the Ns mobile
+ * particles gives the sparse symmetric linear system A v = f (eq. 15) with
+ * dim x dim blocks (eqs 16-18):
+ *   A_ii = sum_{j, all}    gamma w_D e_ij e_ij^T
+ *   A_ij = -gamma w_D e_ij e_ij^T                     (j mobile)
+ *   f_i  = sum_j a w_C e_ij + sum_j sigma w_R theta_ij e_ij / sqrt(dt)
+ *          + body force of i + sum_{j frozen} gamma w_D e_ij e_ij^T v_j
+ * (noise discretised as theta / sqrt(dt); under Lees-Edwards shear the known
+ * velocity offset of a sheared image is moved to f as well).
+ * A is a weighted graph Laplacian plus the couplings to frozen particles:
+ * symmetric positive semi-definite, definite when the frozen particles pin
+ * every rigid translation of the fluid.
+ *
+ * Storage: block CSR over the mobile particles, rows in particle order; per row
+ * its diagonal block (and inverse) and the off-diagonal blocks of the pairs
+ * listed under that row in the Verlet half list, so every pair is stored once
+ * and A_ji = A_ij^T = A_ij by construction. Blocks are 3x3 row-major and
+ * vectors 3 doubles per row even in 2D (z unused, kept zero).
+ *
+ * Solvers (all start from the current s->v of the mobile particles):
+ *   OD_SCHEME1            block Jacobi / Picard, eqs 23-26
+ *   OD_SCHEME2_PAPER      Scheme 2 as published: centre-of-mass frame (eq. 35,
+ *                         right side shifted by -F~/Ns, eq. 45) plus Wielandt
+ *                         deflation (eqs 41-46). Its fixed point has zero mean
+ *                         fluid velocity and is NOT the solution of A v = f
+ *                         whenever the frozen particles carry a net reaction
+ *                         (e.g. a body force drives fluid past them).
+ *   OD_SCHEME2_CONSISTENT Jacobi sweep + uniform velocity correction that
+ *                         zeroes the net residual force on the fluid (a
+ *                         two-level method whose coarse space is the rigid
+ *                         translation); converges to the solution of A v = f.
+ *   OD_PCG                conjugate gradients, block-Jacobi preconditioner.
+ * Stopping rules: OD_STOP_CHANGE, eq. 27: |v^l - v^{l-1}| < tol |v^l|;
+ *                 OD_STOP_RESIDUAL: |f - A v| < tol |f|.
+ */
+#ifndef DPD_OVERDAMPED_H
+#define DPD_OVERDAMPED_H
+
+#include "system.h"
+#include "neighbor.h"
+
+typedef enum {
+    OD_SCHEME1 = 0,
+    OD_SCHEME2_PAPER = 1,
+    OD_SCHEME2_CONSISTENT = 2,
+    OD_PCG = 3
+} OdSolver;
+
+typedef enum {
+    OD_STOP_CHANGE = 0,       /* eq. 27 */
+    OD_STOP_RESIDUAL = 1
+} OdStop;
+
+typedef struct {
+    int dim;
+    int n;                    /* particles of the System at assembly */
+    int nm;                   /* mobile particles = rows (Ns of the paper) */
+    int *row_of;              /* n: row of particle i, -1 if frozen */
+    int *part_of;             /* nm: particle of each row */
+    double *diag;             /* nm x 9: A_ii */
+    double *dinv;             /* nm x 9: A_ii^{-1} (pseudo-inverse if singular) */
+    int *ostart;              /* nm + 1: off-diagonal blocks of row r are ostart[r] .. ostart[r+1] */
+    int *ocol;                /* column (row index of the partner) of each block */
+    double *oblk;             /* 9 per block: A_rc = A_cr */
+    double *f;                /* nm x 3: right side, eq. 18 */
+    double wall[9];           /* sum over rows of the frozen couplings = 1^T A 1 (per block) */
+    double fnorm;             /* |f| */
+    int n_singular;           /* rows whose diagonal block is singular (e.g. one neighbour) */
+    size_t cap_rows, cap_blk; /* allocated sizes */
+    double *work;             /* 5 x nm x 3 scratch for the solvers */
+} OdSystem;
+
+typedef struct {
+    int iterations;           /* sweeps / CG iterations done */
+    int matvecs;              /* applications of A (or of its off-diagonal part) */
+    double change;            /* final |v^l - v^{l-1}| / |v^l| */
+    double rel_residual;      /* final |f - A v| / |f| */
+    int converged;            /* 1 if the stopping rule was met within max_iter */
+} OdResult;
+
+void od_init(OdSystem *od);
+void od_free(OdSystem *od);
+
+/* Build A and f (eqs 16, 18) from the current positions, frozen velocities in
+ * s->v, noise of step s->step. Returns 0, or -1 on allocation failure. */
+int od_assemble(OdSystem *od, const System *s, const NeighborList *nl);
+
+/* Solve A v = f with the chosen scheme, warm-started from s->v; writes the
+ * solution into s->v for mobile particles (frozen ones untouched). */
+OdResult od_solve(OdSystem *od, System *s, OdSolver solver, OdStop stop,
+                  double tol, int max_iter);
+
+/* Same on a packed vector v (nm x 3), in place; v holds the warm start. */
+OdResult od_solve_vec(OdSystem *od, double *v, OdSolver solver, OdStop stop,
+                      double tol, int max_iter);
+
+/* y = A v on packed vectors (nm x 3). */
+void od_matvec(const OdSystem *od, const double *v, double *y);
+
+/* |f - A v| / |f| (|f - A v| if f = 0). */
+double od_residual(const OdSystem *od, const double *v);
+
+/* Pack / unpack the mobile velocities of s (nm x 3). */
+void od_gather(const OdSystem *od, const System *s, double *v);
+void od_scatter(const OdSystem *od, System *s, const double *v);
+
+#endif
