@@ -28,11 +28,18 @@ void od_free(OdSystem *od)
 
 /* ------------------------------------------------------------ small blocks */
 
-/* b += g e e^T (3x3 row-major) */
+/* b += g e e^T (3x3 row-major), entries (a,c) and (c,a) bit-identical */
 static inline void add_outer(double *b, double g, const double e[3])
 {
-    for (int a = 0; a < 3; a++)
-        for (int c = 0; c < 3; c++) b[3 * a + c] += g * e[a] * e[c];
+    for (int a = 0; a < 3; a++) {
+        const double ga = g * e[a];
+        b[4 * a] += ga * e[a];
+        for (int c = a + 1; c < 3; c++) {
+            const double q = ga * e[c];
+            b[3 * a + c] += q;
+            b[3 * c + a] += q;
+        }
+    }
 }
 
 /* y (+)= B x for a 3x3 block */

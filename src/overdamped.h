@@ -68,11 +68,16 @@ typedef struct {
     int *ocol;                /* column (row index of the partner) of each block */
     double *oblk;             /* 9 per block: A_rc = A_cr */
     double *f;                /* nm x 3: right side, eq. 18 */
-    double wall[9];           /* sum over rows of the frozen couplings = 1^T A 1 (per block) */
+    double *wrow;             /* nm x 9: frozen couplings of each row, sum_{j frozen} gamma w_D e e^T */
+    double wall[9];           /* sum of wrow over rows = 1^T A 1 (per block) */
+    double wall_inv[9];       /* its inverse (pseudo-inverse if singular) */
+    double fbody[3];          /* sum of the body forces in f */
+    int s2_exclude_body;      /* OD_SCHEME2_PAPER: 1 = F~ without body forces (eq. 31 verbatim);
+                               * 0 (default) = F~ is the fluid's whole net force */
     double fnorm;             /* |f| */
     int n_singular;           /* rows whose diagonal block is singular (e.g. one neighbour) */
     size_t cap_rows, cap_blk; /* allocated sizes */
-    double *work;             /* 5 x nm x 3 scratch for the solvers */
+    double *work;             /* 6 x n x 3 scratch: slots 0-3 solvers, 4 od_solve */
 } OdSystem;
 
 typedef struct {
