@@ -115,6 +115,7 @@ static void sample_profile(Measure *m, const System *s, const PairVirial *pv, in
         const double *v = s->v + 3 * i;
         q[0] += 1.0;
         q[1] += t->mass;
+        for (int a = 0; a < 3; a++) q[PROF_SUMV + a] += v[a];
         for (int a = 0; a < 3; a++) q[2 + a] += t->mass * v[a];
         for (int a = 0; a < 3; a++)
             for (int c = 0; c < 3; c++) q[5 + 3 * a + c] += t->mass * v[a] * v[c];
@@ -231,14 +232,16 @@ static int write_profile(const Measure *m, const System *s, const char *dir)
         for (int k = 0; k < B; k++) {
             const double *q = m->prof + ((size_t)k * nb + b) * PROF_Q;
             const double S = (double)m->prof_samples[k];
-            if (S <= 0 || q[1] <= 0) continue;
+            if (S <= 0 || q[0] <= 0) continue;
             double *o = tmp + 10 * nbk++;
             o[0] = q[0] / (S * Vbin);
-            for (int a = 0; a < 3; a++) o[1 + a] = q[2 + a] / q[1];
-            /* kinetic P_ab = (sum m v_a v_b - M u_a u_b) / (S V) */
-            double Kab[9], trK = 0.0;
-            for (int a = 0; a < 3; a++)
-                for (int c = 0; c < 3; c++) Kab[3 * a + c] = (q[5 + 3 * a + c] - q[2 + a] * q[2 + c] / q[1]) / (S * Vbin);
+            /* mass-weighted velocity; number-weighted for massless (m = 0) particles */
+            for (int a = 0; a < 3; a++) o[1 + a] = q[1] > 0 ? q[2 + a] / q[1] : q[PROF_SUMV + a] / q[0];
+            /* kinetic P_ab = (sum m v_a v_b - M u_a u_b) / (S V); zero when m = 0 */
+            double Kab[9] = {0}, trK = 0.0;
+            if (q[1] > 0)
+                for (int a = 0; a < 3; a++)
+                    for (int c = 0; c < 3; c++) Kab[3 * a + c] = (q[5 + 3 * a + c] - q[2 + a] * q[2 + c] / q[1]) / (S * Vbin);
             for (int a = 0; a < s->box.dim; a++) trK += Kab[4 * a];
             o[4] = trK * S * Vbin / (s->box.dim * q[0]);
             const int comp = 3 * ax + flow;

@@ -44,7 +44,10 @@ typedef struct {
     int n;
 } Measure;
 
-#define PROF_Q (2 + 3 + 9 + 9 * PAIR_PARTS)
+/* per bin: count, mass, momentum (3), sum m v v (9), pair virial (9 per part),
+ * sum v (3, number-weighted: the velocity of massless particles) */
+#define PROF_Q (2 + 3 + 9 + 9 * PAIR_PARTS + 3)
+#define PROF_SUMV (2 + 3 + 9 + 9 * PAIR_PARTS)
 
 int  measure_init(Measure *m, const System *s);
 void measure_free(Measure *m);

@@ -19,6 +19,7 @@
 #include "measure.h"
 #include "output.h"
 #include "timers.h"
+#include "overdamped.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -141,9 +142,63 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
     return rc;
 }
 
+/* Solver statistics of the m = 0 runs, one entry per step. */
+typedef struct {
+    Series iterations, residual, seconds;
+    long long unconverged;
+} SolverStats;
+
+/* One step of the m = 0 dynamics: v from A v = f at the current positions
+ * (eqs 15-18, noise of this step), then r += v dt (eq. 28); frozen particles
+ * move at their wall velocity. Returns -1 if the solve did not converge and
+ * the scene does not allow it. */
+static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunConfig *rc,
+                           SolverStats *ss)
+{
+    const double t0 = wall_now();
+    if (od_assemble(od, s, nl)) return -2;
+    OdResult r = od_solve(od, s, (OdSolver)rc->od_solver, (OdStop)rc->od_stop, rc->od_tol, rc->od_max_iter);
+    series_push(&ss->iterations, r.iterations);
+    series_push(&ss->residual, r.rel_residual);
+    series_push(&ss->seconds, wall_now() - t0);
+    if (!r.converged) {
+        ss->unconverged++;
+        if (!rc->od_allow_unconverged) {
+            static const char *names[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg"};
+            fprintf(stderr, "dpd: the %s solve did not converge at step %llu: %d iterations, change %g, "
+                    "relative residual %g (tolerance %g); raise overdamped.max_iterations or set "
+                    "overdamped.allow_unconverged = true\n", names[rc->od_solver],
+                    (unsigned long long)s->step, r.iterations, r.change, r.rel_residual, rc->od_tol);
+            return -1;
+        }
+    }
+    memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
+    return 0;
+}
+
+static void overdamped_move(System *s)
+{
+    const double dt = s->dt;
+    box_advance(&s->box, dt);
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) {
+        double *x = s->x + 3 * i, *v = s->v + 3 * i;
+        for (int d = 0; d < 3; d++) x[d] += dt * v[d];   /* eq. 28 */
+        box_wrap(&s->box, x, s->img + 3 * i, &v[0], &s->v_pred[3 * i]);
+    }
+    s->step++;
+    s->time += dt;
+}
+
 static int check_stable(const System *s, const RunConfig *rc, double *T)
 {
     *T = system_kinetic_temperature(s);
+    if (rc->overdamped) {   /* no kinetic temperature at m = 0: check the velocities */
+        double vmax = 0.0;
+        for (int k = 0; k < 3 * s->n; k++) vmax = fmax(vmax, fabs(s->v[k]));
+        *T = vmax;
+        return isfinite(vmax);
+    }
     return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
 }
 
@@ -191,22 +246,49 @@ int run_scene(const RunOptions *opt)
     PairVirial pv = {.bin_axis = m.prof_axis, .nbins = m.prof_on ? m.prof_bins : 0, .Wbin = wbin};
     const long long total = rc.equilibration + rc.steps;
     const int show = !opt->quiet && isatty(2);
-    forces_compute(&s, &nl, &fw, NULL);
+    OdSystem od;
+    SolverStats ss = {0};
+    od_init(&od);
+    if (rc.overdamped) {
+        int r = overdamped_step(&s, &nl, &od, &rc, &ss);
+        if (r) { status = r == -2 ? 4 : 3; }
+    } else {
+        forces_compute(&s, &nl, &fw, NULL);
+    }
     st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
-    for (long long k = 0; k < total; k++) {
+    for (long long k = 0; k < total && status == 0; k++) {
         if (k == rc.equilibration) st.prod_wall0 = wall_now();
-        double t0 = wall_now();
-        double doff = integrate_predict(&s);
-        neighbor_note_shear(&nl, doff);
-        double t1 = wall_now();
-        if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
-        double t2 = wall_now();
-        const long long prod = (long long)s.step - rc.equilibration;
-        const int want = prod >= 0 && measure_wants_virial(&m, prod);
-        forces_compute(&s, &nl, &fw, want ? &pv : NULL);
-        double t3 = wall_now();
-        integrate_correct(&s);
-        double t4 = wall_now();
+        double t0 = wall_now(), t1, t2, t3, t4;
+        long long prod;
+        int want;
+        if (rc.overdamped) {
+            /* the velocities of step k are known: sample them, then move (eq. 28) */
+            prod = (long long)s.step - rc.equilibration;
+            want = prod >= 0 && measure_wants_virial(&m, prod);
+            if (want) forces_compute(&s, &nl, &fw, &pv);   /* virial of the solved state */
+            if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
+            overdamped_move(&s);
+            t1 = wall_now();
+            if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
+            t2 = wall_now();
+            int r = overdamped_step(&s, &nl, &od, &rc, &ss);
+            if (r) { status = r == -2 ? 4 : 3; break; }
+            t3 = t4 = wall_now();
+            prod = -1;   /* sampled above */
+            want = 0;
+        } else {
+            double doff = integrate_predict(&s);
+            neighbor_note_shear(&nl, doff);
+            t1 = wall_now();
+            if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
+            t2 = wall_now();
+            prod = (long long)s.step - rc.equilibration;
+            want = prod >= 0 && measure_wants_virial(&m, prod);
+            forces_compute(&s, &nl, &fw, want ? &pv : NULL);
+            t3 = wall_now();
+            integrate_correct(&s);
+            t4 = wall_now();
+        }
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
         if (s.step % 10 == 0 || want) {
             double T;
@@ -256,6 +338,16 @@ int run_scene(const RunOptions *opt)
         fprintf(f, "peak_memory_bytes_per_particle\t%.6g\t0\n", ru.ru_maxrss * 1024.0 / s.n);
         for (int t = 0; t < T_COUNT; t++) fprintf(f, "time_%s_seconds\t%.4f\t0\n", TIMER_NAMES[t], st.timers[t]);
         fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
+        if (rc.overdamped) {
+            double v, se;
+            series_stats(&ss.iterations, m.nblocks, &v, &se);
+            fprintf(f, "solver_iterations\t%.10g\t%.4g\n", v, se);
+            series_stats(&ss.residual, m.nblocks, &v, &se);
+            fprintf(f, "solver_rel_residual\t%.10g\t%.4g\n", v, se);
+            series_stats(&ss.seconds, m.nblocks, &v, &se);
+            fprintf(f, "solver_seconds_per_step\t%.10g\t%.4g\n", v, se);
+            fprintf(f, "solver_unconverged_steps\t%lld\t0\n", ss.unconverged);
+        }
         fclose(f);
         char *prov = NULL;
         size_t plen = 0;
@@ -273,6 +365,8 @@ int run_scene(const RunOptions *opt)
     }
     if (status == 0) unlink(marker);
     free(wbin);
+    od_free(&od);
+    series_free(&ss.iterations); series_free(&ss.residual); series_free(&ss.seconds);
     measure_free(&m);
     forces_free(&fw);
     neighbor_free(&nl);

@@ -5,6 +5,7 @@
 #include <math.h>
 #include "setup.h"
 #include "random.h"
+#include "overdamped.h"
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const char *const AXES_NONE[] = {"none", "x", "y", "z", NULL};
@@ -173,7 +174,7 @@ static void initial_velocities(System *s)
         double z[4];
         rng_normal2(r.v[0], r.v[1], &z[0], &z[1]);
         rng_normal2(r.v[2], r.v[3], &z[2], &z[3]);
-        const double sd = sqrt(s->kBT / t->mass);
+        const double sd = t->mass > 0.0 ? sqrt(s->kBT / t->mass) : 0.0;   /* m = 0: solved, not drawn */
         for (int d = 0; d < s->box.dim; d++) { v[d] = sd * z[d]; p[d] += t->mass * v[d]; }
         mtot += t->mass;
     }
@@ -186,6 +187,31 @@ static void initial_velocities(System *s)
         v[0] += box_stream_vx(&s->box, s->x[3 * i + 1]);
     }
     memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
+}
+
+/* overdamped = { solver = "pcg"; stop = "change"; tolerance = 1e-7; ... }: every
+ * mobile particle is massless and its velocity solves A v = f (eqs 14-18). */
+static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
+{
+    static const char *const SOLVERS[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", NULL};
+    static const char *const STOPS[] = {"change", "residual", NULL};
+    config_setting_t *g = scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    rc->overdamped = g != NULL;
+    if (!g) return 0;
+    const char *name;
+    if (scene_string(sc, g, "solver", &name, "pcg", SOLVERS, 0) < 0) return -1;
+    for (int k = 0; SOLVERS[k]; k++) if (!strcmp(SOLVERS[k], name)) rc->od_solver = k;
+    if (scene_string(sc, g, "stop", &name, "change", STOPS, 0) < 0) return -1;
+    rc->od_stop = strcmp(name, "change") ? OD_STOP_RESIDUAL : OD_STOP_CHANGE;
+    if (scene_double(sc, g, "tolerance", &rc->od_tol, 1e-7, 1e-15, 1e-1, 0) < 0) return -1;
+    long long v;
+    if (scene_int(sc, g, "max_iterations", &v, 100000, 1, 100000000, 0) < 0) return -1;
+    rc->od_max_iter = (int)v;
+    if (scene_bool(sc, g, "allow_unconverged", &rc->od_allow_unconverged, 0) < 0) return -1;
+    for (int t = 0; t < s->ntypes; t++)
+        if (!s->types[t].frozen) s->types[t].mass = 0.0;   /* m = 0: no kinetic terms */
+    return 0;
 }
 
 static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
@@ -307,6 +333,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
         if (scene_int(sc, out, "trajectory_every", &v, 0, 0, 1000000000LL, 0) < 0) return -1;
         rc->trajectory_every = (int)v;
     }
+    if (read_overdamped(sc, s, rc)) return -1;
     if (read_measure(sc, s, m, rc->steps)) return -1;
     if (scene_check_unknown(sc)) return -1;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);

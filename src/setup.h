@@ -12,6 +12,10 @@ typedef struct {
     double skin;
     int trajectory_every;
     double max_temperature_ratio;  /* blow-up guard: stop if T > this x kBT */
+    /* m = 0 (Phan-Thien et al. 2016): velocities from A v = f every step */
+    int overdamped;
+    int od_solver, od_stop, od_max_iter, od_allow_unconverged;
+    double od_tol;
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */
