@@ -144,8 +144,9 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
 
 /* Solver statistics of the m = 0 runs, one entry per step. */
 typedef struct {
-    Series iterations, residual, seconds;
+    Series iterations, residual, seconds, true_error;
     long long unconverged;
+    double *sol, *ref;        /* packed solution and reference (3 n each) */
 } SolverStats;
 
 /* One step of the m = 0 dynamics: v from A v = f at the current positions
@@ -155,12 +156,15 @@ typedef struct {
 static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunConfig *rc,
                            SolverStats *ss)
 {
+    const int record = (long long)s->step >= rc->equilibration;   /* production steps only */
     const double t0 = wall_now();
     if (od_assemble(od, s, nl)) return -2;
     OdResult r = od_solve(od, s, (OdSolver)rc->od_solver, (OdStop)rc->od_stop, rc->od_tol, rc->od_max_iter);
-    series_push(&ss->iterations, r.iterations);
-    series_push(&ss->residual, r.rel_residual);
-    series_push(&ss->seconds, wall_now() - t0);
+    if (record) {
+        series_push(&ss->iterations, r.iterations);
+        series_push(&ss->residual, r.rel_residual);
+        series_push(&ss->seconds, wall_now() - t0);
+    }
     if (!r.converged) {
         ss->unconverged++;
         if (!rc->od_allow_unconverged) {
@@ -172,8 +176,34 @@ static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunC
             return -1;
         }
     }
+    if (record && rc->od_reference_tol > 0.0) {
+        /* true error: distance to a tight PCG solve started from this solution */
+        od_gather(od, s, ss->sol);
+        memcpy(ss->ref, ss->sol, 3 * (size_t)od->nm * sizeof(double));
+        od_solve_vec(od, ss->ref, OD_PCG, OD_STOP_RESIDUAL, rc->od_reference_tol, 100 * od->nm + 1000);
+        double num = 0.0, den = 0.0;
+        for (int k = 0; k < 3 * od->nm; k++) {
+            num += (ss->sol[k] - ss->ref[k]) * (ss->sol[k] - ss->ref[k]);
+            den += ss->ref[k] * ss->ref[k];
+        }
+        series_push(&ss->true_error, den > 0 ? sqrt(num / den) : sqrt(num));
+    }
     memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
     return 0;
+}
+
+/* Specular walls: mirror a mobile particle that crossed a confining plane. */
+static void confine(System *s, const RunConfig *rc)
+{
+    const int a = rc->confine_axis;
+    if (a < 0) return;
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) {
+        if (s->types[s->type[i]].frozen) continue;
+        double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
+        if (x[a] < rc->confine_lo) { x[a] = 2.0 * rc->confine_lo - x[a]; v[a] = -v[a]; vp[a] = -vp[a]; }
+        else if (x[a] > rc->confine_hi) { x[a] = 2.0 * rc->confine_hi - x[a]; v[a] = -v[a]; vp[a] = -vp[a]; }
+    }
 }
 
 static void overdamped_move(System *s)
@@ -249,6 +279,9 @@ int run_scene(const RunOptions *opt)
     OdSystem od;
     SolverStats ss = {0};
     od_init(&od);
+    ss.sol = calloc(3 * (size_t)s.n + 1, sizeof(double));
+    ss.ref = calloc(3 * (size_t)s.n + 1, sizeof(double));
+    if (!ss.sol || !ss.ref) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     if (rc.overdamped) {
         int r = overdamped_step(&s, &nl, &od, &rc, &ss);
         if (r) { status = r == -2 ? 4 : 3; }
@@ -268,6 +301,7 @@ int run_scene(const RunOptions *opt)
             if (want) forces_compute(&s, &nl, &fw, &pv);   /* virial of the solved state */
             if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
             overdamped_move(&s);
+            confine(&s, &rc);
             t1 = wall_now();
             if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
             t2 = wall_now();
@@ -279,6 +313,7 @@ int run_scene(const RunOptions *opt)
         } else {
             double doff = integrate_predict(&s);
             neighbor_note_shear(&nl, doff);
+            confine(&s, &rc);
             t1 = wall_now();
             if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
             t2 = wall_now();
@@ -339,6 +374,19 @@ int run_scene(const RunOptions *opt)
         for (int t = 0; t < T_COUNT; t++) fprintf(f, "time_%s_seconds\t%.4f\t0\n", TIMER_NAMES[t], st.timers[t]);
         fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
         if (rc.overdamped) {
+            /* per-step solver record for plots */
+            char path[1100];
+            snprintf(path, sizeof path, "%s/solver.tsv", opt->outdir);
+            FILE *sf = fopen(path, "w");
+            if (sf) {
+                fprintf(sf, "step\titerations\trel_residual\tseconds%s\n", ss.true_error.n ? "\ttrue_rel_error" : "");
+                for (size_t k = 0; k < ss.iterations.n; k++) {
+                    fprintf(sf, "%zu\t%g\t%.4g\t%.4g", k, ss.iterations.v[k], ss.residual.v[k], ss.seconds.v[k]);
+                    if (ss.true_error.n) fprintf(sf, "\t%.4g", ss.true_error.v[k]);
+                    fputc('\n', sf);
+                }
+                if (fclose(sf)) status = 4;
+            } else status = 4;
             double v, se;
             series_stats(&ss.iterations, m.nblocks, &v, &se);
             fprintf(f, "solver_iterations\t%.10g\t%.4g\n", v, se);
@@ -347,6 +395,10 @@ int run_scene(const RunOptions *opt)
             series_stats(&ss.seconds, m.nblocks, &v, &se);
             fprintf(f, "solver_seconds_per_step\t%.10g\t%.4g\n", v, se);
             fprintf(f, "solver_unconverged_steps\t%lld\t0\n", ss.unconverged);
+            if (ss.true_error.n > 0) {
+                series_stats(&ss.true_error, m.nblocks, &v, &se);
+                fprintf(f, "solver_true_rel_error\t%.10g\t%.4g\n", v, se);
+            }
         }
         fclose(f);
         char *prov = NULL;
@@ -367,6 +419,7 @@ int run_scene(const RunOptions *opt)
     free(wbin);
     od_free(&od);
     series_free(&ss.iterations); series_free(&ss.residual); series_free(&ss.seconds);
+    series_free(&ss.true_error); free(ss.sol); free(ss.ref);
     measure_free(&m);
     forces_free(&fw);
     neighbor_free(&nl);

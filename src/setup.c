@@ -148,7 +148,9 @@ static void place_particles(System *s, const TypeInit *ti)
             s->type[i] = (uint8_t)t;
             double *x = s->x + 3 * i;
             if (ti[t].lattice) {
-                long long q = k;
+                /* spread the count evenly over the sites when there are more sites */
+                const long long nsite = msite[0] * msite[1] * msite[2];
+                long long q = (long long)((double)k * nsite / ti[t].count);
                 for (int d = 0; d < dim; d++) {
                     const long long c = q % msite[d];
                     q /= msite[d];
@@ -209,8 +211,31 @@ static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
     if (scene_int(sc, g, "max_iterations", &v, 100000, 1, 100000000, 0) < 0) return -1;
     rc->od_max_iter = (int)v;
     if (scene_bool(sc, g, "allow_unconverged", &rc->od_allow_unconverged, 0) < 0) return -1;
+    if (scene_double(sc, g, "reference_tolerance", &rc->od_reference_tol, 0.0, 0.0, 1e-3, 0) < 0) return -1;
     for (int t = 0; t < s->ntypes; t++)
         if (!s->types[t].frozen) s->types[t].mass = 0.0;   /* m = 0: no kinetic terms */
+    return 0;
+}
+
+/* confine = { axis = "y"; lo = 1.0; hi = 11.0; }: mobile particles that cross
+ * a plane are reflected back (specular: position mirrored, normal velocity
+ * reversed), keeping the fluid out of frozen wall regions. */
+static int read_confine(Scene *sc, System *s, RunConfig *rc)
+{
+    rc->confine_axis = -1;
+    config_setting_t *g = scene_child(sc, NULL, "confine", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (!g) return 0;
+    const char *ax;
+    if (scene_string(sc, g, "axis", &ax, "y", AXES, 0) < 0) return -1;
+    rc->confine_axis = ax[0] - 'x';
+    if (rc->confine_axis >= s->box.dim) return scene_fail(sc, g, "axis \"%s\" does not exist in %dD", ax, s->box.dim);
+    const double L = s->box.L[rc->confine_axis];
+    if (scene_double(sc, g, "lo", &rc->confine_lo, 0.0, 0.0, L, 1) < 0) return -1;
+    if (scene_double(sc, g, "hi", &rc->confine_hi, L, 0.0, L, 1) < 0) return -1;
+    if (rc->confine_hi <= rc->confine_lo) return scene_fail(sc, g, "need lo < hi (lo %g, hi %g)", rc->confine_lo, rc->confine_hi);
+    if (rc->confine_axis == 1 && s->box.shear_rate != 0.0)
+        return scene_fail(sc, g, "walls across y cannot be combined with Lees-Edwards shear_rate");
     return 0;
 }
 
@@ -334,6 +359,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
         rc->trajectory_every = (int)v;
     }
     if (read_overdamped(sc, s, rc)) return -1;
+    if (read_confine(sc, s, rc)) return -1;
     if (read_measure(sc, s, m, rc->steps)) return -1;
     if (scene_check_unknown(sc)) return -1;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);

@@ -16,6 +16,10 @@ typedef struct {
     int overdamped;
     int od_solver, od_stop, od_max_iter, od_allow_unconverged;
     double od_tol;
+    double od_reference_tol;  /* > 0: also solve by PCG to this residual and record the true error */
+    /* specular walls for mobile particles: confine_axis < 0 for none */
+    int confine_axis;
+    double confine_lo, confine_hi;
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */
