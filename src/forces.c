@@ -12,7 +12,7 @@ int forces_init(ForceWork *w, int n, int nbins)
     memset(w, 0, sizeof *w);
     w->n = n;
     w->nbins = nbins;
-    w->buf = malloc((size_t)FORCE_CHUNKS * 3 * (size_t)n * sizeof(double) + 1);
+    w->buf = malloc((size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1);
     if (!w->buf) return -1;
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         w->chunk[c].nbins = nbins;
@@ -198,7 +198,8 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
     const size_t stride = 3 * (size_t)n;
     #pragma omp parallel for schedule(static, 1)
     for (int c = 0; c < FORCE_CHUNKS; c++) {
-        double *buf = w->buf + (size_t)c * stride;
+        /* chunk 0 accumulates straight into f: one buffer less to clear and read */
+        double *buf = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
         memset(buf, 0, stride * sizeof(double));
         /* equal numbers of pairs per chunk, cut at particle boundaries */
         const size_t np = (size_t)nl->start[n];
@@ -218,8 +219,8 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
     }
     #pragma omp parallel for schedule(static)
     for (size_t k = 0; k < stride; k++) {
-        double sum = 0.0;
-        for (int c = 0; c < FORCE_CHUNKS; c++) sum += w->buf[(size_t)c * stride + k];
+        double sum = s->f[k];                     /* fixed order: ((b0 + b1) + b2) + b3 */
+        for (int c = 1; c < FORCE_CHUNKS; c++) sum += w->buf[(size_t)(c - 1) * stride + k];
         s->f[k] = sum;
     }
     if (pv) {

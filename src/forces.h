@@ -23,7 +23,7 @@ typedef struct {
 } PairVirial;
 
 typedef struct {
-    double *buf;              /* FORCE_CHUNKS x 3 n */
+    double *buf;              /* (FORCE_CHUNKS - 1) x 3 n; chunk 0 sums into f */
     PairVirial chunk[FORCE_CHUNKS];
     int n, nbins;
 } ForceWork;

@@ -232,11 +232,18 @@ int neighbor_build(NeighborList *nl, System *s)
     size_t total = 0;
     for (int t = 0; t < nl->nthreads_used; t++) total += nl->tlen[t];
     if (total > (size_t)INT32_MAX) return -1;
-    if (ensure_capacity(&nl->nbr, &nl->cap, total + 1)) return -1;
-    size_t at = 0;
-    for (int t = 0; t < nl->nthreads_used; t++) {
-        memcpy(nl->nbr + at, nl->tbuf[t], nl->tlen[t] * sizeof(int));
-        at += nl->tlen[t];
+    if (nl->nthreads_used == 1) {
+        /* one range: the thread buffer becomes the list, no copy */
+        int *p = nl->nbr; size_t c = nl->cap;
+        nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
+        nl->tbuf[0] = p; nl->tcap[0] = c;
+    } else {
+        if (ensure_capacity(&nl->nbr, &nl->cap, total + 1)) return -1;
+        size_t at = 0;
+        for (int t = 0; t < nl->nthreads_used; t++) {
+            memcpy(nl->nbr + at, nl->tbuf[t], nl->tlen[t] * sizeof(int));
+            at += nl->tlen[t];
+        }
     }
     nl->start[0] = 0;
     for (int i = 0; i < n; i++) nl->start[i + 1] += nl->start[i];
