@@ -345,6 +345,21 @@ static int stop_change(double dnorm, double vnorm, double tol)
     return dnorm < tol * vnorm;                  /* eq. 27 */
 }
 
+/* Bookkeeping after a Picard sweep that changed v by |dv|^2 = d2: counts the
+ * sweep, records the change, and applies eq. 27 when that is the rule.
+ * Returns 1 when converged (the residual of the final v is then recorded). */
+static int end_of_sweep(const OdSystem *od, const double *v, double d2, OdStop stop, double tol,
+                        OdResult *res)
+{
+    const double vnorm = cblas_dnrm2(3 * od->nm, v, 1), dnorm = sqrt(d2);
+    res->iterations++;
+    res->change = vnorm > 0.0 ? dnorm / vnorm : dnorm;
+    if (stop != OD_STOP_CHANGE || !stop_change(dnorm, vnorm, tol)) return 0;
+    res->converged = 1;
+    res->rel_residual = od_residual(od, v);
+    return 1;
+}
+
 /* ---------------------------------------------------------------- Scheme 1 */
 
 /* Picard / block Jacobi: v^l = -H v^{l-1} + b = D^{-1} (f - K v^{l-1}),
@@ -365,14 +380,7 @@ static OdResult scheme1(OdSystem *od, double *v, OdStop stop, double tol, int ma
         for (int r = 0; r < nm; r++) blk_mul(od->dinv + 9 * (size_t)r, t + 3 * (size_t)r, vn + 3 * (size_t)r); /* eq. 26 */
         double d2 = 0.0;
         for (int k = 0; k < n3; k++) { const double q = vn[k] - v[k]; d2 += q * q; v[k] = vn[k]; }
-        const double vnorm = cblas_dnrm2(n3, v, 1);
-        res.iterations++;
-        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
-        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
-            res.converged = 1;
-            res.rel_residual = od_residual(od, v);
-            break;
-        }
+        if (end_of_sweep(od, v, d2, stop, tol, &res)) break;
     }
     return res;
 }
@@ -436,14 +444,7 @@ static OdResult scheme2_paper(OdSystem *od, double *v, OdStop stop, double tol, 
             }
         }
         memcpy(v, vn, (size_t)n3 * sizeof(double));
-        const double vnorm = cblas_dnrm2(n3, v, 1);
-        res.iterations++;
-        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
-        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
-            res.converged = 1;
-            res.rel_residual = od_residual(od, v);
-            break;
-        }
+        if (end_of_sweep(od, v, d2, stop, tol, &res)) break;
     }
     return res;
 }
@@ -493,14 +494,7 @@ static OdResult scheme2_consistent(OdSystem *od, double *v, OdStop stop, double 
                 d2 += dd * dd;
             }
         memcpy(v, vn, (size_t)n3 * sizeof(double));
-        const double vnorm = cblas_dnrm2(n3, v, 1);
-        res.iterations++;
-        res.change = vnorm > 0.0 ? sqrt(d2) / vnorm : sqrt(d2);
-        if (stop == OD_STOP_CHANGE && stop_change(sqrt(d2), vnorm, tol)) {
-            res.converged = 1;
-            res.rel_residual = od_residual(od, v);
-            break;
-        }
+        if (end_of_sweep(od, v, d2, stop, tol, &res)) break;
     }
     return res;
 }
