@@ -14,18 +14,22 @@ REPEAT=${REPEAT:-3}          # best of REPEAT for each configuration
 # side -> particles: round(3 L^3); 10 -> 3000, 20 -> 24000, 69.336 -> 1e6
 SIZES=${SIZES:-"10 20 69.336"}
 steps_for() { case $1 in 10) echo 3000;; 20) echo 1000;; *) echo 100;; esac; }
-eq_for() { case $1 in 10) echo 500;; 20) echo 300;; *) echo 50;; esac; }
+# equilibration: at least 3 time units at every size, so the production steps
+# of every size run at kBT = 1 (with 50 steps, 1e6 particles were still at
+# T = 1.3 and rebuilt their neighbour list 30 % more often)
+eq_for() { case $1 in 10) echo 500;; *) echo 300;; esac; }
 
-ours() {  # L threads -> "rate bytes_per_particle"
-    local L=$1 T=$2 best=0 mem=0 r
+ours() {  # L threads -> "rate bytes_per_particle production_temperature"
+    local L=$1 T=$2 best=0 mem=0 temp=0 r
     for k in $(seq "$REPEAT"); do
         "$DPD" run bench/standard.cfg --out "$out/dpd-$L-$T" --threads "$T" --quiet \
             --set "box=[$L,$L,$L]" --set steps=$(steps_for "$L") --set equilibration=$(eq_for "$L") >/dev/null
         r=$(awk -F'\t' '$1=="production_particle_steps_per_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         mem=$(awk -F'\t' '$1=="peak_memory_bytes_per_particle"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        temp=$(awk -F'\t' '$1=="temperature"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         best=$(awk -v a="$best" -v b="$r" 'BEGIN{print (b > a) ? b : a}')
     done
-    echo "$best $mem"
+    echo "$best $mem $temp"
 }
 peer() {  # L threads -> rate
     local L=$1 T=$2 best=0 r
@@ -37,17 +41,17 @@ peer() {  # L threads -> rate
 }
 
 if [ "${PEER:-0}" = 1 ]; then bash bench/peer/build-lammps.sh >/dev/null; fi
-printf '%-10s %-8s %14s %14s %12s %10s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle"
+printf '%-10s %-8s %14s %14s %12s %10s %8s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle" "T"
 declare -A rate
 for L in $SIZES; do
     n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
     for T in 1 2; do
-        read -r r mem < <(ours "$L" "$T")
+        read -r r mem temp < <(ours "$L" "$T")
         rate[$L,$T]=$r
         if [ "${PEER:-0}" = 1 ]; then
             p=$(peer "$L" "$T"); ratio=$(awk -v a="$r" -v b="$p" 'BEGIN{printf "%.2f", a/b}')
         else p="-"; ratio="-"; fi
-        printf '%-10s %-8s %14.4g %14s %12s %10.0f\n' "$n" "$T" "$r" "$p" "$ratio" "$mem"
+        printf '%-10s %-8s %14.4g %14s %12s %10.0f %8.3f\n' "$n" "$T" "$r" "$p" "$ratio" "$mem" "$temp"
     done
 done
 echo

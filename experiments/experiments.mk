@@ -41,3 +41,6 @@ paper:
 
 .PHONY: results plots figures check reproduce paper
 
+
+# fig07 takes the exclusion radius measured by fig06 at the same tier
+results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv

@@ -14,6 +14,7 @@ static int block_of(const Measure *m, long long sample)
 int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
+    if (field_init(&m->field, s, m->nblocks)) return -1;
     if (m->prof_on) {
         m->prof = calloc((size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double));
         m->prof_samples = calloc((size_t)m->nblocks, sizeof(long long));
@@ -59,6 +60,7 @@ void measure_free(Measure *m)
     free(m->rdf_hist); free(m->rdf_samples);
     free(m->msd_origin_pos); free(m->msd_origin_step); free(m->msd_curve);
     series_free(&m->msd_done);
+    field_free(&m->field);
 }
 
 int measure_wants_virial(const Measure *m, long long step)
@@ -197,6 +199,7 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
     if (prod_step % m->every) return;
     const long long sample = prod_step / m->every;
     sample_thermo(m, s, pv);
+    field_sample(&m->field, s, block_of(m, sample));
     if (m->prof_on) sample_profile(m, s, pv, block_of(m, sample));
 }
 
@@ -383,6 +386,7 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
             row(summary, name, v, se);
         }
     }
+    if (field_write(&m->field, s, summary, dir)) return -1;
     if (m->prof_on && write_profile(m, s, dir)) return -1;
     if (m->rdf_on && write_rdf(m, s, dir)) return -1;
     if (m->msd_on && write_msd(m, s, summary, dir)) return -1;

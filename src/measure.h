@@ -10,6 +10,7 @@
 #include "neighbor.h"
 #include "forces.h"
 #include "blockavg.h"
+#include "measure_field.h"
 
 enum { STRESS_KINETIC = 0, STRESS_CONSERVATIVE, STRESS_DISSIPATIVE, STRESS_RANDOM, STRESS_PARTS };
 
@@ -41,6 +42,7 @@ typedef struct {
     int msd_count;            /* particles in the selection */
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
+    FieldMeasure field;       /* about points, on grids, torques, mean velocities */
     int n;
 } Measure;
 

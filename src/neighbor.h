@@ -16,6 +16,7 @@ typedef struct {
     int nc[3];                /* cells per dimension (nc[2] = 1 in 2D) */
     double cw[3];             /* cell width */
     int brute_force;          /* box too small for cells: all pairs */
+    int per_cutoff;           /* cells per cutoff length, R = 1 or 2 */
     int *cell_start;          /* ncells + 1 */
     int *cell_of, *perm, *count;
     int *start;               /* n + 1: pairs of i are nbr[start[i] .. start[i+1]) */

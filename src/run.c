@@ -246,6 +246,12 @@ int run_scene(const RunOptions *opt)
         scene_free(&sc);
         return 2;
     }
+#ifdef _OPENMP
+    /* the m = 0 solvers are serial: extra threads would only spin between the
+     * short parallel loops (doubling the CPU time, and far worse on a busy
+     * machine); --threads still overrides */
+    if (rc.overdamped && opt->threads <= 0) omp_set_num_threads(1);
+#endif
     if (mkdir_p(opt->outdir)) {
         fprintf(stderr, "dpd: cannot create or write the output directory '%s': %s\n", opt->outdir, strerror(errno));
         system_free(&s); scene_free(&sc);

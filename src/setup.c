@@ -15,6 +15,7 @@ typedef struct {
     long long count;
     double lo[3], hi[3];
     int lattice;
+    double *at;               /* explicit positions (3 per particle), or NULL */
 } TypeInit;
 
 static int type_index(const System *s, const char *name)
@@ -22,6 +23,34 @@ static int type_index(const System *s, const char *name)
     for (int t = 0; t < s->ntypes; t++)
         if (strcmp(s->types[t].name, name) == 0) return t;
     return -1;
+}
+
+/* positions = ( [x, y], ... ): particles placed one by one (frozen bodies). */
+static int read_positions(Scene *sc, config_setting_t *g, const System *s, TypeInit *ti)
+{
+    config_setting_t *list = scene_child(sc, g, "positions", CONFIG_TYPE_LIST);
+    if (!list) return sc->failed ? -1 : 0;
+    const int n = config_setting_length(list), dim = s->box.dim;
+    if (n < 1) return scene_fail(sc, list, "'positions' is empty; give at least one [x, y%s]", dim == 3 ? ", z" : "");
+    ti->at = calloc(3 * (size_t)n, sizeof(double));
+    if (!ti->at) return scene_fail(sc, list, "out of memory");
+    for (int k = 0; k < n; k++) {
+        config_setting_t *e = config_setting_get_elem(list, (unsigned)k);
+        const int t = config_setting_type(e);
+        if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) || config_setting_length(e) != dim)
+            return scene_fail(sc, e, "position %d must be an array of %d numbers", k, dim);
+        for (int d = 0; d < dim; d++) {
+            config_setting_t *c = config_setting_get_elem(e, (unsigned)d);
+            const int ct = config_setting_type(c);
+            const double x = ct == CONFIG_TYPE_FLOAT ? config_setting_get_float(c)
+                           : ct == CONFIG_TYPE_INT ? (double)config_setting_get_int(c) : NAN;
+            if (!(x >= 0.0 && x < s->box.L[d]))
+                return scene_fail(sc, e, "position %d: %c = %g must be a number in [0, %g)", k, "xyz"[d], x, s->box.L[d]);
+            ti->at[3 * k + d] = x;
+        }
+    }
+    ti->count = n;
+    return 1;
 }
 
 static int read_types(Scene *sc, System *s, TypeInit *ti)
@@ -69,6 +98,15 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         }
         double vol = 1.0;
         for (int d = 0; d < dim; d++) vol *= ti[t].hi[d] - ti[t].lo[d];
+        const int hp = read_positions(sc, g, s, &ti[t]);
+        if (hp < 0) return -1;
+        if (hp) {
+            if (reg || config_setting_get_member(g, "density") || config_setting_get_member(g, "count")
+                || config_setting_get_member(g, "placement"))
+                return scene_fail(sc, g, "'positions' fixes the particles: give no 'count', 'density', "
+                                  "'region' or 'placement' with it");
+            continue;
+        }
         double density;
         long long count;
         const int hd = scene_double(sc, g, "density", &density, 0.0, 0.0, 1e3, 0);
@@ -147,7 +185,9 @@ static void place_particles(System *s, const TypeInit *ti)
             s->id[i] = (uint32_t)i;
             s->type[i] = (uint8_t)t;
             double *x = s->x + 3 * i;
-            if (ti[t].lattice) {
+            if (ti[t].at) {
+                for (int d = 0; d < dim; d++) x[d] = ti[t].at[3 * k + d];
+            } else if (ti[t].lattice) {
                 /* spread the count evenly over the sites when there are more sites */
                 const long long nsite = msite[0] * msite[1] * msite[2];
                 long long q = (long long)((double)k * nsite / ti[t].count);
@@ -254,6 +294,7 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         m->nblocks = (int)v;
     }
     m->nsamples_expected = steps / m->every + 1;
+    if (field_read(sc, g, s, &m->field)) return -1;
     if (!g) return 0;
     config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
@@ -313,6 +354,8 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
     return 0;
 }
 
+static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, TypeInit *ti);
+
 int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
 {
     memset(s, 0, sizeof *s);
@@ -335,7 +378,18 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
     TypeInit ti[DPD_MAX_TYPES];
-    if (read_types(sc, s, ti)) return -1;
+    memset(ti, 0, sizeof ti);
+    const int r = read_types(sc, s, ti) ? -1 : setup_particles(sc, s, m, rc, ti);
+    for (int t = 0; t < DPD_MAX_TYPES; t++) free(ti[t].at);
+    return r;
+}
+
+/* The rest of the scene, once the types are known. */
+static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, TypeInit *ti)
+{
+    const int dim = s->box.dim;
+    const double *L = s->box.L;
+    long long v;
     if (read_pairs(sc, s)) return -1;
     for (int d = 0; d < dim; d++)
         if (s->rc_max + rc->skin > 0.5 * L[d]) {

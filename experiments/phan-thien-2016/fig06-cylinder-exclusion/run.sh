@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Fig. 6 of Phan-Thien et al. 2016: the field of a 4-particle cylinder, the
+# fluid density about it without flow, and the exclusion radius from g(q)
+# (eq. 48, dq = 0.01, first q where g reaches 0.001).
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) tier=(--set equilibration=1000 --set steps=10000) ;;
+    paper) tier=(--set equilibration=2000 --set steps=200000) ;;
+esac
+dpd_run noflow cylinder.cfg "${tier[@]}"
+for q in exclusion_radius force_on_cylinder_x force_on_cylinder_y torque_on_cylinder_z; do emit_from noflow $q; done
+for t in around density_map force_map rdf; do cp "$OUT/runs/noflow/$t.tsv" "$OUT/$t.tsv"; done

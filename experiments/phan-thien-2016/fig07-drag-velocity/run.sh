@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Fig. 7 of Phan-Thien et al. 2016: drag on the 4-particle cylinder against the
+# mean fluid velocity U under a body force P per fluid particle (m = 0),
+# compared with Hasimoto's eq. 47, F = 4 pi eta U / (ln(h/a) - 1.3105), with
+# eta measured here by Lees-Edwards shear of the same fluid and a the exclusion
+# radius measured in fig06-cylinder-exclusion (same tier).
+. "$DPD_ROOT/tools/lib/exp.sh"
+scene=$DPD_ROOT/experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
+fig06=$DPD_ROOT/results/phan-thien-2016/fig06-cylinder-exclusion/$TIER/summary.tsv
+[ -f "$fig06" ] || { echo "fig07: needs $fig06 (make results/phan-thien-2016/fig06-cylinder-exclusion/$TIER/summary.tsv)" >&2; exit 1; }
+case $TIER in
+    quick) Ps="0.1 0.5 1.0"; tier=(--set equilibration=500 --set steps=8000); shear=(--set equilibration=300 --set steps=3000) ;;
+    paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; tier=(--set equilibration=1000 --set steps=100000)
+           shear=(--set equilibration=1000 --set steps=20000) ;;
+esac
+dpd_run shear shear.cfg "${shear[@]}"
+emit_from shear viscosity eta_solvent
+a=$(awk -F'\t' '$1=="exclusion_radius"{print $2 "\t" $3}' "$fig06")
+emit exclusion_radius "${a%%$'\t'*}" "${a##*$'\t'}"
+nfluid=144; h=6.0
+printf 'P\tdrag\tdrag_se\tU\tU_se\thasimoto_drag\thasimoto_drag_se\n' > "$OUT/drag.tsv"
+for P in $Ps; do
+    # sampled every step: the m = 0 velocities are nearly white in time
+    dpd_run "P$P" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
+        --set seed=$((7000 + ${P/./}))
+    emit_from "P$P" force_on_cylinder_x "drag_P$P"
+    emit_from "P$P" mean_velocity_fluid_x "velocity_P$P"
+    drag=$(get "P$P" force_on_cylinder_x) U=$(get "P$P" mean_velocity_fluid_x) eta=$(get shear viscosity)
+    awk -F'\t' -v P="$P" -v N=$nfluid -v h=$h -v d="$drag" -v u="$U" -v e="$eta" -v a="$a" '
+    BEGIN { split(d, D, "\t"); split(u, V, "\t"); split(e, E, "\t"); split(a, A, "\t")
+        pi = atan2(0, -1); den = log(h / A[1]) - 1.3105                       # eq. 47
+        FH = 4 * pi * E[1] * V[1] / den
+        rel = sqrt((V[2] / V[1])^2 + (E[2] / E[1])^2 + (A[2] / (A[1] * den))^2)
+        printf "force_balance_P%s\t%.10g\t%.4g\n", P, D[1] / (N * P) - 1, D[2] / (N * P)
+        printf "hasimoto_ratio_P%s\t%.10g\t%.4g\n", P, D[1] / FH, D[1] / FH * rel
+        # the radius that makes eq. 47 exact for this drag
+        x = 4 * pi * E[1] * V[1] / D[1]
+        ah = h * exp(-(x + 1.3105)); ahse = ah * x * sqrt((V[2] / V[1])^2 + (E[2] / E[1])^2)
+        printf "hydrodynamic_radius_P%s\t%.10g\t%.4g\n", P, ah, ahse
+        printf "%s\t%g\t%g\t%g\t%g\t%g\t%g\n", P, D[1], D[2], V[1], V[2], FH, FH * rel > "/dev/stderr"
+    }' >> "$OUT/summary.tsv" 2>> "$OUT/drag.tsv"
+done

@@ -1,0 +1,313 @@
+/* measure_field.c - distributions about fixed points, grid maps, body torques
+ * and mean velocities (see measure_field.h). */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "measure_field.h"
+
+static int type_named(const System *s, const char *name)
+{
+    for (int t = 0; t < s->ntypes; t++)
+        if (strcmp(s->types[t].name, name) == 0) return t;
+    return -1;
+}
+
+static int read_type(Scene *sc, const config_setting_t *g, const char *key, const System *s, int *t)
+{
+    const char *name;
+    if (scene_string(sc, g, key, &name, NULL, NULL, 1) < 0) return -1;
+    *t = type_named(s, name);
+    if (*t < 0) return scene_fail(sc, g, "%s: unknown type \"%s\"", key, name);
+    return 0;
+}
+
+static int read_bins(Scene *sc, const config_setting_t *g, int out[2])
+{
+    double b[2];
+    if (scene_vector(sc, g, "bins", b, 2, NULL, 1.0, 4096.0, 1) < 0) return -1;
+    for (int k = 0; k < 2; k++) {
+        if (b[k] != floor(b[k])) return scene_fail(sc, g, "bins: %g is not a whole number", b[k]);
+        out[k] = (int)b[k];
+    }
+    return 0;
+}
+
+int field_read(Scene *sc, const config_setting_t *g, const System *s, FieldMeasure *f)
+{
+    memset(f, 0, sizeof *f);
+    if (!g) return 0;
+    const int dim = s->box.dim;
+    config_setting_t *a = scene_child(sc, g, "around", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (a) {
+        f->around_on = 1;
+        if (scene_vector(sc, a, "centre", f->around_centre, dim, NULL, 0.0, 1e9, 1) < 0) return -1;
+        for (int d = 0; d < dim; d++)
+            if (f->around_centre[d] >= s->box.L[d])
+                return scene_fail(sc, a, "centre: %c = %g outside the box [0, %g)", "xyz"[d],
+                                  f->around_centre[d], s->box.L[d]);
+        if (read_type(sc, a, "type", s, &f->around_type)) return -1;
+        double qmax, hmin = 0.5 * s->box.L[0];
+        for (int d = 1; d < dim; d++) if (0.5 * s->box.L[d] < hmin) hmin = 0.5 * s->box.L[d];
+        if (scene_double(sc, a, "dq", &f->around_dq, 0.01, 1e-6, hmin, 0) < 0) return -1;
+        if (scene_double(sc, a, "qmax", &qmax, hmin, f->around_dq, hmin, 0) < 0) return -1;
+        if (scene_double(sc, a, "threshold", &f->around_threshold, 1e-3, 0.0, 1.0, 0) < 0) return -1;
+        f->around_bins = (int)floor(qmax / f->around_dq + 0.5);
+        if (f->around_bins < 1) f->around_bins = 1;
+    }
+    config_setting_t *m = scene_child(sc, g, "density_map", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (m) {
+        f->map_on = 1;
+        if (read_type(sc, m, "type", s, &f->map_type) || read_bins(sc, m, f->map_bins)) return -1;
+    }
+    config_setting_t *fm = scene_child(sc, g, "force_map", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (fm) {
+        f->fmap_on = 1;
+        if (read_type(sc, fm, "body", s, &f->fmap_body) || read_type(sc, fm, "probe", s, &f->fmap_probe)
+            || read_bins(sc, fm, f->fmap_bins)) return -1;
+        if (!s->types[f->fmap_body].frozen)
+            return scene_fail(sc, fm, "body: type \"%s\" is not frozen", s->types[f->fmap_body].name);
+    }
+    return 0;
+}
+
+/* Centroid of each frozen type, from the first particle by minimum images. */
+static void frozen_centroids(FieldMeasure *f, const System *s)
+{
+    double first[DPD_MAX_TYPES][3], sum[DPD_MAX_TYPES][3] = {{0}};
+    int cnt[DPD_MAX_TYPES] = {0};
+    for (int i = 0; i < s->n; i++) {
+        const int t = s->type[i];
+        if (!s->types[t].frozen) continue;
+        if (cnt[t] == 0) memcpy(first[t], s->x + 3 * i, sizeof first[t]);
+        double d[3];
+        for (int k = 0; k < 3; k++) d[k] = s->x[3 * i + k] - first[t][k];
+        box_min_image(&s->box, d, NULL);
+        for (int k = 0; k < 3; k++) sum[t][k] += d[k];
+        cnt[t]++;
+    }
+    for (int t = 0; t < s->ntypes; t++)
+        for (int k = 0; k < 3; k++)
+            f->centroid[t][k] = cnt[t] ? first[t][k] + sum[t][k] / cnt[t] : 0.0;
+}
+
+int field_init(FieldMeasure *f, const System *s, int nblocks)
+{
+    f->nblocks = nblocks;
+    if (f->around_on) {
+        f->around_hist = calloc((size_t)nblocks * f->around_bins, sizeof(double));
+        f->around_samples = calloc((size_t)nblocks, sizeof(long long));
+        if (!f->around_hist || !f->around_samples) return -1;
+        long long cnt = 0;
+        for (int i = 0; i < s->n; i++) cnt += s->type[i] == f->around_type;
+        double A = 1.0;
+        for (int d = 0; d < s->box.dim; d++) A *= s->box.L[d];
+        f->around_density = cnt / A;
+    }
+    if (f->map_on) {
+        f->map_hist = calloc((size_t)f->map_bins[0] * f->map_bins[1], sizeof(double));
+        if (!f->map_hist) return -1;
+    }
+    return 0;
+}
+
+void field_free(FieldMeasure *f)
+{
+    free(f->around_hist); free(f->around_samples); free(f->map_hist);
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) { series_free(&f->mean_v[t][d]); series_free(&f->torque[t][d]); }
+}
+
+static void sample_velocities_and_torques(FieldMeasure *f, const System *s)
+{
+    double v[DPD_MAX_TYPES][3] = {{0}}, tq[DPD_MAX_TYPES][3] = {{0}};
+    long long cnt[DPD_MAX_TYPES] = {0};
+    if (s->step == 0 || s->n_frozen > 0) frozen_centroids(f, s);
+    for (int i = 0; i < s->n; i++) {
+        const int t = s->type[i];
+        const double *x = s->x + 3 * i, *fi = s->f + 3 * i;
+        if (!s->types[t].frozen) {
+            for (int d = 0; d < 3; d++) v[t][d] += s->v[3 * i + d];
+            cnt[t]++;
+            continue;
+        }
+        /* torque about the centroid: r x F, r by minimum image */
+        double r[3];
+        for (int d = 0; d < 3; d++) r[d] = x[d] - f->centroid[t][d];
+        box_min_image(&s->box, r, NULL);
+        tq[t][0] += r[1] * fi[2] - r[2] * fi[1];
+        tq[t][1] += r[2] * fi[0] - r[0] * fi[2];
+        tq[t][2] += r[0] * fi[1] - r[1] * fi[0];
+    }
+    for (int t = 0; t < s->ntypes; t++)
+        for (int d = 0; d < 3; d++) {
+            if (s->types[t].frozen) series_push(&f->torque[t][d], tq[t][d]);
+            else if (cnt[t] > 0) series_push(&f->mean_v[t][d], v[t][d] / cnt[t]);
+        }
+}
+
+void field_sample(FieldMeasure *f, const System *s, int block)
+{
+    sample_velocities_and_torques(f, s);
+    if (f->around_on) {
+        double *h = f->around_hist + (size_t)block * f->around_bins;
+        for (int i = 0; i < s->n; i++) {
+            if (s->type[i] != f->around_type) continue;
+            double d[3];
+            for (int k = 0; k < 3; k++) d[k] = s->x[3 * i + k] - f->around_centre[k];
+            box_min_image(&s->box, d, NULL);
+            const int b = (int)(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / f->around_dq);
+            if (b < f->around_bins) h[b] += 1.0;
+        }
+        f->around_samples[block]++;
+    }
+    if (f->map_on) {
+        const int nx = f->map_bins[0], ny = f->map_bins[1];
+        for (int i = 0; i < s->n; i++) {
+            if (s->type[i] != f->map_type) continue;
+            int bx = (int)(s->x[3 * i] / s->box.L[0] * nx), by = (int)(s->x[3 * i + 1] / s->box.L[1] * ny);
+            if (bx >= nx) bx = nx - 1;
+            if (by >= ny) by = ny - 1;
+            f->map_hist[(size_t)by * nx + bx] += 1.0;
+        }
+        f->map_samples++;
+    }
+}
+
+static double shell_measure(int dim, double q0, double q1)
+{
+    return dim == 3 ? 4.0 / 3.0 * M_PI * (q1 * q1 * q1 - q0 * q0 * q0) : M_PI * (q1 * q1 - q0 * q0);
+}
+
+/* g(q) of eq. 48 from histogram sums h over nsamp samples; the exclusion
+ * radius is the lower edge of the first bin where g reaches the threshold. */
+static double exclusion_radius(const FieldMeasure *f, int dim, const double *h, long long nsamp)
+{
+    for (int b = 0; b < f->around_bins; b++) {
+        const double q0 = b * f->around_dq;
+        const double g = h[b] / (nsamp * f->around_density * shell_measure(dim, q0, q0 + f->around_dq));
+        if (g >= f->around_threshold) return q0;
+    }
+    return f->around_bins * f->around_dq;
+}
+
+static int write_around(const FieldMeasure *f, const System *s, FILE *summary, const char *dir)
+{
+    const int B = f->nblocks, nb = f->around_bins, dim = s->box.dim;
+    double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
+    double *g = calloc((size_t)B, sizeof(double)), *a = calloc((size_t)B, sizeof(double));
+    char path[1024];
+    snprintf(path, sizeof path, "%s/around.tsv", dir);
+    FILE *out = all && loo && g && a ? fopen(path, "w") : NULL;
+    if (!out) { free(all); free(loo); free(g); free(a); return -1; }
+    long long ntot = 0;
+    for (int k = 0; k < B; k++) {
+        ntot += f->around_samples[k];
+        for (int b = 0; b < nb; b++) all[b] += f->around_hist[(size_t)k * nb + b];
+    }
+    fprintf(out, "q\tg\tg_se\n");
+    for (int b = 0; b < nb; b++) {
+        const double q0 = b * f->around_dq, sh = shell_measure(dim, q0, q0 + f->around_dq);
+        int used = 0;
+        for (int k = 0; k < B; k++)
+            if (f->around_samples[k] > 0)
+                g[used++] = f->around_hist[(size_t)k * nb + b] / (f->around_samples[k] * f->around_density * sh);
+        double mean, se;
+        block_stats(g, (size_t)used, used, &mean, &se);
+        fprintf(out, "%.6g\t%.6g\t%.3g\n", q0 + 0.5 * f->around_dq, mean, se);
+    }
+    /* jackknife over blocks: the crossing is a nonlinear function of g */
+    const double a_all = exclusion_radius(f, dim, all, ntot);
+    int used = 0;
+    double abar = 0.0;
+    for (int k = 0; k < B; k++) {
+        if (f->around_samples[k] == 0 || f->around_samples[k] == ntot) continue;
+        for (int b = 0; b < nb; b++) loo[b] = all[b] - f->around_hist[(size_t)k * nb + b];
+        a[used] = exclusion_radius(f, dim, loo, ntot - f->around_samples[k]);
+        abar += a[used++];
+    }
+    double var = 0.0;
+    if (used > 1) {
+        abar /= used;
+        for (int k = 0; k < used; k++) var += (a[k] - abar) * (a[k] - abar);
+        var *= (used - 1.0) / used;
+    }
+    fprintf(summary, "exclusion_radius\t%.10g\t%.4g\n", a_all, used > 1 ? sqrt(var) : NAN);
+    free(all); free(loo); free(g); free(a);
+    return fclose(out);
+}
+
+static int write_density_map(const FieldMeasure *f, const System *s, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/density_map.tsv", dir);
+    FILE *out = fopen(path, "w");
+    if (!out) return -1;
+    const int nx = f->map_bins[0], ny = f->map_bins[1];
+    double cell = s->box.L[0] / nx * s->box.L[1] / ny;
+    if (s->box.dim == 3) cell *= s->box.L[2];
+    fprintf(out, "x\ty\tdensity\n");
+    for (int by = 0; by < ny; by++) {
+        for (int bx = 0; bx < nx; bx++)
+            fprintf(out, "%.6g\t%.6g\t%.6g\n", (bx + 0.5) * s->box.L[0] / nx, (by + 0.5) * s->box.L[1] / ny,
+                    f->map_samples ? f->map_hist[(size_t)by * nx + bx] / (f->map_samples * cell) : 0.0);
+        fputc('\n', out);   /* gnuplot pm3d scan separator */
+    }
+    return fclose(out);
+}
+
+/* Their Fig. 6a: sum over the body's particles j of a (1 - r/rc) e_jp . e_op,
+ * the radial part (about the body centroid o) of the conservative force on a
+ * probe particle p at each grid point, in the plane z = centroid z. */
+static int write_force_map(const FieldMeasure *f, const System *s, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/force_map.tsv", dir);
+    FILE *out = fopen(path, "w");
+    if (!out) return -1;
+    const PairParams *p = &s->pair[f->fmap_body][f->fmap_probe];
+    const double *o = f->centroid[f->fmap_body];
+    const int nx = f->fmap_bins[0], ny = f->fmap_bins[1];
+    fprintf(out, "x\ty\tradial_force\n");
+    for (int by = 0; by < ny; by++) {
+        for (int bx = 0; bx < nx; bx++) {
+            const double X[3] = {(bx + 0.5) * s->box.L[0] / nx, (by + 0.5) * s->box.L[1] / ny, o[2]};
+            double eo[3] = {X[0] - o[0], X[1] - o[1], X[2] - o[2]};
+            box_min_image(&s->box, eo, NULL);
+            const double ro = sqrt(eo[0] * eo[0] + eo[1] * eo[1] + eo[2] * eo[2]);
+            double fr = 0.0;
+            for (int j = 0; j < s->n && ro > 0.0; j++) {
+                if (s->type[j] != f->fmap_body) continue;
+                double d[3] = {X[0] - s->x[3 * j], X[1] - s->x[3 * j + 1], X[2] - s->x[3 * j + 2]};
+                box_min_image(&s->box, d, NULL);
+                const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                if (r >= p->rc || r < 1e-12) continue;
+                fr += p->a * (1.0 - r / p->rc) * (d[0] * eo[0] + d[1] * eo[1] + d[2] * eo[2]) / (r * ro);
+            }
+            fprintf(out, "%.6g\t%.6g\t%.6g\n", X[0], X[1], fr);
+        }
+        fputc('\n', out);
+    }
+    return fclose(out);
+}
+
+int field_write(const FieldMeasure *f, const System *s, FILE *summary, const char *dir)
+{
+    for (int t = 0; t < s->ntypes; t++)
+        for (int d = 0; d < 3; d++) {
+            const int frozen = s->types[t].frozen;
+            /* velocities along the box axes; torques: only z in 2D */
+            if (frozen ? (s->box.dim == 2 && d < 2) : (d >= s->box.dim || f->mean_v[t][d].n == 0)) continue;
+            char name[96];
+            double v, se;
+            snprintf(name, sizeof name, "%s_%s_%c", frozen ? "torque_on" : "mean_velocity", s->types[t].name, "xyz"[d]);
+            series_stats(frozen ? &f->torque[t][d] : &f->mean_v[t][d], f->nblocks, &v, &se);
+            fprintf(summary, "%s\t%.10g\t%.4g\n", name, v, se);
+        }
+    if (f->around_on && write_around(f, s, summary, dir)) return -1;
+    if (f->map_on && write_density_map(f, s, dir)) return -1;
+    if (f->fmap_on && write_force_map(f, s, dir)) return -1;
+    return 0;
+}

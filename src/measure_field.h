@@ -1,0 +1,47 @@
+/* measure_field.h - measurements about fixed bodies and on grids:
+ *  - the distribution of a type about a fixed point (Phan-Thien et al. 2016,
+ *    eq. 48) and the exclusion radius where it first reaches a threshold;
+ *  - a number-density map on a grid over x and y;
+ *  - the radial conservative force field of a body on a grid (their Fig. 6a);
+ *  - always: the mean velocity of each mobile type, and the torque that the
+ *    mobile particles exert on each frozen type about its centroid.
+ * Errors: block standard errors; the exclusion radius, a threshold crossing,
+ * gets a jackknife error over the blocks. */
+#ifndef DPD_MEASURE_FIELD_H
+#define DPD_MEASURE_FIELD_H
+
+#include <stdio.h>
+#include "system.h"
+#include "scene.h"
+#include "blockavg.h"
+
+typedef struct FieldMeasure {
+    int nblocks;
+    /* around = { centre = [..]; type = "..."; dq = 0.01; qmax = 1.5; threshold = 1e-3; } */
+    int around_on, around_type, around_bins;
+    double around_centre[3], around_dq, around_threshold;
+    double *around_hist;          /* nblocks x bins: counts */
+    long long *around_samples;    /* per block */
+    double around_density;        /* N / A of the type (eq. 48) */
+    /* density_map = { type = "..."; bins = [nx, ny]; } */
+    int map_on, map_type, map_bins[2];
+    double *map_hist;
+    long long map_samples;
+    /* force_map = { body = "..."; probe = "..."; bins = [nx, ny]; } */
+    int fmap_on, fmap_body, fmap_probe, fmap_bins[2];
+    /* always */
+    Series mean_v[DPD_MAX_TYPES][3];
+    Series torque[DPD_MAX_TYPES][3];
+    double centroid[DPD_MAX_TYPES][3];
+} FieldMeasure;
+
+/* Read measure.around, measure.density_map, measure.force_map from group g
+ * (NULL: none of them). Returns 0, or -1 with the scene error set. */
+int  field_read(Scene *sc, const config_setting_t *g, const System *s, FieldMeasure *f);
+int  field_init(FieldMeasure *f, const System *s, int nblocks);
+void field_free(FieldMeasure *f);
+/* One sample; s->f must hold this step's pair forces (for the torques). */
+void field_sample(FieldMeasure *f, const System *s, int block);
+int  field_write(const FieldMeasure *f, const System *s, FILE *summary, const char *dir);
+
+#endif
