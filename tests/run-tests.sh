@@ -1,5 +1,6 @@
 #!/bin/bash
-# run-tests.sh BIN... - run cmocka test binaries and tests/scene_errors.sh,
+# run-tests.sh BIN... - run cmocka test binaries and the scripts tests/scene_errors.sh,
+# tests/checkpoint.sh and tests/io_errors.sh,
 # add up their checks, print "N passed, M failed", exit 1 if M > 0.
 # A binary that dies before cmocka's summary (crash, sanitizer abort) counts
 # its unfinished tests as failed (at least one).
@@ -38,9 +39,11 @@ for bin in "$@"; do
     pass=$((pass + p)); fail=$((fail + f))
     rm -f "$log"
 done
+for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh; do
+name=$(basename "$script")
 log=$(mktemp)
 t0=$(date +%s.%N)
-DPD="${DPD:-bin/dpd}" tests/scene_errors.sh >"$log" 2>&1
+DPD="${DPD:-bin/dpd}" "$script" >"$log" 2>&1
 rc=$?
 t1=$(date +%s.%N)
 cat "$log"
@@ -48,11 +51,13 @@ line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -1)
 if [ -n "$line" ]; then
     p=${line%% passed*}; f=${line#*, }; f=${f%% failed}
 else
-    p=0; f=1; echo "scene_errors.sh: no summary (status $rc)" >&2
+    p=0; f=1; echo "$name: no summary (status $rc)" >&2
 fi
 [ $rc -ne 0 ] && [ "$f" -eq 0 ] && f=1
-printf 'scene_errors.sh: %d passed, %d failed (%.1f s)\n' "$p" "$f" "$(echo "$t1 - $t0" | bc)"
+printf '%s: %d passed, %d failed (%.1f s)\n' "$name" "$p" "$f" "$(echo "$t1 - $t0" | bc)"
 pass=$((pass + p)); fail=$((fail + f))
+rm -f "$log"
+done
 printf 'all tests: %.1f s wall\n' "$(echo "$(date +%s.%N) - $t_start" | bc)"
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
