@@ -11,11 +11,23 @@
 #include <stdint.h>
 #include <unistd.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include "scene.h"
 #include "setup.h"
 
 static int memfd = -1;
 static char path[64];
+static unsigned long long inputs;
+
+/* CPU time actually spent (the machine is shared, so wall time overstates it) */
+static void report(void)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    fprintf(stderr, "fuzz_scene: %llu inputs, %.1f CPU seconds (user %.1f + system %.1f)\n", inputs,
+            ru.ru_utime.tv_sec + ru.ru_stime.tv_sec + 1e-6 * (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec),
+            ru.ru_utime.tv_sec + 1e-6 * ru.ru_utime.tv_usec, ru.ru_stime.tv_sec + 1e-6 * ru.ru_stime.tv_usec);
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -24,7 +36,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (memfd < 0) abort();
         snprintf(path, sizeof path, "/proc/self/fd/%d", memfd);
         setup_validate_only = 1;
+        atexit(report);
     }
+    inputs++;
     char *buf = malloc(size + 1);
     if (!buf) return 0;
     memcpy(buf, data, size);
