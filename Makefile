@@ -46,7 +46,7 @@ $(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
 include tests/tests.mk
-include tests/fuzz/fuzz.mk
+include tests/reliability.mk
 include experiments/experiments.mk
 
 bench: $(BIN)

@@ -1,4 +1,5 @@
-# fuzz.mk - `make fuzz` (included by the top Makefile): libFuzzer (clang) on
+# reliability.mk - `make fuzz` and `make valgrind` (included by the top Makefile).
+# make fuzz: libFuzzer (clang) on
 # the scene parser and validator, tests/fuzz/fuzz_scene.c, under ASan+UBSan.
 # Seeds: tests/fuzz/corpus (kept in the repository), every scene of
 # tests/ and experiments/; new inputs go to build/fuzz/corpus and are merged
@@ -25,7 +26,13 @@ fuzz: $(FUZZ_DIR)/fuzz_scene
 	    -max_len=8192 -dict=tests/fuzz/scene.dict -artifact_prefix=$(FUZZ_DIR)/artifacts/ \
 	    -print_final_stats=1 $(FUZZ_DIR)/corpus tests/fuzz/corpus $(FUZZ_DIR)/seeds </dev/null 2>&1 | tee $(FUZZ_DIR)/fuzz.log | grep -v '^#[0-9]*.*\(NEW\|REDUCE\|pulse\)' ; \
 	    test $${PIPESTATUS[0]} -eq 0
-	LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 nice -n 19 $(FUZZ_DIR)/fuzz_scene -merge=1 -dict=tests/fuzz/scene.dict tests/fuzz/corpus $(FUZZ_DIR)/corpus 2>&1 | tail -2
+	LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 nice -n 19 $(FUZZ_DIR)/fuzz_scene -merge=1 -artifact_prefix=$(FUZZ_DIR)/artifacts/ -dict=tests/fuzz/scene.dict tests/fuzz/corpus $(FUZZ_DIR)/corpus 2>&1 | tail -2
 	@grep -aE '^(stat::number_of_executed_units|Done|fuzz_scene: )' $(FUZZ_DIR)/fuzz.log; \
 	    if ls $(FUZZ_DIR)/artifacts/* >/dev/null 2>&1; then echo "fuzz: crashes in $(FUZZ_DIR)/artifacts"; exit 1; fi; \
 	    echo "fuzz: no crash, no sanitizer report"
+
+# make valgrind: memcheck (no error, no definite leak) on small scenes, a
+# checkpointing run and a resume; see tests/valgrind.sh.
+.PHONY: valgrind
+valgrind: $(BIN)
+	@tests/valgrind.sh
