@@ -90,5 +90,12 @@ check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/
 "$DPD" run "$scene" --set pairs.[0].a=26.0 --out "$tmp/foreign" --quiet --resume 2>"$tmp/err"; st=$?
 check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/foreign/summary.tsv"
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
+# resuming a run with trajectory frames is refused (the frames before the checkpoint are gone)
+"$DPD" run "$scene" --set 'output={trajectory_every=100;}' --out "$tmp/traj" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; for _ in $(seq 6000); do [ -e "$tmp/traj/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
+kill -TERM $pid; wait $pid
+"$DPD" run "$scene" --set 'output={trajectory_every=100;}' --out "$tmp/traj" --quiet --resume 2>"$tmp/err"; st=$?
+check "resume with trajectory output: status 2, no result" test $st -eq 2 -a ! -e "$tmp/traj/summary.tsv"
+check "resume with trajectory output: message" grep -q 'trajectory_every > 0 is not supported' "$tmp/err"
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
