@@ -46,6 +46,7 @@ $(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
 include tests/tests.mk
+include tests/reliability.mk
 include experiments/experiments.mk
 
 bench: $(BIN)

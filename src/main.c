@@ -16,14 +16,18 @@ static void usage(FILE *f)
         "\n"
         "usage:\n"
         "  dpd run SCENE [--set key=value ...] [--out DIR] [--threads N] [--quiet]\n"
+        "          [--checkpoint-every N] [--resume]\n"
         "      run a libconfig scene; --set overrides any key (e.g. --set pairs.[0].a=6.5,\n"
-        "      --set measure.profile.bins=40); results go to DIR (default: out/)\n"
+        "      --set measure.profile.bins=40); results go to DIR (default: out/);\n"
+        "      --checkpoint-every N writes DIR/checkpoint.dpd every N steps (SIGINT and\n"
+        "      SIGTERM write one too); --resume continues from it, bit for bit\n"
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
         "  dpd --help | --version\n"
         "\n"
-        "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure\n");
+        "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure,\n"
+        "  128 + signal: stopped by SIGINT/SIGTERM (checkpoint written, run incomplete)\n");
 }
 
 static int cmd_params(int argc, char **argv)
@@ -93,7 +97,15 @@ int main(int argc, char **argv)
                 if (*end || t < 1 || t > 1024) { fprintf(stderr, "dpd run: --threads %s: allowed 1 to 1024\n", v); goto done; }
                 opt.threads = (int)t;
             }
-        } else if (!strncmp(a, "--set=", 6)) sets[opt.noverrides++] = (char *)a + 6;
+        } else if (!strcmp(a, "--checkpoint-every")) {
+            char *end;
+            if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); goto done; }
+            const char *v = argv[++k];
+            long long c = strtoll(v, &end, 10);
+            if (*end || end == v || c < 1) { fprintf(stderr, "dpd run: --checkpoint-every %s: allowed 1 to 9223372036854775807 steps\n", v); goto done; }
+            opt.checkpoint_every = c;
+        } else if (!strcmp(a, "--resume")) opt.resume = 1;
+        else if (!strncmp(a, "--set=", 6)) sets[opt.noverrides++] = (char *)a + 6;
         else if (!strcmp(a, "--quiet")) opt.quiet = 1;
         else if (a[0] == '-' && a[1]) { fprintf(stderr, "dpd run: unknown option %s\n", a); usage(stderr); goto done; }
         else if (!opt.scene) opt.scene = a;

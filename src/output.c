@@ -161,6 +161,9 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     memset(o, 0, sizeof *o);
     snprintf(o->path, sizeof o->path, "%s/run.h5", dir);
     snprintf(o->tmp_path, sizeof o->tmp_path, "%s/run.h5.part", dir);
+    /* HDF5 1.10 closes a file whose H5Fclose failed (disk full) again at exit
+     * and crashes there: no exit-time cleanup (fails harmlessly if too late) */
+    H5dont_atexit();
     if (!getenv("DPD_HDF5_DEBUG")) H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     o->file = H5Fcreate(o->tmp_path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (o->file < 0) return -1;

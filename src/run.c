@@ -20,6 +20,8 @@
 #include "output.h"
 #include "timers.h"
 #include "overdamped.h"
+#include "checkpoint.h"
+#include <signal.h>
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -132,6 +134,9 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
         snprintf(name, sizeof name, "pressure_yx_%s", parts[p]);
         rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, m->every, s->dt);
     }
+    double *fin = checkpoint_final_state(s);
+    rc |= fin ? output_table(o, "/results/final_state", fin, s->n, 10, FINAL_STATE_COLUMNS) : -1;
+    free(fin);
     static const char *tables[] = {"profile", "rdf", "msd"};
     for (int k = 0; k < 3; k++) {
         char f[1100], path[64];
@@ -232,6 +237,25 @@ static int check_stable(const System *s, const RunConfig *rc, double *T)
     return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
 }
 
+/* SIGINT and SIGTERM: finish the step, write a checkpoint, stop incomplete. */
+static volatile sig_atomic_t stop_signal = 0;
+static void on_stop_signal(int sig) { stop_signal = sig; }
+
+static int save_checkpoint(const RunOptions *opt, uint64_t hash, const System *s, const NeighborList *nl,
+                           const Measure *m, CheckpointExtra *cx, const RunStats *st, long long equilibration)
+{
+    char err[1400];
+    cx->cpu_used = cpu_now() - st->cpu0;
+    cx->wall_used = wall_now() - st->wall0;
+    cx->prod_wall_used = (long long)s->step > equilibration ? wall_now() - st->prod_wall0 : 0.0;
+    cx->steps_done = st->steps_done;
+    if (checkpoint_write(opt->outdir, hash, s, nl, m, cx, err, sizeof err)) {
+        fprintf(stderr, "dpd: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
 int run_scene(const RunOptions *opt)
 {
 #ifdef _OPENMP
@@ -268,14 +292,15 @@ int run_scene(const RunOptions *opt)
     NeighborList nl;
     ForceWork fw;
     Output out;
-    int status = 0;
+    int status = 0, wrote_summary = 0;
     if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, s.n, m.prof_on ? m.prof_bins : 0)
         || measure_init(&m, &s) || neighbor_build(&nl, &s)) {
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
     }
     if (output_open(&out, opt->outdir, &s, rc.trajectory_every > 0)) {
-        fprintf(stderr, "dpd: cannot create the HDF5 file in '%s'\n", opt->outdir);
+        fprintf(stderr, "dpd: cannot create the HDF5 file in '%s' (disk full or not writable?)\n", opt->outdir);
+        measure_free(&m); forces_free(&fw); neighbor_free(&nl); system_free(&s); scene_free(&sc);
         return 4;
     }
     double *wbin = m.prof_on ? calloc((size_t)m.prof_bins * PAIR_PARTS * 9, sizeof(double)) : NULL;
@@ -288,14 +313,46 @@ int run_scene(const RunOptions *opt)
     ss.sol = calloc(3 * (size_t)s.n + 1, sizeof(double));
     ss.ref = calloc(3 * (size_t)s.n + 1, sizeof(double));
     if (!ss.sol || !ss.ref) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
-    if (rc.overdamped) {
+    /* checkpoints: the scene as run identifies them */
+    char *scene_txt = scene_text(&sc);
+    const uint64_t scene_hash = checkpoint_hash(scene_txt ? scene_txt : "", scene_txt ? strlen(scene_txt) : 0, 0);
+    free(scene_txt);
+    CheckpointExtra cx = {.timers = st.timers, .ntimers = T_COUNT, .nsolver = 4,
+                          .solver = {&ss.iterations, &ss.residual, &ss.seconds, &ss.true_error},
+                          .unconverged = &ss.unconverged};
+    int resumed = 0;
+    if (opt->resume) {
+        char err[1400];
+        const int r = checkpoint_read(opt->outdir, scene_hash, &s, &nl, &m, &cx, err, sizeof err);
+        if (r < 0) { fprintf(stderr, "dpd: %s\n", err); status = 2; }
+        else if (r == 0 && rc.trajectory_every > 0) {
+            fprintf(stderr, "dpd: --resume with output.trajectory_every > 0 is not supported (the frames "
+                    "before the checkpoint are not kept); rerun from the start\n");
+            status = 2;
+        } else if (r == 0) {
+            resumed = 1;
+            st.cpu0 = cpu_now() - cx.cpu_used;
+            st.wall0 = wall_now() - cx.wall_used;
+            st.prod_wall0 = wall_now() - cx.prod_wall_used;
+            st.steps_done = cx.steps_done;
+            if (!opt->quiet) fprintf(stderr, "dpd: resuming %s at step %llu\n", opt->outdir, (unsigned long long)s.step);
+        }
+    }
+    if (resumed || status) {
+        /* forces, v_pred and the m = 0 velocities of this step come from the checkpoint */
+    } else if (rc.overdamped) {
         int r = overdamped_step(&s, &nl, &od, &rc, &ss);
         if (r) { status = r == -2 ? 4 : 3; }
     } else {
         forces_compute(&s, &nl, &fw, NULL);
     }
-    st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
-    for (long long k = 0; k < total && status == 0; k++) {
+    if (!resumed) st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
+    struct sigaction sa = {.sa_handler = on_stop_signal}, old_int, old_term;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    stop_signal = 0;
+    for (long long k = (long long)s.step; k < total && status == 0; k++) {
         if (k == rc.equilibration) st.prod_wall0 = wall_now();
         double t0 = wall_now(), t1, t2, t3, t4;
         long long prod;
@@ -357,7 +414,19 @@ int run_scene(const RunOptions *opt)
         st.timers[T_OUTPUT] += t6 - t5;
         st.steps_done++;
         if (show) progress(k + 1, total, st.wall0, k + 1 == total);
+        if (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total)) {
+            if (save_checkpoint(opt, scene_hash, &s, &nl, &m, &cx, &st, rc.equilibration)) { status = 4; break; }
+            if (stop_signal) {
+                if (show) fputc('\n', stderr);
+                fprintf(stderr, "dpd: stopped by signal %d at step %llu; checkpoint written, the run is incomplete "
+                        "(continue with --resume)\n", (int)stop_signal, (unsigned long long)s.step);
+                status = 128 + stop_signal;
+                break;
+            }
+        }
     }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
     st.builds = nl.builds;
     if (status == 0) {
         char *sum = NULL;
@@ -410,6 +479,7 @@ int run_scene(const RunOptions *opt)
         char *prov = NULL;
         size_t plen = 0;
         provenance_text(&prov, &plen, opt, &s, &st);
+        wrote_summary = status == 0;
         if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
         if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
         if (status == 0 && write_h5(&out, opt, &sc, &s, &m, &st, prov, sum)) status = 4;
@@ -418,10 +488,23 @@ int run_scene(const RunOptions *opt)
         if (status == 4) fprintf(stderr, "dpd: writing the results in '%s' failed\n", opt->outdir);
     }
     if (output_close(&out, status == 0) && status == 0) {
-        fprintf(stderr, "dpd: closing %s failed\n", out.path);
+        fprintf(stderr, "dpd: closing %s failed (disk full?)\n", out.path);
         status = 4;
     }
-    if (status == 0) unlink(marker);
+    if (status != 0 && wrote_summary) {
+        /* a failed run leaves no summary that looks like a result (INCOMPLETE stays too) */
+        char f[1100];
+        snprintf(f, sizeof f, "%s/summary.tsv", opt->outdir);
+        unlink(f);
+        snprintf(f, sizeof f, "%s/provenance.tsv", opt->outdir);
+        unlink(f);
+    }
+    if (status == 0) {
+        unlink(marker);
+        char ck[1100];
+        snprintf(ck, sizeof ck, "%s/%s", opt->outdir, CHECKPOINT_FILE);
+        unlink(ck);   /* the run is complete: nothing to resume */
+    }
     free(wbin);
     od_free(&od);
     series_free(&ss.iterations); series_free(&ss.residual); series_free(&ss.seconds);

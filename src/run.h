@@ -10,9 +10,12 @@ typedef struct {
     int threads;              /* 0: OpenMP default */
     const char *command_line;
     int quiet;
+    long long checkpoint_every;   /* > 0: write DIR/checkpoint.dpd every this many steps */
+    int resume;                   /* continue from DIR/checkpoint.dpd if there is one */
 } RunOptions;
 
-/* Exit status: 0 success, 2 bad input, 3 unstable run, 4 I/O failure. */
+/* Exit status: 0 success, 2 bad input, 3 unstable run, 4 I/O failure,
+ * 128 + signal after SIGINT or SIGTERM (checkpoint written, run incomplete). */
 int run_scene(const RunOptions *opt);
 
 #endif

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <stdarg.h>
 #include <math.h>
+#include <ctype.h>
 #include "scene.h"
 
 static char READ_MARK;
@@ -336,6 +337,67 @@ static int copy_setting(config_setting_t *dst_parent, const char *name, const co
     return 0;
 }
 
+/* libconfig 1.5 reads an integer literal without the L suffix into an int
+ * and silently wraps one beyond 32 bits (4294967296 becomes 0). Find such a
+ * literal (outside strings and comments) before parsing; returns its line
+ * (and the literal in lit) or 0. */
+static int int_overflow_line(const char *t, char *lit, size_t litlen)
+{
+    int line = 1;
+    for (const char *p = t; *p; p++) {
+        if (*p == '\n') { line++; continue; }
+        if (*p == '"') {                                   /* string */
+            for (p++; *p && *p != '"'; p++) {
+                if (*p == '\\' && p[1]) p++;
+                else if (*p == '\n') line++;
+            }
+            if (!*p) break;
+            continue;
+        }
+        if (*p == '#' || (*p == '/' && p[1] == '/')) {    /* line comment */
+            while (p[1] && p[1] != '\n') p++;
+            continue;
+        }
+        if (*p == '/' && p[1] == '*') {                    /* block comment */
+            for (p += 2; *p && !(*p == '*' && p[1] == '/'); p++) if (*p == '\n') line++;
+            if (!*p) break;
+            p++;
+            continue;
+        }
+        if (*p < '0' || *p > '9') continue;
+        if (p > t && (isalnum((unsigned char)p[-1]) || p[-1] == '_' || p[-1] == '.')) {
+            while (isalnum((unsigned char)p[1]) || p[1] == '_') p++;   /* part of a name or number */
+            continue;
+        }
+        const char *q = p;
+        const int hex = p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
+        if (hex) q += 2;
+        while (hex ? isxdigit((unsigned char)*q) : isdigit((unsigned char)*q)) q++;
+        const int is_float = !hex && (*q == '.' || *q == 'e' || *q == 'E');
+        if (!is_float && *q != 'L') {
+            const char *d = hex ? p + 2 : p;
+            while (*d == '0' && d + 1 < q) d++;              /* leading zeros */
+            const size_t nd = (size_t)(q - d);
+            const char *max = hex ? "7fffffff" : p > t && p[-1] == '-' ? "2147483648" : "2147483647";
+            int over = nd > strlen(max);
+            if (nd == strlen(max)) {
+                char low[16];
+                for (size_t k = 0; k < nd; k++) low[k] = (char)tolower((unsigned char)d[k]);
+                low[nd] = '\0';
+                over = strcmp(low, max) > 0;
+            }
+            if (over) {
+                snprintf(lit, litlen, "%.*s", (int)(q - p), p);
+                return line;
+            }
+        }
+        p = q - 1;
+        while (isalnum((unsigned char)p[1]) || p[1] == '.' || p[1] == '_' ||
+               ((p[1] == '-' || p[1] == '+') && (p[0] == 'e' || p[0] == 'E'))) p++;   /* rest of the token */
+    }
+    return 0;
+}
+
 static int apply_override(Scene *sc, const char *spec)
 {
     char path[512];
@@ -353,6 +415,14 @@ static int apply_override(Scene *sc, const char *spec)
     char *text = malloc(len);
     if (!text) { config_destroy(&tmp); return -1; }
     snprintf(text, len, "v = %s;", eq + 1);
+    char lit[64];
+    if (int_overflow_line(text, lit, sizeof lit)) {
+        snprintf(sc->error, sizeof sc->error, "--set '%s': integer %s does not fit in 32 bits; "
+                 "allowed -2147483648 to 2147483647, or append L for a 64-bit integer", spec, lit);
+        free(text);
+        config_destroy(&tmp);
+        return -1;
+    }
     int ok = config_read_string(&tmp, text);
     free(text);
     if (!ok) {
@@ -410,6 +480,27 @@ int scene_load(Scene *sc, const char *file, char *const *overrides, int noverrid
     FILE *fp = fopen(file, "r");
     if (!fp) {
         snprintf(sc->error, sizeof sc->error, "%s: cannot open the scene file", file);
+        sc->failed = 1;
+        return -1;
+    }
+    /* the raw text, for the checks libconfig does not make */
+    char *raw = NULL;
+    size_t rawlen = 0;
+    FILE *m = open_memstream(&raw, &rawlen);
+    if (m) {
+        char chunk[4096];
+        size_t got;
+        while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) fwrite(chunk, 1, got, m);
+        fclose(m);
+        rewind(fp);
+    }
+    char lit[64];
+    const int bad_line = raw ? int_overflow_line(raw, lit, sizeof lit) : 0;
+    free(raw);
+    if (bad_line) {
+        snprintf(sc->error, sizeof sc->error, "%s:%d: integer %s does not fit in 32 bits; allowed "
+                 "-2147483648 to 2147483647, or append L for a 64-bit integer (e.g. %sL)", file, bad_line, lit, lit);
+        fclose(fp);
         sc->failed = 1;
         return -1;
     }

@@ -7,6 +7,8 @@
 #include "random.h"
 #include "overdamped.h"
 
+int setup_validate_only = 0;
+
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const char *const AXES_NONE[] = {"none", "x", "y", "z", NULL};
 static const char *const PLACEMENTS[] = {"random", "lattice", NULL};
@@ -113,6 +115,9 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         const int hc = scene_int(sc, g, "count", &count, 0, 0, 100000000LL, 0);
         if (hd < 0 || hc < 0) return -1;
         if (hd == hc) return scene_fail(sc, g, "give exactly one of 'density' and 'count'");
+        if (hd && density * vol > 2e8)   /* before llround: it overflows */
+            return scene_fail(sc, config_setting_get_member(g, "density"), "density %g times volume %g "
+                              "makes %g particles; allowed up to 2e8", density, vol, density * vol);
         ti[t].count = hd ? llround(density * vol) : count;
         const char *pl;
         if (scene_string(sc, g, "placement", &pl, "random", PLACEMENTS, 0) < 0) return -1;
@@ -416,6 +421,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (read_confine(sc, s, rc)) return -1;
     if (read_measure(sc, s, m, rc->steps)) return -1;
     if (scene_check_unknown(sc)) return -1;
+    if (setup_validate_only) return 0;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;
     s->n_frozen = nfrozen;

@@ -24,5 +24,8 @@ typedef struct {
 
 /* Reads every key; on error returns -1 with sc->error set. */
 int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc);
+/* Non-zero: setup_from_scene only validates (returns before allocating and
+ * placing particles); the scene fuzzer sets it. */
+extern int setup_validate_only;
 
 #endif

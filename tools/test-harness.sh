@@ -219,5 +219,60 @@ else
     echo "skip - render-paper (no pandoc)"
 fi
 
+# ---------------------------------------------------------------- run-experiment: resume
+# A fixture repository with a fake simulator: an interrupted experiment leaves
+# no result (check: MISSING), keeps its finished simulations, and the next
+# attempt reruns only the unfinished one (with --resume); a changed experiment
+# (stale) starts afresh.
+rx="$root/rx"
+mkdir -p "$rx/experiments/t/e"
+cp -r "$tools" "$rx/tools"
+cat > "$rx/fake-dpd" <<'EOF2'
+#!/usr/bin/env bash
+out=; resume=0; args=("$@")
+for ((i = 0; i < $#; i++)); do
+    case ${args[i]} in --out) out=${args[i + 1]} ;; --resume) resume=1 ;; esac
+done
+mkdir -p "$out"; echo run > "$out/INCOMPLETE"
+echo "$(basename "$out") resume=$resume" >> "$FAKE_LOG"
+[ "$(basename "$out")" = "${FAKE_FAIL:-}" ] && exit 137
+printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
+printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
+rm "$out/INCOMPLETE"
+EOF2
+cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+dpd_run a s.cfg --set x=1
+dpd_run b s.cfg --set x=2
+emit_from a q q_a
+emit_from b q q_b
+EOF2
+chmod +x "$rx/fake-dpd" "$rx/experiments/t/e/run.sh"
+echo 'x = 1;' > "$rx/experiments/t/e/s.cfg"
+{ tab quantity tier lo hi k_sigma paper source; tab q_a quick 1 2 0 - fixture; tab q_b quick 1 2 0 - fixture; } > "$rx/experiments/t/e/bands.tsv"
+log="$root/fake.log"
+RX() { env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$@"; }
+( cd "$rx" && git init -q . 2>/dev/null ) || true
+: > "$log"
+T "run-experiment: interrupted run fails" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+if [ ! -e "$rx/results/t/e/quick/summary.tsv" ]; then ok "run-experiment: no result after the interruption"; else bad "run-experiment: result after the interruption"; fi
+T "check: interrupted experiment is MISSING" 1 env DPD_ROOT="$rx" "$rx/tools/check" t/e
+has "check: interrupted -> MISSING" 'MISSING'
+: > "$log"
+T "run-experiment: second attempt completes" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ "$(cat "$log")" = "b resume=1" ]; then ok "run-experiment: resumed, reran only the unfinished simulation"
+else bad "run-experiment: resume reran: $(tr '\n' ' ' < "$log")"; fi
+T "check: resumed experiment passes" 0 env DPD_ROOT="$rx" "$rx/tools/check" t/e
+if [ "$(grep -c '^q_' "$rx/results/t/e/quick/summary.tsv")" = 2 ]; then ok "run-experiment: no duplicate summary rows after resume"
+else bad "run-experiment: summary rows" "$rx/results/t/e/quick/summary.tsv"; fi
+: > "$log"
+T "run-experiment: interrupted again" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+echo 'x = 2;' > "$rx/experiments/t/e/s.cfg"
+: > "$log"
+T "run-experiment: stale partial result discarded" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: changed experiment reruns everything"
+else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,0 +1,51 @@
+/* checkpoint.h - the whole state of a run at the end of a step, so that a
+ * resumed run continues bit for bit: particles in their current (cell-sorted)
+ * order with x, v, f, v_pred, image counters, ids and types; step, time and
+ * the Lees-Edwards offset; the neighbour list as built (pair order and the
+ * reference positions of its rebuild test), so the resumed run rebuilds at
+ * the same steps and sums the forces in the same order; every measurement
+ * accumulator (series, profile and RDF blocks, MSD origins and curves); the
+ * m = 0 solver statistics (the solver's warm start is v); the timers.
+ * One binary file DIR/checkpoint.dpd, written to a temporary name, fsynced
+ * and renamed; a 64-bit FNV-1a checksum over the content and a hash of the
+ * scene as run reject a truncated file or one of another scene. */
+#ifndef DPD_CHECKPOINT_H
+#define DPD_CHECKPOINT_H
+
+#include <stdint.h>
+#include "system.h"
+#include "neighbor.h"
+#include "measure.h"
+#include "blockavg.h"
+
+#define CHECKPOINT_FILE "checkpoint.dpd"
+
+/* Run-loop state outside System, NeighborList and Measure. */
+typedef struct {
+    double *timers;           /* ntimers wall-clock sums per phase */
+    int ntimers;
+    double cpu_used, wall_used, prod_wall_used;   /* before this process */
+    long long steps_done;
+    Series *solver[4];        /* the m = 0 solver series (nsolver of them) */
+    int nsolver;
+    long long *unconverged;
+} CheckpointExtra;
+
+uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h);   /* FNV-1a; h = 0 to start */
+
+/* Returns 0, or -1 with err set (nothing replaced: the previous checkpoint stays). */
+int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, const NeighborList *nl,
+                     const Measure *m, const CheckpointExtra *x, char *err, size_t errlen);
+/* Returns 0 (state restored), 1 (no checkpoint in dir) or -1 with err set.
+ * s, nl and m must be set up from the same scene (sizes are checked). */
+int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborList *nl,
+                    Measure *m, CheckpointExtra *x, char *err, size_t errlen);
+
+/* The final state by stable id, one row per particle: id, x, y, z (wrapped),
+ * image counters, vx, vy, vz (10 columns, malloc'd; NULL if out of memory).
+ * Stored in run.h5 as /results/final_state, so that two runs can be compared
+ * bit for bit (h5diff) whatever their particle order. */
+#define FINAL_STATE_COLUMNS "id\tx\ty\tz\timg_x\timg_y\timg_z\tvx\tvy\tvz"
+double *checkpoint_final_state(const System *s);
+
+#endif

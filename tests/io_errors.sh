@@ -1,0 +1,98 @@
+#!/bin/bash
+# io_errors.sh - I/O failures never leave a result that looks complete:
+#   - --out below a regular file, and on a read-only file system: status 4,
+#     a message naming the directory;
+#   - disk full at every stage of a run's output (a small tmpfs in a user +
+#     mount namespace, `unshare -rm`, pre-filled by 4 KiB steps from "room for
+#     everything" to "room for nothing"): each run either succeeds completely
+#     (summary.tsv, provenance.tsv, run.h5, no INCOMPLETE) or exits 4 with a
+#     "dpd: " message and leaves no summary.tsv, no run.h5 and no *.part
+#     file of a text result; at least three distinct failure messages (stages)
+#     must be seen, so the sweep has power;
+#   - a checkpoint that does not fit: status 4, "cannot write the checkpoint",
+#     no half-written checkpoint left.
+# Without unprivileged namespaces the tmpfs checks are reported as SKIP (not
+# counted). DPD selects the binary. Prints "N passed, M failed".
+set -u
+cd "$(dirname "$0")/.."
+DPD=${DPD:-bin/dpd}
+case $DPD in /*) ;; *) DPD=$PWD/$DPD ;; esac
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-io-errors-XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok()  { pass=$((pass + 1)); echo "PASS $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+scene=$PWD/tests/good-scene.cfg
+
+# --out below a regular file
+touch "$tmp/file"
+"$DPD" run "$scene" --out "$tmp/file/out" --quiet 2>"$tmp/err"; st=$?
+if [ $st -eq 4 ] && grep -q "cannot create or write the output directory '$tmp/file/out'" "$tmp/err"; then ok "out below a file: status 4, named"
+else bad "out below a file" "status $st: $(cat "$tmp/err")"; fi
+
+if ! unshare -rm true 2>/dev/null; then
+    echo "SKIP tmpfs checks: no unprivileged user/mount namespaces here"
+    echo "$pass passed, $fail failed"; [ $fail -eq 0 ]; exit
+fi
+
+# everything below runs inside a namespace with its own tmpfs mounts; it
+# prints PASS/FAIL lines itself
+DPD=$DPD scene=$scene T=$tmp unshare -rm bash -c '
+set -u
+ok()  { echo "PASS $1"; }
+bad() { echo "FAIL $1: $2"; }
+mnt=$T/mnt; mkdir -p "$mnt"
+# read-only file system
+mount -t tmpfs -o size=1m,ro tmpfs "$mnt" || { bad mount "cannot mount tmpfs"; exit 0; }
+"$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err"; st=$?
+if [ $st -eq 4 ] && grep -q "cannot create or write the output directory" "$T/err"; then ok "read-only file system: status 4, named"
+else bad "read-only file system" "status $st: $(cat "$T/err")"; fi
+umount "$mnt"
+# disk full at every stage
+mount -t tmpfs -o size=512k tmpfs "$mnt"
+free_kb=$(df -k --output=avail "$mnt" | tail -1)
+"$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err"; st=$?
+need_kb=$(du -sk "$mnt/out" | cut -f1)
+if [ $st -eq 0 ]; then ok "disk-full control: the run fits an empty tmpfs"; else bad "disk-full control" "status $st"; fi
+rm -rf "$mnt/out"
+stages=""
+sweep_ok=1
+for fill in $(seq $((free_kb - need_kb - 8)) 4 "$free_kb"); do
+    rm -rf "$mnt"/*
+    head -c "${fill}k" /dev/zero > "$mnt/filler" 2>/dev/null
+    "$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err"; st=$?
+    d=$mnt/out
+    if [ $st -eq 0 ]; then
+        [ -s "$d/summary.tsv" ] && [ -s "$d/provenance.tsv" ] && [ -s "$d/run.h5" ] && [ ! -e "$d/INCOMPLETE" ] \
+            || { bad "disk full, ${fill} KiB filled" "status 0 but the result is not complete"; sweep_ok=0; }
+    elif [ $st -eq 4 ]; then
+        msg=$(grep -m1 "^dpd: " "$T/err" | sed "s|$mnt|MNT|g")
+        if [ -z "$msg" ] || [ -e "$d/summary.tsv" ] || [ -e "$d/run.h5" ] || ls "$d"/.*.part >/dev/null 2>&1 \
+           || grep -q "runtime error\|Sanitizer" "$T/err"; then
+            bad "disk full, ${fill} KiB filled" "a result or *.part was left, or no message: $(ls -a "$d" 2>/dev/null | tr "\n" " ") $(head -3 "$T/err")"; sweep_ok=0
+        fi
+        stages="$stages${msg%%:*}|${msg#*: }
+"
+    else
+        bad "disk full, ${fill} KiB filled" "status $st: $(head -5 "$T/err")"; sweep_ok=0
+    fi
+done
+nst=$(printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | wc -l)
+[ $sweep_ok = 1 ] && ok "disk full at every stage: complete result or status 4 with no result"
+if [ "$nst" -ge 3 ]; then ok "disk full sweep reached $nst distinct failure stages"
+else bad "disk full sweep" "only $nst failure stages: $stages"; fi
+printf "%s" "$stages" | sed "/^$/d" | sort -u | sed "s/^/    stage: /"
+# a checkpoint that does not fit
+umount "$mnt"; mount -t tmpfs -o size=160k tmpfs "$mnt"
+"$DPD" run "$PWD/tests/checkpoint-shear.cfg" --out "$mnt/ck" --quiet --checkpoint-every 20 2>"$T/err"; st=$?
+if [ $st -eq 4 ] && grep -q "cannot write the checkpoint" "$T/err" && [ ! -e "$mnt/ck/summary.tsv" ] \
+   && [ ! -e "$mnt/ck/.checkpoint.dpd.part" ] && [ -e "$mnt/ck/INCOMPLETE" ]; then ok "checkpoint on a full disk: status 4, named, no result, no partial checkpoint"
+else bad "checkpoint on a full disk" "status $st: $(cat "$T/err") $(ls -a "$mnt/ck" | tr "\n" " ")"; fi
+umount "$mnt"
+' > "$tmp/ns.log" 2>&1
+cat "$tmp/ns.log"
+pass=$((pass + $(grep -c '^PASS' "$tmp/ns.log")))
+fail=$((fail + $(grep -c '^FAIL' "$tmp/ns.log")))
+grep -q '^PASS disk full at every stage' "$tmp/ns.log" || { bad "namespace checks" "did not finish"; }
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
