@@ -133,6 +133,20 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
         io_series(io, &m->msd_done, "msd done");
         io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
     }
+    FieldMeasure *fm = &m->field;
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &fm->mean_v[t][d], "mean velocity");
+            io_series(io, &fm->torque[t][d], "body torque");
+        }
+    if (fm->around_on) {
+        io_array(io, fm->around_hist, (size_t)fm->nblocks * fm->around_bins, sizeof(double), "around");
+        io_array(io, fm->around_samples, (size_t)fm->nblocks, sizeof(long long), "around samples");
+    }
+    if (fm->map_on) {
+        io_array(io, fm->map_hist, (size_t)fm->map_bins[0] * fm->map_bins[1], sizeof(double), "density map");
+        io_bytes(io, &fm->map_samples, sizeof fm->map_samples, "density map samples");
+    }
     /* run loop */
     io_array(io, x->timers, (size_t)x->ntimers, sizeof(double), "timers");
     io_bytes(io, &x->cpu_used, sizeof x->cpu_used, "cpu time");

@@ -29,7 +29,7 @@ same_run() {   # same_run REF DIR: bit-identical results
     [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] || { echo "  $d: no complete result"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /results/final_state || { echo "  final_state differs"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /observables || { echo "  observables differ"; return 1; }
-    for t in profile rdf msd; do
+    for t in profile rdf msd around density_map; do
         [ -e "$r/$t.tsv" ] || continue
         cmp -s "$r/$t.tsv" "$d/$t.tsv" || { echo "  $t.tsv differs"; return 1; }
     done
