@@ -44,3 +44,5 @@ paper:
 
 # fig07 takes the exclusion radius measured by fig06 at the same tier
 results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv
+# fig08 runs the m = 0 scene of fig06
+results/phan-thien-2016/fig08-compressibility/$(TIER)/summary.tsv: experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg

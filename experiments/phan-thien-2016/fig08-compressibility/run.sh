@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Fig. 8 of Phan-Thien et al. 2016: density residual (eq. 49) and mean |div u|
+# of the flow past the cylinder array against the body force P, m = 0 against
+# m = 1. Fields: time averages over the production run on 12 x 12 bins
+# (0.5 x 0.5), the bins whose centre is within 1 of the cylinder centre left
+# out (132 bins), n = 4. Each point: independent seeds, mean +- stderr.
+. "$DPD_ROOT/tools/lib/exp.sh"
+m0=$DPD_ROOT/experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
+m1=cylinder-m1.cfg
+case $TIER in
+    quick) Ps="0.1 1.0"; seeds="1 2"; tier=(--set equilibration=1000 --set steps=10000) ;;
+    paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; seeds="1 2 3"; tier=(--set equilibration=1000 --set steps=20000) ;;
+esac
+printf 'P\tm\tresidual\tresidual_se\tdivu\tdivu_se\tU\tU_se\n' > "$OUT/fields.tsv"
+for m in 0 1; do
+    scene=$m0; [ $m = 1 ] && scene=$m1
+    for P in $Ps; do
+        rows=""
+        for k in $seeds; do
+            name="m${m}_P${P}_s$k"
+            dpd_run "$name" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
+                --set 'measure.density_map.bins=[12,12]' --set seed=$((8000 + 100 * k + ${P/./} + 1000 * m))
+            rows+="$(awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
+        done
+        # mean and standard error over the seeds
+        printf '%s' "$rows" | awk -F'\t' -v P="$P" -v m="$m" '
+            { r[NR] = $1; d[NR] = $2; u[NR] = $4; sr += $1; sd += $2; su += $4 }
+            END { n = NR; mr = sr / n; md = sd / n; mu = su / n
+                  for (k = 1; k <= n; k++) { vr += (r[k] - mr)^2; vd += (d[k] - md)^2; vu += (u[k] - mu)^2 }
+                  f = 1 / (n * (n - 1))
+                  printf "%s\t%s\t%.6g\t%.3g\t%.6g\t%.3g\t%.6g\t%.3g\n", P, m, mr, sqrt(vr * f), md, sqrt(vd * f), mu, sqrt(vu * f) }' \
+            >> "$OUT/fields.tsv"
+        # momentum balance: at m = 0 exact at every step; at m = 1 on average in the steady state
+        emit_from "m${m}_P${P}_s1" force_on_cylinder_x "drag_m${m}_P$P"
+        awk -F'\t' -v q="force_balance_m${m}_P$P" -v P="$P" -v v="$(get "m${m}_P${P}_s1" force_on_cylinder_x)" \
+            'BEGIN { split(v, x, "\t"); printf "%s\t%.10g\t%.4g\n", q, x[1] / (144 * P) - 1, x[2] / (144 * P) }' >> "$OUT/summary.tsv"
+    done
+done
+# growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
+awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; RS[$2, $1] = $4; D[$2, $1] = $5; DS[$2, $1] = $6 }
+    function ratio(q, a, as, b, bs) { g = a / b; e = g * sqrt((as / a)^2 + (bs / b)^2); G[q] = g; E[q] = e
+                                      printf "%s\t%.6g\t%.3g\n", q, g, e }
+    END { for (m = 0; m <= 1; m++) {
+              ratio("residual_growth_m" m, R[m, "1.0"], RS[m, "1.0"], R[m, "0.1"], RS[m, "0.1"])
+              ratio("divu_growth_m" m, D[m, "1.0"], DS[m, "1.0"], D[m, "0.1"], DS[m, "0.1"]) }
+          ratio("residual_growth_ratio_m1_m0", G["residual_growth_m1"], E["residual_growth_m1"], G["residual_growth_m0"], E["residual_growth_m0"])
+          ratio("divu_growth_ratio_m1_m0", G["divu_growth_m1"], E["divu_growth_m1"], G["divu_growth_m0"], E["divu_growth_m0"]) }' \
+    "$OUT/fields.tsv" >> "$OUT/summary.tsv"
