@@ -220,6 +220,18 @@ static void overdamped_move(System *s)
     s->time += dt;
 }
 
+/* Start-up flows: frozen particles rest during equilibration and take their
+ * wall velocity from production step 0 (walls_start_at_production). */
+static void set_walls_moving(System *s, const double (*vwall)[3], int moving)
+{
+    for (int t = 0; t < s->ntypes; t++)
+        if (s->types[t].frozen)
+            for (int d = 0; d < 3; d++) s->types[t].wall_velocity[d] = moving ? vwall[t][d] : 0.0;
+    for (int i = 0; i < s->n; i++)
+        if (s->types[s->type[i]].frozen)
+            for (int d = 0; d < 3; d++) s->v[3 * i + d] = s->v_pred[3 * i + d] = s->types[s->type[i]].wall_velocity[d];
+}
+
 static int check_stable(const System *s, const RunConfig *rc, double *T)
 {
     *T = system_kinetic_temperature(s);
@@ -282,6 +294,10 @@ int run_scene(const RunOptions *opt)
     ss.sol = calloc(3 * (size_t)s.n + 1, sizeof(double));
     ss.ref = calloc(3 * (size_t)s.n + 1, sizeof(double));
     if (!ss.sol || !ss.ref) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
+    double vwall[DPD_MAX_TYPES][3];
+    for (int t = 0; t < s.ntypes; t++) memcpy(vwall[t], s.types[t].wall_velocity, sizeof vwall[t]);
+    const int walls_later = rc.walls_start_at_production && rc.equilibration > 0;
+    if (walls_later) set_walls_moving(&s, (const double (*)[3])vwall, 0);
     if (rc.overdamped) {
         int r = overdamped_step(&s, &nl, &od, &rc, &ss);
         if (r) { status = r == -2 ? 4 : 3; }
@@ -291,6 +307,7 @@ int run_scene(const RunOptions *opt)
     st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
     for (long long k = 0; k < total && status == 0; k++) {
         if (k == rc.equilibration) st.prod_wall0 = wall_now();
+        if (walls_later && k == rc.equilibration) set_walls_moving(&s, (const double (*)[3])vwall, 1);
         double t0 = wall_now(), t1, t2, t3, t4;
         long long prod;
         int want;

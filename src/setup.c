@@ -265,7 +265,9 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         if (m->prof_axis >= s->box.dim) return scene_fail(sc, p, "axis \"%s\" does not exist in %dD", ax, s->box.dim);
         if (scene_int(sc, p, "bins", &v, 20, 1, 100000, 0) < 0) return -1;
         m->prof_bins = (int)v;
+        if (scene_bool(sc, p, "per_block", &m->prof_per_block, 0) < 0) return -1;
     }
+    if (scene_bool(sc, g, "com", &m->com_on, 0) < 0) return -1;
     config_setting_t *r = scene_child(sc, g, "rdf", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
     if (r) {
@@ -334,6 +336,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_int(sc, NULL, "equilibration", &rc->equilibration, 0, 0, 1000000000000LL, 0) < 0) return -1;
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
+    if (scene_bool(sc, NULL, "walls_start_at_production", &rc->walls_start_at_production, 0) < 0) return -1;
     TypeInit ti[DPD_MAX_TYPES];
     if (read_types(sc, s, ti)) return -1;
     if (read_pairs(sc, s)) return -1;

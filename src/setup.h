@@ -20,6 +20,9 @@ typedef struct {
     /* specular walls for mobile particles: confine_axis < 0 for none */
     int confine_axis;
     double confine_lo, confine_hi;
+    /* frozen particles at rest during equilibration, at their velocity from
+     * production step 0 (start-up flows, Phan-Thien et al. 2016 Fig. 4) */
+    int walls_start_at_production;
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */
