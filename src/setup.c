@@ -195,7 +195,7 @@ static void initial_velocities(System *s)
  * mobile particle is massless and its velocity solves A v = f (eqs 14-18). */
 static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
 {
-    static const char *const SOLVERS[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", NULL};
+    static const char *const SOLVERS[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", "pcg_2level", NULL};
     static const char *const STOPS[] = {"change", "residual", NULL};
     config_setting_t *g = scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
@@ -212,6 +212,7 @@ static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
     rc->od_max_iter = (int)v;
     if (scene_bool(sc, g, "allow_unconverged", &rc->od_allow_unconverged, 0) < 0) return -1;
     if (scene_double(sc, g, "reference_tolerance", &rc->od_reference_tol, 0.0, 0.0, 1e-3, 0) < 0) return -1;
+    if (scene_bool(sc, g, "reference_own_fixed_point", &rc->od_reference_own, 0) < 0) return -1;
     for (int t = 0; t < s->ntypes; t++)
         if (!s->types[t].frozen) s->types[t].mass = 0.0;   /* m = 0: no kinetic terms */
     return 0;

@@ -17,6 +17,7 @@ typedef struct {
     int od_solver, od_stop, od_max_iter, od_allow_unconverged;
     double od_tol;
     double od_reference_tol;  /* > 0: also solve by PCG to this residual and record the true error */
+    int od_reference_own;     /* published Scheme 2: error against its own fixed point, not A v = f */
     /* specular walls for mobile particles: confine_axis < 0 for none */
     int confine_axis;
     double confine_lo, confine_hi;
