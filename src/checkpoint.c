@@ -133,6 +133,15 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
         io_series(io, &m->msd_done, "msd done");
         io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
     }
+    if (m->prof_on && m->prof_tsum)
+        io_array(io, m->prof_tsum, (size_t)m->nblocks, sizeof(double), "profile times");
+    if (m->com_on) {
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &m->com_v[d], "centre-of-mass velocity");
+            io_series(io, &m->com_r[d], "centre-of-mass position");
+        }
+        io_bytes(io, m->com_r0, sizeof m->com_r0, "centre-of-mass start");
+    }
     FieldMeasure *fm = &m->field;
     for (int t = 0; t < DPD_MAX_TYPES; t++)
         for (int d = 0; d < 3; d++) {
@@ -144,7 +153,7 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
         io_array(io, fm->around_samples, (size_t)fm->nblocks, sizeof(long long), "around samples");
     }
     if (fm->map_on) {
-        io_array(io, fm->map_hist, (size_t)fm->map_bins[0] * fm->map_bins[1], sizeof(double), "density map");
+        io_array(io, fm->map_hist, 3 * (size_t)fm->map_bins[0] * fm->map_bins[1], sizeof(double), "density map");
         io_bytes(io, &fm->map_samples, sizeof fm->map_samples, "density map samples");
     }
     /* run loop */

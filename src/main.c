@@ -4,6 +4,7 @@
 #include <string.h>
 #include "run.h"
 #include "params.h"
+#include "linefit.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -24,6 +25,8 @@ static void usage(FILE *f)
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
+        "  dpd fit-line TABLE --x COL --y COL --se COL [--range LO:HI]\n"
+        "      weighted straight-line fit (GSL) of a result table, e.g. a velocity profile\n"
         "  dpd --help | --version\n"
         "\n"
         "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure,\n"
@@ -74,6 +77,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) { usage(stdout); return 0; }
     if (!strcmp(argv[1], "--version")) { printf("dpd %s\n", DPD_GIT); return 0; }
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "fit-line")) return cmd_fit_line(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
     int rc = 1;

@@ -15,10 +15,14 @@ int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
     if (field_init(&m->field, s, m->nblocks)) return -1;
+    m->n_mobile = 0;
+    for (int i = 0; i < s->n; i++) m->n_mobile += !s->types[s->type[i]].frozen;
     if (m->prof_on) {
         m->prof = calloc((size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double));
         m->prof_samples = calloc((size_t)m->nblocks, sizeof(long long));
         if (!m->prof || !m->prof_samples) return -1;
+        m->prof_tsum = calloc((size_t)m->nblocks, sizeof(double));
+        if (!m->prof_tsum) return -1;
     }
     if (m->rdf_on) {
         m->rdf_hist = calloc((size_t)m->nblocks * m->rdf_bins, sizeof(double));
@@ -56,7 +60,8 @@ void measure_free(Measure *m)
         for (int k = 0; k < 9; k++) series_free(&m->P[p][k]);
     for (int t = 0; t < DPD_MAX_TYPES; t++)
         for (int d = 0; d < 3; d++) series_free(&m->frozen_force[t][d]);
-    free(m->prof); free(m->prof_samples);
+    free(m->prof); free(m->prof_samples); free(m->prof_tsum);
+    for (int d = 0; d < 3; d++) { series_free(&m->com_v[d]); series_free(&m->com_r[d]); }
     free(m->rdf_hist); free(m->rdf_samples);
     free(m->msd_origin_pos); free(m->msd_origin_step); free(m->msd_curve);
     series_free(&m->msd_done);
@@ -189,6 +194,29 @@ static void sample_msd(Measure *m, const System *s, long long step)
     }
 }
 
+/* Centre of mass of the mobile particles (eq. 32, number-weighted so that it
+ * also holds at m = 0) from unwrapped positions, and their mean velocity. */
+static void sample_com(Measure *m, const System *s, long long sample)
+{
+    double r[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+    long long cnt = 0;
+    for (int i = 0; i < s->n; i++) {
+        if (s->types[s->type[i]].frozen) continue;
+        for (int d = 0; d < 3; d++) {
+            r[d] += s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d];
+            v[d] += s->v[3 * i + d];
+        }
+        cnt++;
+    }
+    if (!cnt) return;
+    for (int d = 0; d < 3; d++) {
+        r[d] /= cnt; v[d] /= cnt;
+        if (sample == 0) m->com_r0[d] = r[d];
+        series_push(&m->com_v[d], v[d]);
+        series_push(&m->com_r[d], r[d] - m->com_r0[d]);
+    }
+}
+
 void measure_sample(Measure *m, const System *s, const NeighborList *nl, const PairVirial *pv,
                     long long prod_step)
 {
@@ -200,7 +228,11 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
     const long long sample = prod_step / m->every;
     sample_thermo(m, s, pv);
     field_sample(&m->field, s, block_of(m, sample));
-    if (m->prof_on) sample_profile(m, s, pv, block_of(m, sample));
+    if (m->com_on) sample_com(m, s, sample);
+    if (m->prof_on) {
+        sample_profile(m, s, pv, block_of(m, sample));
+        m->prof_tsum[block_of(m, sample)] += prod_step * s->dt;
+    }
 }
 
 static void row(FILE *f, const char *name, double v, double se)
@@ -263,6 +295,70 @@ static int write_profile(const Measure *m, const System *s, const char *dir)
                 mean[4], se[4], mean[5], se[5], mean[6], mean[7], mean[8], mean[9]);
     }
     free(tmp);
+    return fclose(f);
+}
+
+/* Per-block profiles (blocks are contiguous in time): density and mean
+ * velocity per bin and block, with the mean production time of the block. */
+static int write_profile_blocks(const Measure *m, const System *s, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/profile_blocks.tsv", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    const int nb = m->prof_bins, ax = m->prof_axis;
+    const double h = s->box.L[ax] / nb, Vbin = volume(&s->box) / nb;
+    fprintf(f, "block\tt\tpos\tdensity\tvx\tvy\n");
+    for (int k = 0; k < m->nblocks; k++) {
+        const double S = (double)m->prof_samples[k];
+        if (S <= 0) continue;
+        for (int b = 0; b < nb; b++) {
+            const double *q = m->prof + ((size_t)k * nb + b) * PROF_Q;
+            double u[2] = {NAN, NAN};
+            for (int a = 0; a < 2 && q[0] > 0; a++) u[a] = q[1] > 0 ? q[2 + a] / q[1] : q[PROF_SUMV + a] / q[0];
+            fprintf(f, "%d\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\n", k, m->prof_tsum[k] / S, (b + 0.5) * h,
+                    q[0] / (S * Vbin), u[0], u[1]);
+        }
+    }
+    return fclose(f);
+}
+
+/* Centre-of-mass record: com.tsv and the extremes of the run (no error bar:
+ * one run's extremes; experiments take the scatter over independent runs). */
+static int write_com(const Measure *m, const System *s, FILE *summary, const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/com.tsv", dir);
+    FILE *f = fopen(path, "w");
+    if (!f) return -1;
+    const size_t ns = m->com_v[0].n;
+    const int dim = s->box.dim;
+    fprintf(f, "t\tvx\tvy\tx\ty\n");
+    double vmin[3] = {0}, vmax[3] = {0}, rmin[3] = {0}, rmax[3] = {0}, speed = 0.0, disp = 0.0, vsum = 0.0;
+    for (size_t k = 0; k < ns; k++) {
+        double v2 = 0.0, r2 = 0.0;
+        for (int d = 0; d < dim; d++) {
+            const double v = m->com_v[d].v[k], r = m->com_r[d].v[k];
+            vmin[d] = k ? fmin(vmin[d], v) : v; vmax[d] = k ? fmax(vmax[d], v) : v;
+            rmin[d] = k ? fmin(rmin[d], r) : r; rmax[d] = k ? fmax(rmax[d], r) : r;
+            v2 += v * v; r2 += r * r;
+            vsum = fmax(vsum, fabs(v) * m->n_mobile);
+        }
+        speed = fmax(speed, sqrt(v2));
+        disp = fmax(disp, sqrt(r2));
+        fprintf(f, "%.6g\t%.6g\t%.6g\t%.6g\t%.6g\n", (double)k * m->every * s->dt,
+                m->com_v[0].v[k], m->com_v[1].v[k], m->com_r[0].v[k], m->com_r[1].v[k]);
+    }
+    for (int d = 0; d < dim; d++) {
+        char name[64];
+        snprintf(name, sizeof name, "com_v%c_min", "xyz"[d]); row(summary, name, vmin[d], 0);
+        snprintf(name, sizeof name, "com_v%c_max", "xyz"[d]); row(summary, name, vmax[d], 0);
+        snprintf(name, sizeof name, "com_%c_min", "xyz"[d]); row(summary, name, rmin[d], 0);
+        snprintf(name, sizeof name, "com_%c_max", "xyz"[d]); row(summary, name, rmax[d], 0);
+    }
+    row(summary, "com_speed_max", speed, 0);
+    row(summary, "com_displacement_max", disp, 0);
+    row(summary, "velocity_sum_max", vsum, 0);   /* largest |sum_i v_i,a| over samples and axes */
     return fclose(f);
 }
 
@@ -388,6 +484,8 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
     }
     if (field_write(&m->field, s, summary, dir)) return -1;
     if (m->prof_on && write_profile(m, s, dir)) return -1;
+    if (m->prof_on && m->prof_per_block && write_profile_blocks(m, s, dir)) return -1;
+    if (m->com_on && write_com(m, s, summary, dir)) return -1;
     if (m->rdf_on && write_rdf(m, s, dir)) return -1;
     if (m->msd_on && write_msd(m, s, summary, dir)) return -1;
     return 0;

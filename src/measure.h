@@ -40,6 +40,14 @@ typedef struct {
     Series msd_done;          /* completed curves, nlags values each, flattened */
     long long msd_ndone;
     int msd_count;            /* particles in the selection */
+    /* profile per block (time-resolved start-up profiles) */
+    int prof_per_block;
+    double *prof_tsum;        /* per block: sum of sample times */
+    /* centre of mass of the mobile particles (Phan-Thien et al. 2016, eqs 32-33) */
+    int com_on;
+    Series com_v[3], com_r[3];  /* number-weighted mean velocity; unwrapped centre minus its start */
+    double com_r0[3];
+    long long n_mobile;
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
     FieldMeasure field;       /* about points, on grids, torques, mean velocities */

@@ -107,7 +107,7 @@ int field_init(FieldMeasure *f, const System *s, int nblocks)
         f->around_density = cnt / A;
     }
     if (f->map_on) {
-        f->map_hist = calloc((size_t)f->map_bins[0] * f->map_bins[1], sizeof(double));
+        f->map_hist = calloc(3 * (size_t)f->map_bins[0] * f->map_bins[1], sizeof(double));
         if (!f->map_hist) return -1;
     }
     return 0;
@@ -170,7 +170,10 @@ void field_sample(FieldMeasure *f, const System *s, int block)
             int bx = (int)(s->x[3 * i] / s->box.L[0] * nx), by = (int)(s->x[3 * i + 1] / s->box.L[1] * ny);
             if (bx >= nx) bx = nx - 1;
             if (by >= ny) by = ny - 1;
-            f->map_hist[(size_t)by * nx + bx] += 1.0;
+            double *h = f->map_hist + 3 * ((size_t)by * nx + bx);
+            h[0] += 1.0;
+            h[1] += s->v[3 * i];
+            h[2] += s->v[3 * i + 1];
         }
         f->map_samples++;
     }
@@ -248,11 +251,14 @@ static int write_density_map(const FieldMeasure *f, const System *s, const char 
     const int nx = f->map_bins[0], ny = f->map_bins[1];
     double cell = s->box.L[0] / nx * s->box.L[1] / ny;
     if (s->box.dim == 3) cell *= s->box.L[2];
-    fprintf(out, "x\ty\tdensity\n");
+    fprintf(out, "x\ty\tdensity\tvx\tvy\n");
     for (int by = 0; by < ny; by++) {
-        for (int bx = 0; bx < nx; bx++)
-            fprintf(out, "%.6g\t%.6g\t%.6g\n", (bx + 0.5) * s->box.L[0] / nx, (by + 0.5) * s->box.L[1] / ny,
-                    f->map_samples ? f->map_hist[(size_t)by * nx + bx] / (f->map_samples * cell) : 0.0);
+        for (int bx = 0; bx < nx; bx++) {
+            const double *h = f->map_hist + 3 * ((size_t)by * nx + bx);
+            fprintf(out, "%.6g\t%.6g\t%.6g\t%.6g\t%.6g\n", (bx + 0.5) * s->box.L[0] / nx,
+                    (by + 0.5) * s->box.L[1] / ny, f->map_samples ? h[0] / (f->map_samples * cell) : 0.0,
+                    h[0] > 0 ? h[1] / h[0] : 0.0, h[0] > 0 ? h[2] / h[0] : 0.0);
+        }
         fputc('\n', out);   /* gnuplot pm3d scan separator */
     }
     return fclose(out);

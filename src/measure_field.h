@@ -1,7 +1,8 @@
 /* measure_field.h - measurements about fixed bodies and on grids:
  *  - the distribution of a type about a fixed point (Phan-Thien et al. 2016,
  *    eq. 48) and the exclusion radius where it first reaches a threshold;
- *  - a number-density map on a grid over x and y;
+ *  - a number-density map on a grid over x and y, with the number-weighted
+ *    mean velocity of each bin (its divergence measures compressibility);
  *  - the radial conservative force field of a body on a grid (their Fig. 6a);
  *  - always: the mean velocity of each mobile type, and the torque that the
  *    mobile particles exert on each frozen type about its centroid.
@@ -25,7 +26,7 @@ typedef struct FieldMeasure {
     double around_density;        /* N / A of the type (eq. 48) */
     /* density_map = { type = "..."; bins = [nx, ny]; } */
     int map_on, map_type, map_bins[2];
-    double *map_hist;
+    double *map_hist;             /* per bin: count, sum vx, sum vy */
     long long map_samples;
     /* force_map = { body = "..."; probe = "..."; bins = [nx, ny]; } */
     int fmap_on, fmap_body, fmap_probe, fmap_bins[2];

@@ -7,6 +7,7 @@
 #include <gsl/gsl_cblas.h>
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_matrix.h>
+#include <gsl/gsl_linalg.h>
 #include "overdamped.h"
 #include "random.h"
 
@@ -22,7 +23,7 @@ void od_free(OdSystem *od)
 {
     free(od->row_of); free(od->part_of); free(od->diag); free(od->dinv);
     free(od->ostart); free(od->ocol); free(od->oblk); free(od->f); free(od->wrow);
-    free(od->work);
+    free(od->work); free(od->agg); free(od->coarse);
     memset(od, 0, sizeof *od);
 }
 
@@ -263,6 +264,22 @@ int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
     }
     sym_inverse(od->wall, dim, od->wall_inv);     /* pseudo-inverse if no wall contact */
     od->fnorm = cblas_dnrm2(3 * nm, od->f, 1);
+    /* coarse cells of side about 2 rc for the two-level preconditioner */
+    od->coarse_ok = 0;
+    if (grow((void **)&od->agg, (size_t)n, sizeof(int))) return -1;
+    int nc[3] = {1, 1, 1}, ncell = 1;
+    for (int d = 0; d < dim; d++) { nc[d] = (int)(s->box.L[d] / (2.0 * s->rc_max)); if (nc[d] < 1) nc[d] = 1; ncell *= nc[d]; }
+    for (int r = 0; r < nm; r++) {
+        const double *x = s->x + 3 * (size_t)od->part_of[r];
+        int c = 0;
+        for (int d = dim - 1; d >= 0; d--) {
+            int k = (int)(x[d] / s->box.L[d] * nc[d]);
+            k = k < 0 ? 0 : (k >= nc[d] ? nc[d] - 1 : k);
+            c = c * nc[d] + k;
+        }
+        od->agg[r] = c;
+    }
+    od->ncoarse = ncell * dim;
     return 0;
 }
 
@@ -501,22 +518,79 @@ static OdResult scheme2_consistent(OdSystem *od, double *v, OdStop stop, double 
 
 /* -------------------------------------------------------------------- PCG */
 
+/* Coarse operator P^T A P of the aggregation (P: one block of identity per
+ * row in its cell's slot), Cholesky-factored (GSL). Empty cells get a unit
+ * diagonal. Returns 0, or -1 if P^T A P is not positive definite (no frozen
+ * contact: the uniform translation is then in its null space). */
+static int coarse_build(OdSystem *od)
+{
+    const int nc = od->ncoarse, dim = od->dim;
+    if ((size_t)nc * nc > od->cap_coarse) {
+        if (grow((void **)&od->coarse, (size_t)nc * nc, sizeof(double))) return -1;
+        od->cap_coarse = (size_t)nc * nc;
+    }
+    double *C = od->coarse;
+    memset(C, 0, (size_t)nc * nc * sizeof(double));
+    for (int r = 0; r < od->nm; r++) {
+        const int I = od->agg[r] * dim;
+        const double *B = od->diag + 9 * (size_t)r;
+        for (int a = 0; a < dim; a++) for (int b = 0; b < dim; b++) C[(size_t)(I + a) * nc + I + b] += B[3 * a + b];
+        for (int k = od->ostart[r]; k < od->ostart[r + 1]; k++) {
+            const int J = od->agg[od->ocol[k]] * dim;
+            const double *O = od->oblk + 9 * (size_t)k;
+            for (int a = 0; a < dim; a++)
+                for (int b = 0; b < dim; b++) {
+                    C[(size_t)(I + a) * nc + J + b] += O[3 * a + b];
+                    C[(size_t)(J + a) * nc + I + b] += O[3 * b + a];
+                }
+        }
+    }
+    for (int i = 0; i < nc; i++) if (C[(size_t)i * nc + i] == 0.0) C[(size_t)i * nc + i] = 1.0;
+    gsl_matrix_view m = gsl_matrix_view_array(C, (size_t)nc, (size_t)nc);
+    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    const int bad = gsl_linalg_cholesky_decomp1(&m.matrix);
+    gsl_set_error_handler(old);
+    return bad ? -1 : 0;
+}
+
+/* z = M^{-1} r: block Jacobi (eq. 22), plus P (P^T A P)^{-1} P^T r when two-level. */
+static void precondition(const OdSystem *od, const double *r, double *z, int twolevel, double *rc)
+{
+    for (int i = 0; i < od->nm; i++) blk_mul(od->dinv + 9 * (size_t)i, r + 3 * (size_t)i, z + 3 * (size_t)i);
+    if (!twolevel) return;
+    const int nc = od->ncoarse, dim = od->dim;
+    memset(rc, 0, (size_t)nc * sizeof(double));
+    for (int i = 0; i < od->nm; i++)
+        for (int a = 0; a < dim; a++) rc[od->agg[i] * dim + a] += r[3 * (size_t)i + a];
+    gsl_matrix_const_view m = gsl_matrix_const_view_array(od->coarse, (size_t)nc, (size_t)nc);
+    gsl_vector_view v = gsl_vector_view_array(rc, (size_t)nc);
+    gsl_linalg_cholesky_svx(&m.matrix, &v.vector);
+    for (int i = 0; i < od->nm; i++)
+        for (int a = 0; a < dim; a++) z[3 * (size_t)i + a] += rc[od->agg[i] * dim + a];
+}
+
 /* Preconditioned conjugate gradients (Hestenes & Stiefel 1952) with the
  * block-Jacobi preconditioner M = I of eq. 20 (z = I^{-1} r, eq. 22). A is
  * symmetric positive definite when frozen particles pin the translations.
  * The "change" of eq. 27 is |alpha p|, the residual the recurrence one
  * (the true residual is recomputed at the end). */
-static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_iter)
+static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_iter, int twolevel)
 {
     const int nm = od->nm, n3 = 3 * nm;
     double *r = od->work, *z = od->work + n3, *p = od->work + 2 * n3, *q = od->work + 3 * n3;
     OdResult res = {0};
+    double *rc = NULL;
+    if (twolevel) {
+        if (!od->coarse_ok) od->coarse_ok = coarse_build(od) == 0 ? 1 : -1;
+        if (od->coarse_ok == 1) rc = malloc((size_t)od->ncoarse * sizeof(double) + 1);
+        twolevel = rc != NULL;           /* no coarse operator: plain block Jacobi */
+    }
     od_matvec(od, x, q);
     res.matvecs++;
     for (int k = 0; k < n3; k++) r[k] = od->f[k] - q[k];
     res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
-    if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; return res; }
-    for (int i = 0; i < nm; i++) blk_mul(od->dinv + 9 * (size_t)i, r + 3 * (size_t)i, z + 3 * (size_t)i);
+    if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; free(rc); return res; }
+    precondition(od, r, z, twolevel, rc);
     memcpy(p, z, (size_t)n3 * sizeof(double));
     double rz = cblas_ddot(n3, r, 1, z, 1);
     while (res.iterations < max_iter) {
@@ -533,7 +607,7 @@ static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_it
         res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
         if ((stop == OD_STOP_CHANGE && stop_change(dnorm, vnorm, tol))
             || (stop == OD_STOP_RESIDUAL && res.rel_residual < tol)) { res.converged = 1; break; }
-        for (int i = 0; i < nm; i++) blk_mul(od->dinv + 9 * (size_t)i, r + 3 * (size_t)i, z + 3 * (size_t)i);
+        precondition(od, r, z, twolevel, rc);
         const double rz_new = cblas_ddot(n3, r, 1, z, 1);
         const double beta = rz_new / rz;
         rz = rz_new;
@@ -541,7 +615,50 @@ static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_it
     }
     res.rel_residual = od_residual(od, x);        /* true residual, not the recurrence */
     if (stop == OD_STOP_RESIDUAL) res.converged = res.rel_residual < tol;
+    free(rc);
     return res;
+}
+
+/* Fixed point of the published Scheme 2 (see scheme2_paper above): the v with
+ * A v = f - E c and E^T v = 0, E the dim uniform translations (eqs 42-44) and
+ * c = F~/Ns. With y0 = A^{-1} f and y_a = A^{-1} E_a (tight PCG solves):
+ * c = (E^T A^{-1} E)^{-1} E^T y0, v = y0 - sum_a y_a c_a. Used to measure
+ * the published Scheme 2's convergence to its own fixed point. Returns 0, or
+ * -1 on allocation failure or when A is singular (no frozen contact). */
+int od_scheme2_paper_fixed_point(OdSystem *od, double *v, double tol)
+{
+    const int nm = od->nm, n3 = 3 * nm, dim = od->dim;
+    if (nm == 0) return 0;
+    if (!(od->wall[0] + od->wall[4] + od->wall[8] > 0.0)) return -1;
+    double *y = calloc((size_t)3 * n3 + 1, sizeof(double)), *e = malloc((size_t)n3 * sizeof(double) + 1);
+    if (!y || !e) { free(y); free(e); return -1; }
+    double *f = od->f;
+    const double fnorm = od->fnorm;
+    const int cap = 100 * nm + 1000;
+    od_solve_vec(od, v, OD_PCG, OD_STOP_RESIDUAL, tol, cap);         /* y0, warm-started from v */
+    od->f = e;
+    for (int a = 0; a < dim; a++) {
+        for (int k = 0; k < n3; k++) e[k] = (k % 3 == a) ? 1.0 : 0.0;
+        od->fnorm = sqrt((double)nm);
+        od_solve_vec(od, y + (size_t)a * n3, OD_PCG, OD_STOP_RESIDUAL, tol, cap);
+    }
+    od->f = f;
+    od->fnorm = fnorm;
+    double M[9] = {0}, Minv[9], rhs[3] = {0}, c[3];
+    for (int r = 0; r < nm; r++)
+        for (int a = 0; a < dim; a++) {
+            rhs[a] += v[3 * r + a];
+            for (int b = 0; b < dim; b++) M[3 * a + b] += y[(size_t)b * n3 + 3 * r + a];
+        }
+    for (int a = 0; a < dim; a++)                                   /* symmetrise round-off */
+        for (int b = a + 1; b < dim; b++) M[3 * a + b] = M[3 * b + a] = 0.5 * (M[3 * a + b] + M[3 * b + a]);
+    sym_inverse(M, dim, Minv);
+    blk_mul(Minv, rhs, c);
+    for (int r = 0; r < nm; r++)
+        for (int b = 0; b < dim; b++)
+            for (int a = 0; a < dim; a++) v[3 * r + a] -= y[(size_t)b * n3 + 3 * r + a] * c[b];
+    free(y); free(e);
+    return 0;
 }
 
 /* ------------------------------------------------------------------ entry */
@@ -555,7 +672,8 @@ OdResult od_solve_vec(OdSystem *od, double *v, OdSolver solver, OdStop stop,
     case OD_SCHEME1:            return scheme1(od, v, stop, tol, max_iter);
     case OD_SCHEME2_PAPER:      return scheme2_paper(od, v, stop, tol, max_iter);
     case OD_SCHEME2_CONSISTENT: return scheme2_consistent(od, v, stop, tol, max_iter);
-    case OD_PCG:                return pcg(od, v, stop, tol, max_iter);
+    case OD_PCG:                return pcg(od, v, stop, tol, max_iter, 0);
+    case OD_PCG_2LEVEL:         return pcg(od, v, stop, tol, max_iter, 1);
     }
     return res;
 }

@@ -35,6 +35,11 @@
  *                         two-level method whose coarse space is the rigid
  *                         translation); converges to the solution of A v = f.
  *   OD_PCG                conjugate gradients, block-Jacobi preconditioner.
+ *   OD_PCG_2LEVEL         conjugate gradients, additive two-level
+ *                         preconditioner: block Jacobi plus an exact solve on
+ *                         a coarse space of piecewise-constant velocities over
+ *                         square cells of side 2 rc (aggregation), which
+ *                         removes the slow long-wavelength (shear) modes.
  * Stopping rules: OD_STOP_CHANGE, eq. 27: |v^l - v^{l-1}| < tol |v^l|;
  *                 OD_STOP_RESIDUAL: |f - A v| < tol |f|.
  */
@@ -48,7 +53,8 @@ typedef enum {
     OD_SCHEME1 = 0,
     OD_SCHEME2_PAPER = 1,
     OD_SCHEME2_CONSISTENT = 2,
-    OD_PCG = 3
+    OD_PCG = 3,
+    OD_PCG_2LEVEL = 4         /* PCG, block Jacobi + aggregation coarse space */
 } OdSolver;
 
 typedef enum {
@@ -78,6 +84,12 @@ typedef struct {
     int n_singular;           /* rows whose diagonal block is singular (e.g. one neighbour) */
     size_t cap_rows, cap_blk; /* allocated sizes */
     double *work;             /* 6 x n x 3 scratch: slots 0-3 solvers, 4 od_solve */
+    /* two-level preconditioner (OD_PCG_2LEVEL), built on demand per assembly */
+    int *agg;                 /* nm: coarse cell of each row */
+    int ncoarse;              /* coarse unknowns = cells x dim */
+    double *coarse;           /* ncoarse^2: Cholesky factor of P^T A P */
+    size_t cap_coarse;
+    int coarse_ok;            /* factor valid for the current assembly */
 } OdSystem;
 
 typedef struct {
@@ -103,6 +115,12 @@ OdResult od_solve(OdSystem *od, System *s, OdSolver solver, OdStop stop,
 /* Same on a packed vector v (nm x 3), in place; v holds the warm start. */
 OdResult od_solve_vec(OdSystem *od, double *v, OdSolver solver, OdStop stop,
                       double tol, int max_iter);
+
+/* Fixed point of the published Scheme 2 (A v = f - 1 F~/Ns with zero mean
+ * fluid velocity), by dim + 1 PCG solves to residual tol; v (nm x 3) holds
+ * the warm start for A^{-1} f and receives the result. 0, or -1 (no frozen
+ * contact, or out of memory). */
+int od_scheme2_paper_fixed_point(OdSystem *od, double *v, double tol);
 
 /* y = A v on packed vectors (nm x 3). */
 void od_matvec(const OdSystem *od, const double *v, double *y);

@@ -150,6 +150,7 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
 /* Solver statistics of the m = 0 runs, one entry per step. */
 typedef struct {
     Series iterations, residual, seconds, true_error;
+    Series cpu_seconds;       /* process CPU time of assembly + solve (robust to a shared machine) */
     long long unconverged;
     double *sol, *ref;        /* packed solution and reference (3 n each) */
 } SolverStats;
@@ -162,18 +163,19 @@ static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunC
                            SolverStats *ss)
 {
     const int record = (long long)s->step >= rc->equilibration;   /* production steps only */
-    const double t0 = wall_now();
+    const double t0 = wall_now(), c0 = cpu_now();
     if (od_assemble(od, s, nl)) return -2;
     OdResult r = od_solve(od, s, (OdSolver)rc->od_solver, (OdStop)rc->od_stop, rc->od_tol, rc->od_max_iter);
     if (record) {
         series_push(&ss->iterations, r.iterations);
         series_push(&ss->residual, r.rel_residual);
         series_push(&ss->seconds, wall_now() - t0);
+        series_push(&ss->cpu_seconds, cpu_now() - c0);
     }
     if (!r.converged) {
         ss->unconverged++;
         if (!rc->od_allow_unconverged) {
-            static const char *names[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg"};
+            static const char *names[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", "pcg_2level"};
             fprintf(stderr, "dpd: the %s solve did not converge at step %llu: %d iterations, change %g, "
                     "relative residual %g (tolerance %g); raise overdamped.max_iterations or set "
                     "overdamped.allow_unconverged = true\n", names[rc->od_solver],
@@ -185,7 +187,10 @@ static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunC
         /* true error: distance to a tight PCG solve started from this solution */
         od_gather(od, s, ss->sol);
         memcpy(ss->ref, ss->sol, 3 * (size_t)od->nm * sizeof(double));
-        od_solve_vec(od, ss->ref, OD_PCG, OD_STOP_RESIDUAL, rc->od_reference_tol, 100 * od->nm + 1000);
+        if (rc->od_reference_own && rc->od_solver == OD_SCHEME2_PAPER)   /* its own fixed point */
+            od_scheme2_paper_fixed_point(od, ss->ref, rc->od_reference_tol);
+        else
+            od_solve_vec(od, ss->ref, OD_PCG, OD_STOP_RESIDUAL, rc->od_reference_tol, 100 * od->nm + 1000);
         double num = 0.0, den = 0.0;
         for (int k = 0; k < 3 * od->nm; k++) {
             num += (ss->sol[k] - ss->ref[k]) * (ss->sol[k] - ss->ref[k]);
@@ -223,6 +228,18 @@ static void overdamped_move(System *s)
     }
     s->step++;
     s->time += dt;
+}
+
+/* Start-up flows: frozen particles rest during equilibration and take their
+ * wall velocity from production step 0 (walls_start_at_production). */
+static void set_walls_moving(System *s, const double (*vwall)[3], int moving)
+{
+    for (int t = 0; t < s->ntypes; t++)
+        if (s->types[t].frozen)
+            for (int d = 0; d < 3; d++) s->types[t].wall_velocity[d] = moving ? vwall[t][d] : 0.0;
+    for (int i = 0; i < s->n; i++)
+        if (s->types[s->type[i]].frozen)
+            for (int d = 0; d < 3; d++) s->v[3 * i + d] = s->v_pred[3 * i + d] = s->types[s->type[i]].wall_velocity[d];
 }
 
 static int check_stable(const System *s, const RunConfig *rc, double *T)
@@ -313,6 +330,9 @@ int run_scene(const RunOptions *opt)
     ss.sol = calloc(3 * (size_t)s.n + 1, sizeof(double));
     ss.ref = calloc(3 * (size_t)s.n + 1, sizeof(double));
     if (!ss.sol || !ss.ref) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
+    double vwall[DPD_MAX_TYPES][3];
+    for (int t = 0; t < s.ntypes; t++) memcpy(vwall[t], s.types[t].wall_velocity, sizeof vwall[t]);
+    const int walls_later = rc.walls_start_at_production && rc.equilibration > 0;
     /* checkpoints: the scene as run identifies them */
     char *scene_txt = scene_text(&sc);
     const uint64_t scene_hash = checkpoint_hash(scene_txt ? scene_txt : "", scene_txt ? strlen(scene_txt) : 0, 0);
@@ -338,6 +358,8 @@ int run_scene(const RunOptions *opt)
             if (!opt->quiet) fprintf(stderr, "dpd: resuming %s at step %llu\n", opt->outdir, (unsigned long long)s.step);
         }
     }
+    /* walls that start with the production run: still at rest before it */
+    if (walls_later) set_walls_moving(&s, (const double (*)[3])vwall, resumed && s.step > (uint64_t)rc.equilibration);
     if (resumed || status) {
         /* forces, v_pred and the m = 0 velocities of this step come from the checkpoint */
     } else if (rc.overdamped) {
@@ -354,6 +376,7 @@ int run_scene(const RunOptions *opt)
     stop_signal = 0;
     for (long long k = (long long)s.step; k < total && status == 0; k++) {
         if (k == rc.equilibration) st.prod_wall0 = wall_now();
+        if (walls_later && k == rc.equilibration) set_walls_moving(&s, (const double (*)[3])vwall, 1);
         double t0 = wall_now(), t1, t2, t3, t4;
         long long prod;
         int want;
@@ -469,6 +492,8 @@ int run_scene(const RunOptions *opt)
             fprintf(f, "solver_rel_residual\t%.10g\t%.4g\n", v, se);
             series_stats(&ss.seconds, m.nblocks, &v, &se);
             fprintf(f, "solver_seconds_per_step\t%.10g\t%.4g\n", v, se);
+            series_stats(&ss.cpu_seconds, m.nblocks, &v, &se);
+            fprintf(f, "solver_cpu_seconds_per_step\t%.10g\t%.4g\n", v, se);
             fprintf(f, "solver_unconverged_steps\t%lld\t0\n", ss.unconverged);
             if (ss.true_error.n > 0) {
                 series_stats(&ss.true_error, m.nblocks, &v, &se);
@@ -508,7 +533,7 @@ int run_scene(const RunOptions *opt)
     free(wbin);
     od_free(&od);
     series_free(&ss.iterations); series_free(&ss.residual); series_free(&ss.seconds);
-    series_free(&ss.true_error); free(ss.sol); free(ss.ref);
+    series_free(&ss.true_error); series_free(&ss.cpu_seconds); free(ss.sol); free(ss.ref);
     measure_free(&m);
     forces_free(&fw);
     neighbor_free(&nl);

@@ -240,7 +240,7 @@ static void initial_velocities(System *s)
  * mobile particle is massless and its velocity solves A v = f (eqs 14-18). */
 static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
 {
-    static const char *const SOLVERS[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", NULL};
+    static const char *const SOLVERS[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", "pcg_2level", NULL};
     static const char *const STOPS[] = {"change", "residual", NULL};
     config_setting_t *g = scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
@@ -257,6 +257,7 @@ static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
     rc->od_max_iter = (int)v;
     if (scene_bool(sc, g, "allow_unconverged", &rc->od_allow_unconverged, 0) < 0) return -1;
     if (scene_double(sc, g, "reference_tolerance", &rc->od_reference_tol, 0.0, 0.0, 1e-3, 0) < 0) return -1;
+    if (scene_bool(sc, g, "reference_own_fixed_point", &rc->od_reference_own, 0) < 0) return -1;
     for (int t = 0; t < s->ntypes; t++)
         if (!s->types[t].frozen) s->types[t].mass = 0.0;   /* m = 0: no kinetic terms */
     return 0;
@@ -311,7 +312,9 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         if (m->prof_axis >= s->box.dim) return scene_fail(sc, p, "axis \"%s\" does not exist in %dD", ax, s->box.dim);
         if (scene_int(sc, p, "bins", &v, 20, 1, 100000, 0) < 0) return -1;
         m->prof_bins = (int)v;
+        if (scene_bool(sc, p, "per_block", &m->prof_per_block, 0) < 0) return -1;
     }
+    if (scene_bool(sc, g, "com", &m->com_on, 0) < 0) return -1;
     config_setting_t *r = scene_child(sc, g, "rdf", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
     if (r) {
@@ -382,6 +385,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_int(sc, NULL, "equilibration", &rc->equilibration, 0, 0, 1000000000000LL, 0) < 0) return -1;
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
+    if (scene_bool(sc, NULL, "walls_start_at_production", &rc->walls_start_at_production, 0) < 0) return -1;
     TypeInit ti[DPD_MAX_TYPES];
     memset(ti, 0, sizeof ti);
     const int r = read_types(sc, s, ti) ? -1 : setup_particles(sc, s, m, rc, ti);

@@ -17,9 +17,13 @@ typedef struct {
     int od_solver, od_stop, od_max_iter, od_allow_unconverged;
     double od_tol;
     double od_reference_tol;  /* > 0: also solve by PCG to this residual and record the true error */
+    int od_reference_own;     /* published Scheme 2: error against its own fixed point, not A v = f */
     /* specular walls for mobile particles: confine_axis < 0 for none */
     int confine_axis;
     double confine_lo, confine_hi;
+    /* frozen particles at rest during equilibration, at their velocity from
+     * production step 0 (start-up flows, Phan-Thien et al. 2016 Fig. 4) */
+    int walls_start_at_production;
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */

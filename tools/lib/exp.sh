@@ -57,3 +57,14 @@ emit_ratio() {
     awk -F'\t' -v q="$1" -v a="$a" -v b="$b" 'BEGIN{split(a,x,"\t"); split(b,y,"\t"); r=x[1]/y[1];
         printf "%s\t%.10g\t%.4g\n", q, r, (r<0?-r:r)*sqrt((x[2]/x[1])^2+(y[2]/y[1])^2)}' >> "$OUT/summary.tsv"
 }
+
+# emit_mean AS QUANTITY NAME...: mean over independent runs of a run quantity,
+# standard error = sample standard deviation / sqrt(number of runs).
+emit_mean() {
+    local as=$1 q=$2; shift 2
+    local vals="" n
+    for n in "$@"; do vals="$vals $(get "$n" "$q" | cut -f1)" || return 1; done
+    awk -v q="$as" -v v="$vals" 'BEGIN{k=split(v,x," "); s=0; for(i=1;i<=k;i++) s+=x[i]; m=s/k;
+        ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; se=(k>1)?sqrt(ss/(k-1)/k):0;
+        printf "%s\t%.10g\t%.4g\n", q, m, se}' >> "$OUT/summary.tsv"
+}

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Density and x-velocity across the m = 0 Couette channel (Phan-Thien et al.
+# 2016, Fig. 3): straight-line fit of the bulk profile (GSL, `dpd fit-line`),
+# wall slip, and the solvent viscosity from the wall shear stress. PCG (the
+# solution of A v = f) gives the unsuffixed quantities; the published Scheme 2
+# (the paper's Fig. 3 solver) the *_scheme2 ones.
+. "$DPD_ROOT/tools/lib/exp.sh"
+U=10 LX=10 YLO=1 YHI=11 BULK=2:10      # walls at -U (bottom) and +U; fluid in [YLO, YHI]; bulk 1 rc from each wall
+case $TIER in
+    quick) declare -A len=([pcg]="--set equilibration=100 --set steps=1000" [scheme2_paper]="--set equilibration=100 --set steps=1000") ;;
+    paper) declare -A len=([pcg]="" [scheme2_paper]="--set steps=5000") ;;
+esac
+for solver in pcg scheme2_paper; do
+    sfx=; [ $solver = pcg ] || sfx=_scheme2
+    # shellcheck disable=SC2086
+    dpd_run $solver couette.cfg ${len[$solver]} --set "overdamped.solver=\"$solver\""
+    p=$OUT/runs/$solver/profile.tsv
+    cp "$p" "$OUT/profile$sfx.tsv"
+    "$DPD" fit-line "$p" --x pos --y vx --se vx_se --range $BULK > "$OUT/runs/$solver/fit.tsv"
+    fit() { awk -F'\t' -v q="$1" '$1==q{print $2 "\t" $3}' "$OUT/runs/$solver/fit.tsv"; }
+    read -r g gse < <(fit slope)
+    emit "shear_rate$sfx" "$g" "$gse"
+    emit "r2_bulk$sfx" "$(fit r2 | cut -f1)" 0
+    emit "velocity_centre$sfx" $(fit value_at_centre)
+    # mean slip of the two walls: U - (v(YHI) - v(YLO)) / 2 = U - slope (YHI - YLO) / 2
+    emit "wall_slip$sfx" "$(awk -v u=$U -v g=$g -v h=$((YHI - YLO)) 'BEGIN{printf "%.10g", u - g*h/2}')" \
+         "$(awk -v s=$gse -v h=$((YHI - YLO)) 'BEGIN{printf "%.4g", s*h/2}')"
+    # wall shear stress: x force of the fluid on the bottom wall minus that on the top, over 2 Lx
+    read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get $solver force_on_${w}_x; done |
+        awk -F'\t' -v lx=$LX '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2^2} END{printf "%.10g\t%.4g\n", v/(2*lx), sqrt(e)/(2*lx)}')
+    emit "wall_stress$sfx" "$tau" "$tause"
+    emit "eta$sfx" $(awk -v t=$tau -v ts=$tause -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g\t%.4g", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+    # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)
+    read -r sb sbse < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
+        $1>=r[1] && $1<=r[2] && $13!="nan" {s+=$12; e+=$13; n++} END{printf "%.10g\t%.4g\n", s/n, e/n}' "$p")
+    emit "eta_bulk_ik$sfx" $(awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g\t%.4g", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+    emit "eta_wall_minus_bulk$sfx" $(awk -v a=$tau -v as=$tause -v b=$sb -v bs=$sbse -v g=$g 'BEGIN{printf "%.10g\t%.4g", (a-b)/g, sqrt(as^2+bs^2)/g}')
+    # density: largest relative deviation of a bulk bin from the bulk mean (error: that bin's)
+    emit "density_bulk_max_rel_dev$sfx" $(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
+        $1>=r[1] && $1<=r[2] {n++; d[n]=$2; e[n]=$3; s+=$2} END{m=s/n; for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>best){best=x; be=e[k]/m}}
+        printf "%.10g\t%.4g", best, be}' "$p")
+    emit "density_wall_bin$sfx" $(awk -F'\t' '/^#/||$1=="pos"{next} $2!="nan"{print $2 "\t" $3; exit}' "$p")
+    emit_from $solver solver_iterations "iterations$sfx"
+done
+# the published Scheme 2 against the solution of A v = f: does time averaging hide its error?
+emit shear_rate_scheme2_minus_pcg $(awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
+    END{printf "%.10g\t%.4g", b-a, sqrt(as^2+bs^2)}' "$OUT/summary.tsv")

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Start-up of Couette flow from rest, m = 0 against m = 1 (Phan-Thien et al.
+# 2016, Fig. 4): fluid equilibrated between walls at rest, walls at -U and +U
+# from t = 0; profiles averaged over independent runs; t90 = time to 90 % of
+# the steady profile (growth.awk).
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) seeds=(1 2 3); len=(--set equilibration=200 --set steps=2000); b0=500; b1=200; ts=15 ;;
+    paper) seeds=(1 2 3 4 5 6 7 8); len=(); b0=1000; b1=400; ts=30 ;;
+esac
+for m in m0 m1; do
+    files=()
+    for seed in "${seeds[@]}"; do
+        if [ $m = m0 ]; then blk=(--set measure.every=1 --set measure.blocks=$b0)   # blocks of 4 steps
+        else blk=(--set measure.blocks=$b1); fi                                    # blocks of 0.1 time units
+        dpd_run ${m}_s$seed $m.cfg "${len[@]}" "${blk[@]}" --set seed=$seed
+        files+=("$OUT/runs/${m}_s$seed/profile_blocks.tsv")
+    done
+    awk -v ts=$ts -v name=$m -v out="$OUT" -f growth.awk "${files[@]}" >> "$OUT/summary.tsv"
+    runs=(); for seed in "${seeds[@]}"; do runs+=(${m}_s$seed); done
+    emit_mean "temperature_$m" temperature "${runs[@]}"
+done
+emit_ratio_summary() {   # QUANTITY A B: A / B of two summary rows
+    awk -F'\t' -v q="$1" -v a="$2" -v b="$3" '$1==a{x=$2; xs=$3} $1==b{y=$2; ys=$3}
+        END{r=x/y; printf "%s\t%.6g\t%.4g\n", q, r, r*sqrt((xs/x)^2+(ys/y)^2)}' "$OUT/summary.tsv" >> "$OUT/summary.tsv"; }
+emit_ratio_summary t90_ratio_m1_m0 t90_m1 t90_m0

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Centre of mass of the m = 0 fluid in the Couette channel under Scheme 1 and
+# the published Scheme 2 (Phan-Thien et al. 2016, section 3 and eqs 41-46):
+# dt = 0.005, every step sampled; independent seeds give the error bars.
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) tier=(--set equilibration=20 --set steps=150); seeds=(1 2) ;;
+    paper) tier=(); seeds=(1 2 3) ;;
+esac
+# amp NAME AXIS: largest |value| of the run's centre-of-mass velocity (v) or position
+amp() { local lo hi; lo=$(get "$1" "com_${2}_min" | cut -f1); hi=$(get "$1" "com_${2}_max" | cut -f1)
+        awk -v a="$lo" -v b="$hi" 'BEGIN{a=a<0?-a:a; b=b<0?-b:b; printf "%.10g", (a>b)?a:b}'; }
+# emit_list AS VALUES...: mean and standard error over independent runs
+emit_list() { local q=$1; shift
+    awk -v q="$q" -v v="$*" 'BEGIN{k=split(v,x," "); s=0; for(i=1;i<=k;i++) s+=x[i]; m=s/k;
+        ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; printf "%s\t%.10g\t%.4g\n", q, m, (k>1)?sqrt(ss/(k-1)/k):0}' >> "$OUT/summary.tsv"; }
+for solver in scheme1 scheme2_paper; do
+    short=${solver%_paper}
+    runs=()
+    for seed in "${seeds[@]}"; do
+        dpd_run "${solver}_s$seed" com.cfg "${tier[@]}" --set seed=$seed --set "overdamped.solver=\"$solver\""
+        runs+=("${solver}_s$seed")
+    done
+    for q in vx vy x y; do
+        vals=""; for r in "${runs[@]}"; do vals="$vals $(amp "$r" "$q")"; done
+        emit_list "com_${q}_amplitude_$short" $vals
+    done
+    emit_mean "com_x_min_$short" com_x_min "${runs[@]}"
+    emit_mean "com_x_max_$short" com_x_max "${runs[@]}"
+    emit_mean "com_speed_max_$short" com_speed_max "${runs[@]}"
+    emit_mean "com_displacement_max_$short" com_displacement_max "${runs[@]}"
+    emit_mean "velocity_sum_max_$short" velocity_sum_max "${runs[@]}"
+    emit_mean "iterations_$short" solver_iterations "${runs[@]}"
+    cp "$OUT/runs/${runs[0]}/com.tsv" "$OUT/com_$short.tsv"
+done
+emit_ratio com_speed_ratio_scheme1_scheme2 scheme1_s1 com_speed_max scheme2_paper_s1 com_speed_max
+sed -i '/^com_speed_ratio_scheme1_scheme2\t/s/\t[^\t]*$/\t0/' "$OUT/summary.tsv"   # extremes of one run each: no error
+if [ "$TIER" = paper ]; then
+    # the published Scheme 2's velocity sum is a solver-tolerance effect: one run at 1e-10
+    dpd_run scheme2_tol1e-10 com.cfg --set seed=1 --set 'overdamped.solver="scheme2_paper"' --set overdamped.tolerance=1e-10
+    emit_from scheme2_tol1e-10 velocity_sum_max velocity_sum_max_scheme2_tol1e-10
+    emit_from scheme2_tol1e-10 com_displacement_max com_displacement_max_scheme2_tol1e-10
+fi
