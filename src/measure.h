@@ -10,6 +10,7 @@
 #include "neighbor.h"
 #include "forces.h"
 #include "blockavg.h"
+#include "tcaf.h"
 
 enum { STRESS_KINETIC = 0, STRESS_CONSERVATIVE, STRESS_DISSIPATIVE, STRESS_RANDOM, STRESS_PARTS };
 
@@ -17,6 +18,7 @@ typedef struct {
     int every;                /* sampling interval (steps) */
     int nblocks;
     long long nsamples_expected;
+    long long prod_steps;     /* production steps of the run */
     /* thermo */
     Series temperature, pressure, epot;
     Series P[STRESS_PARTS][9];   /* global pressure tensor by part (P = -T) */
@@ -41,6 +43,7 @@ typedef struct {
     int msd_count;            /* particles in the selection */
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
+    Tcaf tcaf;                /* transverse current autocorrelation (tcaf.h) */
     int n;
 } Measure;
 

@@ -132,8 +132,8 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
         snprintf(name, sizeof name, "pressure_yx_%s", parts[p]);
         rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, m->every, s->dt);
     }
-    static const char *tables[] = {"profile", "rdf", "msd"};
-    for (int k = 0; k < 3; k++) {
+    static const char *tables[] = {"profile", "rdf", "msd", "tcaf", "tcaf_eta"};
+    for (int k = 0; k < 5; k++) {
         char f[1100], path[64];
         snprintf(f, sizeof f, "%s/%s.tsv", opt->outdir, tables[k]);
         snprintf(path, sizeof path, "/results/%s", tables[k]);

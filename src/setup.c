@@ -254,6 +254,7 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         m->nblocks = (int)v;
     }
     m->nsamples_expected = steps / m->every + 1;
+    m->prod_steps = steps;
     if (!g) return 0;
     config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
@@ -310,6 +311,9 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         m->msd_type = tn ? type_index(s, tn) : -1;
         if (tn && m->msd_type < 0) return scene_fail(sc, d, "unknown type \"%s\"", tn);
     }
+    config_setting_t *tc = scene_child(sc, g, "tcaf", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (tc && tcaf_configure(sc, tc, s, &m->tcaf, steps, m->nblocks)) return -1;
     return 0;
 }
 
