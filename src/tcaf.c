@@ -460,6 +460,21 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
         }
         rc |= fclose(f);
     } else rc = -1;
+    /* the k -> 0 fit as a curve from k = 0 */
+    snprintf(path, sizeof path, "%s/tcaf_extrapolation.tsv", dir);
+    f = fopen(path, "w");
+    if (f) {
+        double kend = 0.0;
+        for (int i = 0; i < nx; i++) kend = fmax(kend, kx[i]);
+        fprintf(f, "k\teta_fit\n");
+        for (int i = 0; i <= 40; i++) {
+            const double k = kend * i / 40.0;
+            double fit = 0.0, xp = 1.0;
+            for (int p = 0; p < P; p++) { fit += coef[p] * xp; xp *= k * k; }
+            fprintf(f, "%.6g\t%.8g\n", k, fit);
+        }
+        rc |= fclose(f);
+    } else rc = -1;
     free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
     return rc ? -1 : 0;
 }
