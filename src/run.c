@@ -240,9 +240,10 @@ int run_scene(const RunOptions *opt)
     Scene sc;
     System s;
     Measure m;
-    RunConfig rc;
+    RunConfig rc = {0};
     if (scene_load(&sc, opt->scene, opt->overrides, opt->noverrides) || setup_from_scene(&sc, &s, &m, &rc)) {
         fprintf(stderr, "dpd: %s\n", sc.error);
+        colloid_free(rc.colloids);
         scene_free(&sc);
         return 2;
     }
@@ -287,6 +288,7 @@ int run_scene(const RunOptions *opt)
         if (r) { status = r == -2 ? 4 : 3; }
     } else {
         forces_compute(&s, &nl, &fw, NULL);
+        if (rc.colloids) colloid_step(rc.colloids, &s);   /* particles start on their sites */
     }
     st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
     for (long long k = 0; k < total && status == 0; k++) {
@@ -320,6 +322,7 @@ int run_scene(const RunOptions *opt)
             prod = (long long)s.step - rc.equilibration;
             want = prod >= 0 && measure_wants_virial(&m, prod);
             forces_compute(&s, &nl, &fw, want ? &pv : NULL);
+            if (rc.colloids) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s); }   /* eq. 30 */
             t3 = wall_now();
             integrate_correct(&s);
             t4 = wall_now();
@@ -359,6 +362,7 @@ int run_scene(const RunOptions *opt)
         FILE *f = open_memstream(&sum, &len);
         fprintf(f, "quantity\tvalue\tstderr\n");
         if (measure_write(&m, &s, f, opt->outdir)) status = 4;
+        if (rc.colloids) colloid_write(rc.colloids, &s, f, m.nblocks);
         const double wall = wall_now() - st.wall0;
         fprintf(f, "particles\t%d\t0\n", s.n);
         fprintf(f, "steps\t%lld\t0\n", total);
@@ -421,6 +425,7 @@ int run_scene(const RunOptions *opt)
     series_free(&ss.iterations); series_free(&ss.residual); series_free(&ss.seconds);
     series_free(&ss.true_error); free(ss.sol); free(ss.ref);
     measure_free(&m);
+    colloid_free(rc.colloids);
     forces_free(&fw);
     neighbor_free(&nl);
     system_free(&s);

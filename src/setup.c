@@ -365,11 +365,20 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (read_overdamped(sc, s, rc)) return -1;
     if (read_confine(sc, s, rc)) return -1;
     if (read_measure(sc, s, m, rc->steps)) return -1;
+    config_setting_t *cg = scene_child(sc, NULL, "colloids", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (cg) {
+        long long counts[DPD_MAX_TYPES];
+        for (int t = 0; t < s->ntypes; t++) counts[t] = ti[t].count;
+        if (rc->overdamped) return scene_fail(sc, cg, "colloids need massive particles (no 'overdamped' group)");
+        if (colloid_configure(sc, cg, s, counts, &rc->colloids)) return -1;
+    }
     if (scene_check_unknown(sc)) return -1;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;
     s->n_frozen = nfrozen;
     place_particles(s, ti);
+    if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
     return 0;
 }

@@ -6,6 +6,7 @@
 #include "scene.h"
 #include "system.h"
 #include "measure.h"
+#include "colloid.h"
 
 typedef struct {
     long long steps, equilibration;
@@ -20,6 +21,7 @@ typedef struct {
     /* specular walls for mobile particles: confine_axis < 0 for none */
     int confine_axis;
     double confine_lo, confine_hi;
+    Colloids *colloids;       /* spring-model colloids (colloid.h), NULL if none */
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */
