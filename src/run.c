@@ -273,6 +273,8 @@ int run_scene(const RunOptions *opt)
         fprintf(stderr, "dpd: cannot create the HDF5 file in '%s'\n", opt->outdir);
         return 4;
     }
+    if (rc.colloids && m.tcaf.on && m.tcaf.include_bodies)   /* the bodies' momentum joins the TCAF */
+        tcaf_set_bodies(&m.tcaf, &s, rc.colloids->ncol, rc.colloids->R, rc.colloids->V, rc.colloids->mass);
     double *wbin = m.prof_on ? calloc((size_t)m.prof_bins * PAIR_PARTS * 9, sizeof(double)) : NULL;
     PairVirial pv = {.bin_axis = m.prof_axis, .nbins = m.prof_on ? m.prof_bins : 0, .Wbin = wbin};
     const long long total = rc.equilibration + rc.steps;

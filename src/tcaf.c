@@ -169,6 +169,25 @@ void tcaf_current(Tcaf *t, const System *s)
         t->J[q] = sum;
     }
     free(part);
+    /* momentum of rigid bodies (spring-model colloids), if asked for */
+    for (int b = 0; b < t->nbody; b++)
+        for (int q = 0; q < nv; q++) {
+            const double *k = t->kvec + 3 * q, *R = t->body_R + 3 * b, *V = t->body_V + 3 * b;
+            const double ph = k[0] * R[0] + k[1] * R[1] + k[2] * R[2];
+            const double complex e = cos(ph) + I * sin(ph);
+            for (int d = 0; d < 3; d++) t->J[3 * q + d] += t->body_mass * V[d] * e;
+        }
+}
+
+void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M)
+{
+    double vol = 1.0;
+    for (int d = 0; d < s->box.dim; d++) vol *= s->box.L[d];
+    t->nbody = nbody;
+    t->body_R = R;
+    t->body_V = V;
+    t->body_mass = M;
+    t->rho += nbody * M / vol;
 }
 
 void tcaf_transverse(const double k[3], const double complex J[3], double complex out[3])
@@ -499,6 +518,7 @@ int tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *
                           t->window / t->origin_every);
     if (scene_int(sc, g, "n2max", &v, 9, 1, 400, 0) < 0) return -1;
     t->n2max = (int)v;
+    if (scene_bool(sc, g, "include_bodies", &t->include_bodies, 0) < 0) return -1;
     if (scene_double(sc, g, "fit_min", &t->fit_min, 0.3, 1e-6, 0.99, 0) < 0) return -1;
     if (scene_double(sc, g, "extrapolate_kmax", &t->extrap_kmax, 1e9, 0.0, 1e9, 0) < 0) return -1;
     if (scene_int(sc, g, "extrapolate_order", &v, 1, 0, 3, 0) < 0) return -1;

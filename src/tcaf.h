@@ -48,12 +48,19 @@ typedef struct {
     double *acc;              /* nblocks x nshell x nlags */
     long long *acc_n;         /* nblocks: complete origins */
     long long nstarted, ndone;
+    /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
+    int include_bodies, nbody;
+    const double *body_R, *body_V;
+    double body_mass;
 } Tcaf;
 
 /* measure.tcaf = { every; window; origin_every; n2max; type; fit_min;
  * extrapolate_kmax; extrapolate_order; } of the scene group g (validated). */
 int  tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
                     long long steps, int nblocks);
+/* Add nbody bodies of mass M at R with velocity V (arrays owned by the caller,
+ * read at every sample) to the current: J += sum_b M V_b exp(i k.R_b); rho too. */
+void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M);
 /* Wave vectors and buffers; -1 on bad sizes or memory. */
 int  tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps);
 void tcaf_free(Tcaf *t);
