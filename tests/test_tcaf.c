@@ -227,6 +227,28 @@ static void sampled_decaying_mode_gives_its_viscosity(void **state)
     system_free(&s);
 }
 
+/* include_bodies: a body of mass M at R moving with V adds M V exp(i k.R) to
+ * every J(k), and its mass to rho. */
+static void bodies_join_the_current(void **state)
+{
+    (void)state;
+    System s; lattice(&s);
+    Tcaf t; configure(&t, 2, 10, 5, 2, 100, &s);
+    memset(s.v, 0, 3 * (size_t)s.n * sizeof(double));
+    const double R[3] = {1.3, 2.1, 0.4}, V[3] = {0.2, -0.5, 0.7}, M = 6.0;
+    const double rho0 = t.rho;
+    tcaf_set_bodies(&t, &s, 1, R, V, M);
+    CHECK_REL("rho with the body", t.rho, rho0 + M / (LBOX * LBOX * LBOX), 1e-14);
+    tcaf_current(&t, &s);
+    for (int q = 0; q < t.nvec; q++) {
+        const double *k = t.kvec + 3 * q, ph = k[0] * R[0] + k[1] * R[1] + k[2] * R[2];
+        for (int d = 0; d < 3; d++)
+            CHECK_ABS("J of a moving body", cabs(t.J[3 * q + d] - M * V[d] * cexp(I * ph)), 0.0, 1e-13);
+    }
+    tcaf_free(&t);
+    system_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -236,6 +258,7 @@ int main(void)
         cmocka_unit_test(fit_recovers_decay),
         cmocka_unit_test(extrapolation_exact_for_polynomials),
         cmocka_unit_test(sampled_decaying_mode_gives_its_viscosity),
+        cmocka_unit_test(bodies_join_the_current),
     };
     return cmocka_run_group_tests_name("tcaf", tests, NULL, NULL);
 }
