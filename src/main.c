@@ -5,6 +5,7 @@
 #include "run.h"
 #include "params.h"
 #include "linefit.h"
+#include "lengthscale.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -27,6 +28,9 @@ static void usage(FILE *f)
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
         "  dpd fit-line TABLE --x COL --y COL --se COL [--range LO:HI]\n"
         "      weighted straight-line fit (GSL) of a result table, e.g. a velocity profile\n"
+        "  dpd wavelengths [--box 15] [--n 4] [--p 6] [--kmin 3] [--kmax 13]\n"
+        "      phi of k^3 colloids of p particles among n L^3 solvent particles and the\n"
+        "      cube (eq. 31) and sphere (eq. 32) length scales (Mai-Duy et al. 2019, Table 1)\n"
         "  dpd --help | --version\n"
         "\n"
         "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure,\n"
@@ -78,6 +82,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "--version")) { printf("dpd %s\n", DPD_GIT); return 0; }
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
     if (!strcmp(argv[1], "fit-line")) return cmd_fit_line(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "wavelengths")) return cmd_wavelengths(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
     int rc = 1;

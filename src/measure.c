@@ -50,6 +50,7 @@ int measure_init(Measure *m, const System *s)
         for (int i = 0; i < s->n; i++)
             if (!s->types[s->type[i]].frozen && (m->msd_type < 0 || s->type[i] == m->msd_type)) m->msd_count++;
     }
+    if (m->tcaf.on && tcaf_init(&m->tcaf, s, m->nblocks, m->prod_steps)) return -1;
     return 0;
 }
 
@@ -66,6 +67,7 @@ void measure_free(Measure *m)
     free(m->msd_origin_pos); free(m->msd_origin_step); free(m->msd_curve);
     series_free(&m->msd_done);
     field_free(&m->field);
+    if (m->tcaf.on) tcaf_free(&m->tcaf);
 }
 
 int measure_wants_virial(const Measure *m, long long step)
@@ -222,6 +224,7 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
 {
     if (prod_step < 0) return;
     if (m->msd_on && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
+    if (m->tcaf.on && prod_step % m->tcaf.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
     if (m->rdf_on && prod_step % m->rdf_every == 0)
         sample_rdf(m, s, nl, block_of(m, prod_step / m->every));
     if (prod_step % m->every) return;
@@ -488,5 +491,6 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
     if (m->com_on && write_com(m, s, summary, dir)) return -1;
     if (m->rdf_on && write_rdf(m, s, dir)) return -1;
     if (m->msd_on && write_msd(m, s, summary, dir)) return -1;
+    if (m->tcaf.on && tcaf_write(&m->tcaf, s, summary, dir)) return -1;
     return 0;
 }

@@ -11,6 +11,7 @@
 #include "forces.h"
 #include "blockavg.h"
 #include "measure_field.h"
+#include "tcaf.h"
 
 enum { STRESS_KINETIC = 0, STRESS_CONSERVATIVE, STRESS_DISSIPATIVE, STRESS_RANDOM, STRESS_PARTS };
 
@@ -18,6 +19,7 @@ typedef struct {
     int every;                /* sampling interval (steps) */
     int nblocks;
     long long nsamples_expected;
+    long long prod_steps;     /* production steps of the run */
     /* thermo */
     Series temperature, pressure, epot;
     Series P[STRESS_PARTS][9];   /* global pressure tensor by part (P = -T) */
@@ -51,6 +53,7 @@ typedef struct {
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
     FieldMeasure field;       /* about points, on grids, torques, mean velocities */
+    Tcaf tcaf;                /* transverse current autocorrelation (tcaf.h) */
     int n;
 } Measure;
 

@@ -301,6 +301,7 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
     }
     m->nsamples_expected = steps / m->every + 1;
     if (field_read(sc, g, s, &m->field)) return -1;
+    m->prod_steps = steps;
     if (!g) return 0;
     config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
@@ -359,6 +360,9 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
         m->msd_type = tn ? type_index(s, tn) : -1;
         if (tn && m->msd_type < 0) return scene_fail(sc, d, "unknown type \"%s\"", tn);
     }
+    config_setting_t *tc = scene_child(sc, g, "tcaf", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (tc && tcaf_configure(sc, tc, s, &m->tcaf, steps, m->nblocks)) return -1;
     return 0;
 }
 
@@ -424,12 +428,21 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (read_overdamped(sc, s, rc)) return -1;
     if (read_confine(sc, s, rc)) return -1;
     if (read_measure(sc, s, m, rc->steps)) return -1;
+    config_setting_t *cg = scene_child(sc, NULL, "colloids", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (cg) {
+        long long counts[DPD_MAX_TYPES];
+        for (int t = 0; t < s->ntypes; t++) counts[t] = ti[t].count;
+        if (rc->overdamped) return scene_fail(sc, cg, "colloids need massive particles (no 'overdamped' group)");
+        if (colloid_configure(sc, cg, s, counts, &rc->colloids)) return -1;
+    }
     if (scene_check_unknown(sc)) return -1;
     if (setup_validate_only) return 0;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;
     s->n_frozen = nfrozen;
     place_particles(s, ti);
+    if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
     return 0;
 }

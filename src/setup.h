@@ -6,6 +6,7 @@
 #include "scene.h"
 #include "system.h"
 #include "measure.h"
+#include "colloid.h"
 
 typedef struct {
     long long steps, equilibration;
@@ -24,6 +25,7 @@ typedef struct {
     /* frozen particles at rest during equilibration, at their velocity from
      * production step 0 (start-up flows, Phan-Thien et al. 2016 Fig. 4) */
     int walls_start_at_production;
+    Colloids *colloids;       /* spring-model colloids (colloid.h), NULL if none */
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */

@@ -274,5 +274,17 @@ T "run-experiment: stale partial result discarded" 0 RX "$rx/tools/run-experimen
 if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: changed experiment reruns everything"
 else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
 
+# known non-reproductions: expect = fail (8th column) -> XFAIL, not a failure; XPASS is one
+mkdir -p "$root/experiments/x/xf" "$root/experiments/x/xp"
+{ tab quantity tier lo hi k_sigma paper source expect; tab q quick 0 inf 0 '>0' 'paper claim' fail; } > "$root/experiments/x/xf/bands.tsv"
+mkres x/xf quick 1 <<< "$(tab q -3.2 1.0)"
+T "check: known non-reproduction (expect fail) is XFAIL, exit 0" 0 "$C" x/xf
+has "check: XFAIL shown" "XFAIL"
+has "check: XFAIL counted apart" "1 known non-reproductions"
+{ tab quantity tier lo hi k_sigma paper source expect; tab q quick 0 inf 0 '>0' 'paper claim' fail; } > "$root/experiments/x/xp/bands.tsv"
+mkres x/xp quick 1 <<< "$(tab q 3.2 1.0)"
+T "check: a known non-reproduction that passes is XPASS, exit 1" 1 "$C" x/xp
+has "check: XPASS shown" "XPASS"
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Fig. 2 of Mai-Duy et al. 2019: eta(k) of the free and of the spring-constrained system at one
+# phi, and the free system's k at which eta_free(k) equals the constrained eta(k -> 0).
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    # 8^3, k = 3 colloids per axis: phi = 162 / (2048 + 162) = 0.0733
+    quick) K=3; tier=(--set 'box=[8.0,8.0,8.0]' --set dt=0.01 --set equilibration=500 --set steps=5000
+                      --set measure.tcaf.every=1 --set measure.tcaf.window=150 --set measure.tcaf.origin_every=10
+                      --set measure.tcaf.n2max=9) ;;
+    paper) K=6; tier=() ;;
+esac
+count=$((6 * K * K * K))
+dpd_run free free.cfg "${tier[@]}" --set "types.[1].count=$count"
+dpd_run constrained constrained.cfg "${tier[@]}" --set "types.[1].count=$count" --set "colloids.per_axis=$K"
+# the same trajectory (same seed), the TCAF of all momentum: particles plus the rigid bodies
+dpd_run constrained_bodies constrained.cfg "${tier[@]}" --set "types.[1].count=$count" --set "colloids.per_axis=$K" \
+        --set measure.tcaf.include_bodies=true
+np=$(get free particles | cut -f1)
+awk -v c="$count" -v n="$np" 'BEGIN { printf "phi\t%.10g\t0\n", c / n }' >> "$OUT/summary.tsv"
+emit_from free tcaf_eta_k0 eta_k0_free
+emit_from constrained tcaf_eta_k0 eta_k0_constrained
+emit_diff eta_k0_free_minus_constrained free tcaf_eta_k0 constrained tcaf_eta_k0
+emit_from constrained_bodies tcaf_eta_k0 eta_k0_constrained_with_bodies
+emit_diff eta_k0_free_minus_constrained_with_bodies free tcaf_eta_k0 constrained_bodies tcaf_eta_k0
+emit_from constrained colloid_spring_extension_rms spring_extension_rms
+emit_from constrained temperature temperature_constrained
+# k_eff: linear interpolation of the free eta(k) between the two shells that bracket the
+# constrained eta(k -> 0); errors of the three values (independent) propagated to first order
+awk -F'\t' -v ec="$(get constrained tcaf_eta_k0)" '
+    BEGIN { split(ec, c, "\t"); e = c[1]; se = c[2] }
+    /^#/ || $1 == "k" { next }
+    $4 != "nan" { n++; k[n] = $1; v[n] = $4; s[n] = $5 }
+    END {
+        for (i = 1; i < n; i++) if ((v[i] - e) * (v[i + 1] - e) <= 0 && v[i] != v[i + 1]) {
+            f = (e - v[i]) / (v[i + 1] - v[i]); ke = k[i] + f * (k[i + 1] - k[i])
+            dk = k[i + 1] - k[i]; den = v[i + 1] - v[i]
+            d_e = dk / den; d_1 = dk * (e - v[i + 1]) / den ^ 2; d_2 = -dk * (e - v[i]) / den ^ 2
+            sk = sqrt((d_e * se) ^ 2 + (d_1 * s[i]) ^ 2 + (d_2 * s[i + 1]) ^ 2)
+            printf "k_eff\t%.10g\t%.4g\n", ke, sk
+            printf "lambda_eff\t%.10g\t%.4g\n", 2 * 3.14159265358979 / ke, 2 * 3.14159265358979 * sk / ke ^ 2
+            found = 1; exit
+        }
+        if (!found) { printf "k_eff\tnan\tnan\nlambda_eff\tnan\tnan\n" }
+    }' "$OUT/runs/free/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done

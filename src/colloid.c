@@ -1,0 +1,183 @@
+/* colloid.c - spring-model colloids (Mai-Duy et al. 2019, eq. 30). See colloid.h. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "colloid.h"
+
+/* v' = R(q) v for a unit quaternion q = (w, x, y, z) */
+static void rotate(const double q[4], const double v[3], double out[3])
+{
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    /* t = 2 (q_vec x v); v' = v + w t + q_vec x t */
+    const double t[3] = {2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])};
+    out[0] = v[0] + w * t[0] + (y * t[2] - z * t[1]);
+    out[1] = v[1] + w * t[1] + (z * t[0] - x * t[2]);
+    out[2] = v[2] + w * t[2] + (x * t[1] - y * t[0]);
+}
+
+int colloid_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
+                      Colloids **out)
+{
+    *out = NULL;
+    if (s->box.dim != 3) return scene_fail(sc, g, "spring-model colloids need dimension = 3");
+    if (s->box.shear_rate != 0.0) return scene_fail(sc, g, "colloids with Lees-Edwards shear are not supported yet");
+    Colloids *c = calloc(1, sizeof *c);
+    if (!c) return scene_fail(sc, g, "out of memory");
+    const char *tn;
+    long long v;
+    if (scene_string(sc, g, "type", &tn, NULL, NULL, 1) < 0) { free(c); return -1; }
+    c->type = -1;
+    for (int t = 0; t < s->ntypes; t++) if (!strcmp(s->types[t].name, tn)) c->type = t;
+    if (c->type < 0) { free(c); return scene_fail(sc, g, "unknown type \"%s\"", tn); }
+    if (s->types[c->type].frozen) { free(c); return scene_fail(sc, g, "type \"%s\" is frozen; colloid particles must move", tn); }
+    if (scene_int(sc, g, "per_axis", &v, 1, 1, 100, 1) < 0) { free(c); return -1; }
+    c->per_axis = (int)v;
+    c->ncol = c->per_axis * c->per_axis * c->per_axis;
+    if (counts[c->type] != (long long)COLLOID_P * c->ncol) {
+        const int r = scene_fail(sc, g, "type \"%s\" has %lld particles; %d colloids of %d need count = %d",
+                                 tn, counts[c->type], c->ncol, COLLOID_P, COLLOID_P * c->ncol);
+        free(c);
+        return r;
+    }
+    if (scene_double(sc, g, "H", &c->H, 0.0, 1e-6, 1e7, 1) < 0) { free(c); return -1; }
+    if (scene_double(sc, g, "site_distance", &c->d, 0.5, 0.0, 10.0, 0) < 0) { free(c); return -1; }
+    const double m = s->types[c->type].mass;
+    if (scene_double(sc, g, "mass", &c->mass, COLLOID_P * m, 1e-9, 1e9, 0) < 0) { free(c); return -1; }
+    /* default: the inertia of p point masses m at the sites, (2/3) p m d^2 */
+    const double idef = c->d > 0 ? 2.0 / 3.0 * COLLOID_P * m * c->d * c->d : 1.0;
+    if (scene_double(sc, g, "inertia", &c->inertia, idef, 1e-9, 1e9, 0) < 0) { free(c); return -1; }
+    const double spacing = s->box.L[0] / c->per_axis;
+    if (2.0 * c->d >= spacing) {
+        const int r = scene_fail(sc, g, "site_distance %g: octahedra of size %g overlap at the lattice spacing %g",
+                                 c->d, 2.0 * c->d, spacing);
+        free(c);
+        return r;
+    }
+    /* octahedron: +-x, +-y, +-z */
+    static const double OCT[COLLOID_P][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < COLLOID_P; k++)
+        for (int d = 0; d < 3; d++) c->body[k][d] = c->d * OCT[k][d];
+    const int nc = c->ncol;
+    c->R = calloc(3 * (size_t)nc, sizeof(double)); c->V = calloc(3 * (size_t)nc, sizeof(double));
+    c->q = calloc(4 * (size_t)nc, sizeof(double)); c->L = calloc(3 * (size_t)nc, sizeof(double));
+    c->F = calloc(3 * (size_t)nc, sizeof(double)); c->T = calloc(3 * (size_t)nc, sizeof(double));
+    c->ids = calloc((size_t)nc * COLLOID_P, sizeof(uint32_t));
+    if (!c->R || !c->V || !c->q || !c->L || !c->F || !c->T || !c->ids) {
+        colloid_free(c);
+        return scene_fail(sc, g, "out of memory");
+    }
+    *out = c;
+    return 0;
+}
+
+void colloid_free(Colloids *c)
+{
+    if (!c) return;
+    free(c->R); free(c->V); free(c->q); free(c->L); free(c->F); free(c->T); free(c->ids); free(c->index);
+    series_free(&c->ext2);
+    free(c);
+}
+
+void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3])
+{
+    double r[3];
+    rotate(c->q + 4 * b, c->body[k], r);
+    for (int d = 0; d < 3; d++) {
+        out[d] = c->R[3 * b + d] + r[d];
+        if (out[d] >= box->L[d]) out[d] -= box->L[d];
+        else if (out[d] < 0.0) out[d] += box->L[d];
+    }
+}
+
+int colloid_place(Colloids *c, System *s)
+{
+    c->index = calloc((size_t)s->n + 1, sizeof(int));
+    c->nparticles = s->n;
+    if (!c->index) return -1;
+    const int k = c->per_axis;
+    for (int b = 0; b < c->ncol; b++) {
+        const int ix = b % k, iy = (b / k) % k, iz = b / (k * k);
+        const int ia[3] = {ix, iy, iz};
+        for (int d = 0; d < 3; d++) c->R[3 * b + d] = (ia[d] + 0.5) * s->box.L[d] / k;
+        c->q[4 * b] = 1.0;
+    }
+    /* the particles of the colloid type, in array order at set-up, fill the sites */
+    int j = 0;
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] != c->type) continue;
+        const int b = j / COLLOID_P, site = j % COLLOID_P;
+        c->ids[j] = s->id[i];
+        colloid_site(c, b, site, &s->box, s->x + 3 * i);
+        j++;
+    }
+    return 0;
+}
+
+void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[3], double dt, const Box *box)
+{
+    double *R = c->R + 3 * b, *V = c->V + 3 * b, *q = c->q + 4 * b, *L = c->L + 3 * b;
+    /* Newton: symplectic Euler for the centre */
+    for (int d = 0; d < 3; d++) {
+        V[d] += dt * F[d] / c->mass;
+        R[d] += dt * V[d];
+        if (box->L[d] > 0) R[d] -= floor(R[d] / box->L[d]) * box->L[d];
+    }
+    /* Euler, isotropic inertia: dL/dt = T, omega = L / I; the orientation turns
+     * by the exact rotation of angle |omega| dt about omega */
+    double w[3], wn = 0.0;
+    for (int d = 0; d < 3; d++) { L[d] += dt * T[d]; w[d] = L[d] / c->inertia; wn += w[d] * w[d]; }
+    wn = sqrt(wn);
+    if (wn * dt > 1e-300) {
+        const double h = 0.5 * wn * dt, sh = sin(h) / wn;
+        const double r[4] = {cos(h), w[0] * sh, w[1] * sh, w[2] * sh};
+        const double p[4] = {q[0], q[1], q[2], q[3]};
+        /* q <- r (x) q */
+        q[0] = r[0] * p[0] - r[1] * p[1] - r[2] * p[2] - r[3] * p[3];
+        q[1] = r[0] * p[1] + r[1] * p[0] + r[2] * p[3] - r[3] * p[2];
+        q[2] = r[0] * p[2] - r[1] * p[3] + r[2] * p[0] + r[3] * p[1];
+        q[3] = r[0] * p[3] + r[1] * p[2] - r[2] * p[1] + r[3] * p[0];
+        const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        for (int a = 0; a < 4; a++) q[a] /= n;
+    }
+}
+
+void colloid_step(Colloids *c, System *s)
+{
+    for (int i = 0; i < s->n; i++) c->index[s->id[i]] = i;
+    double ext2 = 0.0;
+    for (int b = 0; b < c->ncol; b++) {
+        double *F = c->F + 3 * b, *T = c->T + 3 * b;
+        for (int d = 0; d < 3; d++) F[d] = T[d] = 0.0;
+        for (int k = 0; k < COLLOID_P; k++) {
+            const int i = c->index[c->ids[b * COLLOID_P + k]];
+            double site[3], arm[3], dr[3];
+            colloid_site(c, b, k, &s->box, site);
+            rotate(c->q + 4 * b, c->body[k], arm);
+            for (int d = 0; d < 3; d++) dr[d] = s->x[3 * i + d] - site[d];
+            box_min_image(&s->box, dr, NULL);
+            for (int d = 0; d < 3; d++) {
+                const double fs = -c->H * dr[d];    /* eq. 30: F_S = -H (r_i - r_bar_i) */
+                s->f[3 * i + d] += fs;
+                F[d] -= fs;                          /* reaction on the reference body */
+            }
+            /* torque of the reaction about the centre: arm x (H dr) */
+            T[0] += c->H * (arm[1] * dr[2] - arm[2] * dr[1]);
+            T[1] += c->H * (arm[2] * dr[0] - arm[0] * dr[2]);
+            T[2] += c->H * (arm[0] * dr[1] - arm[1] * dr[0]);
+            ext2 += dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2];
+        }
+    }
+    if (c->record && c->nsteps++ % 10 == 0) series_push(&c->ext2, ext2 / (c->ncol * COLLOID_P));
+    /* the sites of the next step, from this step's reactions */
+    for (int b = 0; b < c->ncol; b++) colloid_body_advance(c, b, c->F + 3 * b, c->T + 3 * b, s->dt, &s->box);
+}
+
+void colloid_write(const Colloids *c, const System *s, FILE *summary, int nblocks)
+{
+    double v, se;
+    series_stats(&c->ext2, nblocks, &v, &se);
+    fprintf(summary, "colloids\t%d\t0\n", c->ncol);
+    fprintf(summary, "colloid_spring_extension_rms\t%.10g\t%.4g\n", sqrt(v), v > 0 ? 0.5 * se / sqrt(v) : NAN);
+    /* a particle on a spring to a fixed site: <|r - r_bar|^2> = 3 kBT / H */
+    fprintf(summary, "colloid_spring_extension_rms_equipartition\t%.10g\t0\n", sqrt(3.0 * s->kBT / c->H));
+}

@@ -1,0 +1,55 @@
+/* colloid.h - spring-model colloids (Mai-Duy et al. 2019, section 4.1, eq. 30;
+ * Phan-Thien, Mai-Duy & Khoo 2014): each colloid is p = 6 ordinary DPD
+ * particles of one type, each tied by a spring H to a reference site at a
+ * vertex of an octahedron (distance d from the centre) carried by a rigid
+ * body. The body moves by Newton-Euler (quaternion orientation, isotropic
+ * inertia) under the spring reactions of the previous step. */
+#ifndef DPD_COLLOID_H
+#define DPD_COLLOID_H
+
+#include <stdio.h>
+#include <stdint.h>
+#include "system.h"
+#include "scene.h"
+#include "blockavg.h"
+
+enum { COLLOID_P = 6 };
+
+typedef struct Colloids {
+    int type;                 /* particle type of the constituent particles */
+    int per_axis;             /* k: k^3 colloids on a cubic lattice */
+    int ncol;
+    double H;                 /* spring stiffness, eq. 30 */
+    double d;                 /* distance of the reference sites from the body centre */
+    double mass, inertia;     /* rigid reference body */
+    double body[COLLOID_P][3];   /* site offsets in the body frame */
+    double *R, *V, *q, *L;    /* per body: centre, velocity, unit quaternion (w,x,y,z), angular momentum */
+    double *F, *T;            /* per body: spring reaction force and torque of the step */
+    uint32_t *ids;            /* ncol x p stable particle ids */
+    int *index;               /* stable id -> array index */
+    int nparticles;
+    int record;               /* accumulate statistics */
+    Series ext2;              /* mean |r_i - site_i|^2 per sampled step */
+    long long nsteps;
+} Colloids;
+
+/* colloids = { type = "colloid"; per_axis = 3; H = 400.0; site_distance = 0.5;
+ * mass = 6.0; inertia = 1.0; } with counts[t] the particle count of each type
+ * (the colloid type must have 6 per_axis^3). NULL *out when the group is absent. */
+int  colloid_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
+                       Colloids **out);
+void colloid_free(Colloids *c);
+/* Bodies at the lattice sites (identity orientation, at rest); constituent
+ * particles on their reference sites. */
+int  colloid_place(Colloids *c, System *s);
+/* Reference site k of body b (eq. 30: r_bar). */
+void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3]);
+/* Add the spring forces -H (r_i - r_bar_i) to s->f, collect the reactions on
+ * the bodies, then advance the bodies by one step with them (Newton-Euler). */
+void colloid_step(Colloids *c, System *s);
+/* Advance body b by dt under force F and torque T (public for tests). */
+void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[3], double dt, const Box *box);
+/* Summary rows: spring extension, its equipartition value sqrt(3 kBT / H). */
+void colloid_write(const Colloids *c, const System *s, FILE *summary, int nblocks);
+
+#endif

@@ -1,0 +1,84 @@
+/* tcaf.h - transverse current autocorrelation functions and the wave-number
+ * dependent viscosity eta(k) of generalised hydrodynamics (Mai-Duy et al.
+ * 2019, eqs 22-28).
+ *
+ * Every wave vector k = 2 pi (i/Lx, j/Ly, l/Lz) with 0 < i^2 + j^2 + l^2 <= n2max
+ * (one of each pair +-k: C(-k,t) is the complex conjugate of C(k,t)) is
+ * sampled; J(k,t) = sum_j v_j exp(i k.r_j) (eq. 23) is projected on the plane
+ * normal to k (both transverse polarisations), and
+ *   C_perp(k,t) = (k^2 / N) <J_perp(-k,0) . J_perp(k,t)> / 2        (eq. 26)
+ * is averaged over the vectors of one shell |k| and over time origins.
+ * eta(k) is fitted to C_perp(k,t)/C_perp(k,0) = exp(-eta k^2 t / rho) (eq. 28)
+ * over the lags where the shell's average normalised TCAF is still >= fit_min;
+ * its standard error is the scatter of the same fit over blocks of
+ * consecutive time origins. eta(k -> 0) from a weighted polynomial fit in k^2. */
+#ifndef DPD_TCAF_H
+#define DPD_TCAF_H
+
+#include <stdio.h>
+#include <complex.h>
+#include "system.h"
+#include "scene.h"
+
+typedef struct {
+    int on;
+    int every;                /* sampling interval (steps) */
+    int window;               /* correlation window (steps, multiple of every) */
+    int origin_every;         /* steps between time origins (multiple of every) */
+    int n2max;                /* largest i^2 + j^2 + l^2 */
+    int type;                 /* -1: every mobile particle */
+    double fit_min;           /* fit lags while <C/C0> >= fit_min */
+    double extrap_kmax;       /* shells with |k| <= this enter the k -> 0 fit */
+    int extrap_order;         /* polynomial degree in k^2 of the k -> 0 fit */
+    int nblocks;
+    long long norig_expected; /* complete origins the run will give */
+    /* derived */
+    int nvec, nshell, nlags, nslots, nmax[3];
+    int *vec;                 /* nvec x 3 integers */
+    int *shell_of;            /* nvec */
+    double *kvec;             /* nvec x 3 */
+    double *shell_k;          /* nshell */
+    int *shell_n2, *shell_nvec;
+    int count;                /* particles in the selection */
+    double rho;               /* mass density of the selection */
+    double complex *J;        /* nvec x 3: current of this sample */
+    double complex *origin;   /* nslots x nvec x 3: J_perp at the origin */
+    long long *origin_step, *origin_index;
+    double *curve;            /* nslots x nshell x nlags: running sums per origin */
+    double *acc;              /* nblocks x nshell x nlags */
+    long long *acc_n;         /* nblocks: complete origins */
+    long long nstarted, ndone;
+    /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
+    int include_bodies, nbody;
+    const double *body_R, *body_V;
+    double body_mass;
+} Tcaf;
+
+/* measure.tcaf = { every; window; origin_every; n2max; type; fit_min;
+ * extrapolate_kmax; extrapolate_order; } of the scene group g (validated). */
+int  tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
+                    long long steps, int nblocks);
+/* Add nbody bodies of mass M at R with velocity V (arrays owned by the caller,
+ * read at every sample) to the current: J += sum_b M V_b exp(i k.R_b); rho too. */
+void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M);
+/* Wave vectors and buffers; -1 on bad sizes or memory. */
+int  tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps);
+void tcaf_free(Tcaf *t);
+/* J(k) of the selection for every wave vector into t->J (eq. 23). */
+void tcaf_current(Tcaf *t, const System *s);
+/* J_perp = (1 - k k / k^2) J (both transverse polarisations, eqs 25-26). */
+void tcaf_transverse(const double k[3], const double complex J[3], double complex out[3]);
+/* Sample at production step `step` (call when step % every == 0). */
+void tcaf_sample(Tcaf *t, const System *s, long long step);
+/* eta from C(t)/C(0) = exp(-eta k^2 t / rho) (eq. 28), least squares over the
+ * n points (t_i, c_i) (GSL nonlinear least squares); returns 0 on success. */
+int  tcaf_fit_eta(const double *t, const double *c, int n, double k2, double rho, double *eta);
+/* Weighted least-squares polynomial of degree `order` in k^2 through (k_i,
+ * eta_i) with weights w_i: coefficients c[0..order] (c[0] = eta(k -> 0)). */
+int  tcaf_extrapolate(const double *k, const double *eta, const double *w, int n, int order,
+                      double *coef);
+/* tcaf.tsv (normalised TCAF per shell), tcaf_eta.tsv (eta(k)) and the
+ * summary rows tcaf_eta_k0, tcaf_eta_k2_coefficient, tcaf_eta_drop, ... */
+int  tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir);
+
+#endif

@@ -1,0 +1,179 @@
+/* test_colloid.c - spring-model colloids (Mai-Duy et al. 2019, eq. 30; src/colloid.c).
+ * - A free rigid body keeps its angular momentum exactly and turns by |omega| t
+ *   about omega (Rodrigues), its quaternion stays a unit quaternion (1e-12).
+ * - The spring forces on the particles and the reaction on the body sum to
+ *   zero (momentum conservation; rounding of 6 terms of order H |dr|).
+ * - Stability: one colloid (6 particles, no DPD forces) under velocity Verlet
+ *   keeps a bounded spring energy at the chosen H = 400 for dt = 0.005 and
+ *   0.01; the largest stable dt of a scan is printed and must lie between
+ *   the harmonic bounds 2 / sqrt(H / m) (fixed site) and 2 / sqrt(H / mu)
+ *   (mu the reduced mass with the body), widened by a factor 2 because the
+ *   body lags by one step.
+ * - In a DPD solvent the rms spring extension equals sqrt(3 kBT / H) within
+ *   3 standard errors plus 3 % (the body also fluctuates a little). */
+#include "runutil.h"
+#include "colloid.h"
+
+static Colloids *one_colloid(System *s, double H, double dt)
+{
+    memset(s, 0, sizeof *s);
+    const double L[3] = {10.0, 10.0, 10.0};
+    box_init(&s->box, 3, L, 0.0);
+    assert_int_equal(system_alloc(s, COLLOID_P), 0);
+    s->ntypes = 1;
+    snprintf(s->types[0].name, sizeof s->types[0].name, "c");
+    s->types[0].mass = 1.0;
+    s->dt = dt;
+    s->kBT = 1.0;
+    s->lambda = 0.5;
+    for (int i = 0; i < s->n; i++) s->id[i] = (uint32_t)i;
+    Colloids *c = calloc(1, sizeof *c);
+    assert_non_null(c);
+    c->type = 0; c->per_axis = 1; c->ncol = 1; c->H = H; c->d = 0.5;
+    c->mass = 6.0; c->inertia = 1.0;
+    static const double OCT[COLLOID_P][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int k = 0; k < COLLOID_P; k++)
+        for (int d = 0; d < 3; d++) c->body[k][d] = c->d * OCT[k][d];
+    c->R = calloc(3, sizeof(double)); c->V = calloc(3, sizeof(double)); c->q = calloc(4, sizeof(double));
+    c->L = calloc(3, sizeof(double)); c->F = calloc(3, sizeof(double)); c->T = calloc(3, sizeof(double));
+    c->ids = calloc(COLLOID_P, sizeof(uint32_t));
+    assert_int_equal(colloid_place(c, s), 0);
+    return c;
+}
+
+static void free_body_keeps_angular_momentum(void **state)
+{
+    (void)state;
+    System s;
+    Colloids *c = one_colloid(&s, 400.0, 0.01);
+    const double L0[3] = {0.3, -0.2, 0.5}, zero[3] = {0, 0, 0};
+    memcpy(c->L, L0, sizeof L0);
+    const int n = 1000;
+    const double dt = 0.01;
+    for (int k = 0; k < n; k++) colloid_body_advance(c, 0, zero, zero, dt, &s.box);
+    for (int d = 0; d < 3; d++) CHECK_ABS("angular momentum of a free body", c->L[d], L0[d], 0.0);
+    const double qn = sqrt(c->q[0] * c->q[0] + c->q[1] * c->q[1] + c->q[2] * c->q[2] + c->q[3] * c->q[3]);
+    CHECK_ABS("unit quaternion", qn, 1.0, 1e-12);
+    /* Rodrigues: site 0 (0.5, 0, 0) turned by |omega| n dt about omega */
+    const double wn = sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]) / c->inertia;
+    double e[3], v[3] = {0.5, 0, 0}, want[3], got[3];
+    for (int d = 0; d < 3; d++) e[d] = L0[d] / (c->inertia * wn);
+    const double th = wn * n * dt, ev = e[0] * v[0] + e[1] * v[1] + e[2] * v[2];
+    const double exv[3] = {e[1] * v[2] - e[2] * v[1], e[2] * v[0] - e[0] * v[2], e[0] * v[1] - e[1] * v[0]};
+    for (int d = 0; d < 3; d++) want[d] = c->R[d] + v[d] * cos(th) + exv[d] * sin(th) + e[d] * ev * (1 - cos(th));
+    colloid_site(c, 0, 0, &s.box, got);
+    for (int d = 0; d < 3; d++) CHECK_ABS("site turned by |omega| t about omega", got[d], want[d], 1e-10);
+    colloid_free(c);
+    system_free(&s);
+}
+
+static void spring_reactions_balance(void **state)
+{
+    (void)state;
+    System s;
+    Colloids *c = one_colloid(&s, 400.0, 0.01);
+    uint64_t rng = 3;
+    for (int k = 0; k < 3 * s.n; k++) s.x[k] += 0.1 * (2 * tu_uniform(&rng) - 1);
+    memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+    colloid_step(c, &s);
+    for (int d = 0; d < 3; d++) {
+        double sum = c->F[d];
+        for (int i = 0; i < s.n; i++) sum += s.f[3 * i + d];
+        CHECK_ABS("spring forces + reaction on the body", sum, 0.0, 1e-12 * c->H);
+    }
+    colloid_free(c);
+    system_free(&s);
+}
+
+/* Velocity Verlet of the 6 particles with spring forces only; returns the
+ * largest spring energy over the run divided by the initial one. */
+static double energy_growth(double H, double dt, int steps)
+{
+    System s;
+    Colloids *c = one_colloid(&s, H, dt);
+    uint64_t rng = 5;
+    for (int k = 0; k < 3 * s.n; k++) s.x[k] += 0.05 * (2 * tu_uniform(&rng) - 1);
+    double e0 = 0.0, emax = 0.0;
+    for (int st = 0; st <= steps; st++) {
+        if (st > 0) {
+            for (int k = 0; k < 3 * s.n; k++) { s.v[k] += 0.5 * dt * s.f[k]; s.x[k] += dt * s.v[k]; }
+            for (int i = 0; i < s.n; i++) box_wrap(&s.box, s.x + 3 * i, s.img + 3 * i, NULL, NULL);
+        }
+        memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+        double e = 0.0;
+        for (int b = 0; b < COLLOID_P; b++) {
+            double site[3], dr[3];
+            colloid_site(c, 0, b, &s.box, site);
+            for (int d = 0; d < 3; d++) dr[d] = s.x[3 * b + d] - site[d];
+            box_min_image(&s.box, dr, NULL);
+            e += 0.5 * H * (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
+        }
+        if (st == 0) e0 = e;
+        if (!(e <= emax)) emax = e;
+        if (!isfinite(e) || e > 1e6 * e0) break;
+        colloid_step(c, &s);
+        if (st > 0) for (int k = 0; k < 3 * s.n; k++) s.v[k] += 0.5 * dt * s.f[k];
+    }
+    colloid_free(c);
+    system_free(&s);
+    return emax / e0;
+}
+
+static void stable_at_chosen_step(void **state)
+{
+    (void)state;
+    const double H = 400.0;
+    const double g005 = energy_growth(H, 0.005, 20000), g01 = energy_growth(H, 0.01, 10000);
+    print_message("H = %g: max spring energy / initial = %.3f (dt = 0.005), %.3f (dt = 0.01)\n", H, g005, g01);
+    CHECK_TRUE(g005 < 3.0, "dt = 0.005: spring energy grew by %g", g005);
+    CHECK_TRUE(g01 < 3.0, "dt = 0.01: spring energy grew by %g", g01);
+    double dt_stable = 0.0;
+    for (double dt = 0.01; dt < 0.3; dt *= 1.05) {
+        if (energy_growth(H, dt, 4000) < 10.0) dt_stable = dt;
+        else break;
+    }
+    const double lo = 0.5 * 2.0 / sqrt(H / 1.0), hi = 2.0 * 2.0 / sqrt(H / (6.0 / 7.0));
+    print_message("largest stable dt at H = %g: %.4f (harmonic bounds %.4f .. %.4f, widened x2)\n", H, dt_stable, lo, hi);
+    CHECK_TRUE(dt_stable > lo && dt_stable < hi, "largest stable dt %g outside [%g, %g]", dt_stable, lo, hi);
+}
+
+static const char *SCENE =
+    "dimension = 3;\n"
+    "box = [6.0, 6.0, 6.0];\n"
+    "kBT = 1.0; dt = 0.01; seed = 9;\n"
+    "equilibration = 100; steps = 900;\n"
+    "types = ( { name = \"s\"; density = 4.0; }, { name = \"c\"; count = 6; } );\n"
+    "pairs = ( { types = [\"s\", \"s\"]; a = 3.53; gamma = 6.97; s = 0.42; rc = 1.5; },\n"
+    "          { types = [\"s\", \"c\"]; a = 3.53; gamma = 6.97; s = 0.42; rc = 1.5; },\n"
+    "          { types = [\"c\", \"c\"]; a = 3.53; gamma = 6.97; s = 0.42; rc = 1.5; } );\n"
+    "colloids = { type = \"c\"; per_axis = 1; H = 400.0; site_distance = 0.5; };\n"
+    "measure = { every = 10; blocks = 10; };\n";
+
+static void spring_extension_equipartition(void **state)
+{
+    (void)state;
+    char dir[512], scene[600], out[600];
+    make_tmpdir(dir, sizeof dir, "colloid");
+    snprintf(scene, sizeof scene, "%s/scene.cfg", dir);
+    snprintf(out, sizeof out, "%s/out", dir);
+    write_text(scene, SCENE);
+    const int rc = run_quiet(scene, out, 0);
+    double x = NAN, se = NAN, want = NAN, z;
+    summary_get(out, "colloid_spring_extension_rms", &x, &se);
+    summary_get(out, "colloid_spring_extension_rms_equipartition", &want, &z);
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0, "run_scene returned %d", rc);
+    print_message("rms extension %.5f +- %.5f, sqrt(3 kBT / H) = %.5f\n", x, se, want);
+    CHECK_ABS("rms spring extension vs sqrt(3 kBT / H)", x, want, 0.03 * want + 3 * se);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(free_body_keeps_angular_momentum),
+        cmocka_unit_test(spring_reactions_balance),
+        cmocka_unit_test(stable_at_chosen_step),
+        cmocka_unit_test(spring_extension_equipartition),
+    };
+    return cmocka_run_group_tests_name("colloid", tests, NULL, NULL);
+}
