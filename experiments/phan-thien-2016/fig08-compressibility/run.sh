@@ -37,12 +37,12 @@ for m in 0 1; do
     done
 done
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
-awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; RS[$2, $1] = $4; D[$2, $1] = $5; DS[$2, $1] = $6 }
+awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2, $1] = $4; D[$2, $1] = $5; Dse[$2, $1] = $6 }
     function ratio(q, a, as, b, bs) { g = a / b; e = g * sqrt((as / a)^2 + (bs / b)^2); G[q] = g; E[q] = e
                                       printf "%s\t%.6g\t%.3g\n", q, g, e }
     END { for (m = 0; m <= 1; m++) {
-              ratio("residual_growth_m" m, R[m, "1.0"], RS[m, "1.0"], R[m, "0.1"], RS[m, "0.1"])
-              ratio("divu_growth_m" m, D[m, "1.0"], DS[m, "1.0"], D[m, "0.1"], DS[m, "0.1"]) }
+              ratio("residual_growth_m" m, R[m, "1.0"], Rse[m, "1.0"], R[m, "0.1"], Rse[m, "0.1"])
+              ratio("divu_growth_m" m, D[m, "1.0"], Dse[m, "1.0"], D[m, "0.1"], Dse[m, "0.1"]) }
           ratio("residual_growth_ratio_m1_m0", G["residual_growth_m1"], E["residual_growth_m1"], G["residual_growth_m0"], E["residual_growth_m0"])
           ratio("divu_growth_ratio_m1_m0", G["divu_growth_m1"], E["divu_growth_m1"], G["divu_growth_m0"], E["divu_growth_m0"]) }' \
     "$OUT/fields.tsv" >> "$OUT/summary.tsv"
