@@ -288,13 +288,12 @@ int run_scene(const RunOptions *opt)
         scene_free(&sc);
         return 2;
     }
-    if ((opt->checkpoint_every > 0 || opt->resume) && (m.tcaf.on || rc.colloids)) {
-        /* their state (time origins, rigid bodies) is not in the checkpoint yet */
-        fprintf(stderr, "dpd: %s: checkpoints are not supported yet for scenes with %s; run without "
-                "--checkpoint-every / --resume\n", opt->scene, rc.colloids ? "'colloids'" : "'measure.tcaf'");
-        measure_free(&m); colloid_free(rc.colloids); system_free(&s); scene_free(&sc);
-        return 2;
-    }
+    /* the state of tcaf time origins and rigid colloid bodies is not in the
+     * checkpoint yet: such runs write none (an interrupted one restarts) */
+    const int can_checkpoint = !(m.tcaf.on || rc.colloids);
+    if (!can_checkpoint && opt->checkpoint_every > 0)
+        fprintf(stderr, "dpd: note: %s: no checkpoints for scenes with %s yet; an interrupted run restarts\n",
+                opt->scene, rc.colloids ? "'colloids'" : "'measure.tcaf'");
 #ifdef _OPENMP
     /* the m = 0 solvers are serial: extra threads would only spin between the
      * short parallel loops (doubling the CPU time, and far worse on a busy
@@ -449,7 +448,13 @@ int run_scene(const RunOptions *opt)
         st.timers[T_OUTPUT] += t6 - t5;
         st.steps_done++;
         if (show) progress(k + 1, total, st.wall0, k + 1 == total);
-        if (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total)) {
+        if (stop_signal && !can_checkpoint) {
+            fprintf(stderr, "dpd: stopped by signal %d at step %llu; no checkpoint for this scene, the run is "
+                    "incomplete\n", (int)stop_signal, (unsigned long long)s.step);
+            status = 128 + stop_signal;
+            break;
+        }
+        if (can_checkpoint && (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total))) {
             if (save_checkpoint(opt, scene_hash, &s, &nl, &m, &cx, &st, rc.equilibration)) { status = 4; break; }
             if (stop_signal) {
                 if (show) fputc('\n', stderr);
