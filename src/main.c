@@ -4,6 +4,7 @@
 #include <string.h>
 #include "run.h"
 #include "params.h"
+#include "poiseuille.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -21,6 +22,8 @@ static void usage(FILE *f)
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
+        "  dpd fit-poiseuille PROFILE.tsv --force G [--column vx]\n"
+        "      viscosity from a reverse Poiseuille profile, parabola per half (GSL)\n"
         "  dpd --help | --version\n"
         "\n"
         "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure\n");
@@ -70,6 +73,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) { usage(stdout); return 0; }
     if (!strcmp(argv[1], "--version")) { printf("dpd %s\n", DPD_GIT); return 0; }
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "fit-poiseuille")) return poiseuille_command(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
     int rc = 1;

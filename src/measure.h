@@ -41,6 +41,7 @@ typedef struct {
     int msd_count;            /* particles in the selection */
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
+    Series frozen_torque[DPD_MAX_TYPES][3], rot_temperature;   /* rotation scenes */
     int n;
 } Measure;
 

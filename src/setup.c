@@ -6,6 +6,7 @@
 #include "setup.h"
 #include "random.h"
 #include "overdamped.h"
+#include "rotation.h"
 
 static const char *const AXES[] = {"x", "y", "z", NULL};
 static const char *const AXES_NONE[] = {"none", "x", "y", "z", NULL};
@@ -52,6 +53,11 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         const char *flip;
         if (scene_string(sc, g, "body_force_flip_axis", &flip, "none", AXES_NONE, 0) < 0) return -1;
         pt->body_force_flip_axis = strcmp(flip, "none") == 0 ? -1 : flip[0] - 'x';
+        /* rotation scenes: I = 0.1 m by default, a solid sphere of radius rc / 2 (0.4 m (rc/2)^2) */
+        if (scene_double(sc, g, "inertia", &pt->inertia, 0.1 * pt->mass, 1e-9, 1e9, 0) < 0) return -1;
+        if (scene_vector(sc, g, "spin", pt->spin, 3, NULL, -1e6, 1e6, 0) < 0) return -1;
+        if ((pt->spin[0] != 0.0 || pt->spin[1] != 0.0 || pt->spin[2] != 0.0) && (!pt->frozen || !s->rotation))
+            return scene_fail(sc, g, "spin (a prescribed angular velocity) needs frozen = true and rotation = true");
         if (pt->body_force_flip_axis >= dim)
             return scene_fail(sc, g, "body_force_flip_axis \"%s\" does not exist in %dD", flip, dim);
         for (int d = 0; d < dim; d++) if (pt->body_force[d] != 0.0 && !pt->frozen) s->has_body_force = 1;
@@ -110,6 +116,9 @@ static int read_pairs(Scene *sc, System *s)
         if (scene_double(sc, g, "a", &p.a, 0.0, 0.0, 1e5, 1) < 0) return -1;
         if (scene_double(sc, g, "gamma", &p.gamma, 0.0, 0.0, 1e6, 1) < 0) return -1;
         if (scene_double(sc, g, "s", &p.s, 2.0, 1e-3, 10.0, 0) < 0) return -1;
+        if (scene_double(sc, g, "gamma_shear", &p.gamma_shear, 0.0, 0.0, 1e6, 0) < 0) return -1;
+        if (p.gamma_shear > 0.0 && !s->rotation)
+            return scene_fail(sc, g, "gamma_shear = %g needs rotation = true (Pan et al. 2008 shear dissipation)", p.gamma_shear);
         if (scene_double(sc, g, "rc", &p.rc, 1.0, 1e-3, 1e3, 0) < 0) return -1;
         int active;
         if (scene_bool(sc, g, "interact", &active, 1) < 0) return -1;
@@ -334,6 +343,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_int(sc, NULL, "equilibration", &rc->equilibration, 0, 0, 1000000000000LL, 0) < 0) return -1;
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
+    if (scene_bool(sc, NULL, "rotation", &s->rotation, 0) < 0) return -1;
     TypeInit ti[DPD_MAX_TYPES];
     if (read_types(sc, s, ti)) return -1;
     if (read_pairs(sc, s)) return -1;
@@ -367,5 +377,10 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     s->n_frozen = nfrozen;
     place_particles(s, ti);
     initial_velocities(s);
+    if (s->rotation) {
+        if (rc->overdamped) return scene_fail(sc, NULL, "rotation = true cannot be combined with overdamped");
+        s->rotation = 0;
+        if (rotation_alloc(s)) return scene_fail(sc, NULL, "out of memory for angular velocities");
+    }
     return 0;
 }
