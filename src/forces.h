@@ -20,7 +20,9 @@ typedef struct {
     int bin_axis, nbins;      /* nbins = 0: no binned stress */
     double *Wbin;             /* PAIR_PARTS x nbins x 9 */
     double frozen_force[DPD_MAX_TYPES][3]; /* force of mobile particles on frozen ones, by frozen type */
-    double frozen_torque[DPD_MAX_TYPES][3]; /* torque on frozen ones, by frozen type (rotation scenes) */
+    double frozen_torque[DPD_MAX_TYPES][3]; /* rotation scenes: torque on frozen ones, by frozen type, */
+    double frozen_drag[DPD_MAX_TYPES][3];   /* and force, both without the zero-mean random part; */
+    double frozen_torque_random[DPD_MAX_TYPES][3]; /* the random part of the torque */
 } PairVirial;
 
 typedef struct {

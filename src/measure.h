@@ -42,6 +42,7 @@ typedef struct {
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
     Series frozen_torque[DPD_MAX_TYPES][3], rot_temperature;   /* rotation scenes */
+    Series frozen_drag[DPD_MAX_TYPES][3], frozen_torque_random[DPD_MAX_TYPES][3];
     int n;
 } Measure;
 

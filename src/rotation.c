@@ -32,7 +32,7 @@ int rotation_alloc(System *s)
     return 0;
 }
 
-static inline void cross(const double a[3], const double b[3], double c[3])
+static inline void cross3(const double a[3], const double b[3], double c[3])
 {
     c[0] = a[1] * b[2] - a[2] * b[1];
     c[1] = a[2] * b[0] - a[0] * b[2];
@@ -65,14 +65,14 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
     /* relative velocity at the midpoint: v_ij + (r_ij / 2) x (Omega_i + Omega_j) */
     const double h[3] = {0.5 * d[0], 0.5 * d[1], 0.5 * d[2]};
     double rot[3];
-    cross(h, wsum, rot);
+    cross3(h, wsum, rot);
     /* translational, eq. 13 shear part: -gamma^S f^2 [v_ij - (v_ij . e) e];
      * rotational, eq. 14: -gamma^S f^2 (r_ij / 2) x (Omega_i + Omega_j) (normal to e) */
     const double gs = p->gamma_shear * f2;
     /* random, eq. 15 antisymmetric part: sqrt 2 sigma^S dW^A . e = sigma^S (xi x e) sqrt(dt),
      * xi ~ N(0, 1) per component, shared by i and j so that F_ji = -F_ij */
     double xe[3];
-    cross(xi, e, xe);
+    cross3(xi, e, xe);
     const double frs = p->sigma_shear * f * inv_sqrt_dt;
     for (int a = 0; a < 3; a++) {
         F[1][a] += -gs * (dv[a] - edv * e[a] + rot[a]);
@@ -85,7 +85,7 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
     }
     /* torque, eq. 1: T_i = T_j = -(r_ij / 2) x F_ij (central parts give none) */
     double c[3];
-    cross(h, Fs, c);
+    cross3(h, Fs, c);
     tau[0] = -c[0]; tau[1] = -c[1]; tau[2] = -c[2];
 }
 
@@ -107,10 +107,22 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
     const double wc = 1.0 - r / p->rc;
     pv->epot += 0.5 * p->a * p->rc * wc * wc;
     const int ti = s->type[i], tj = s->type[j];
+    if (!s->types[ti].frozen && !s->types[tj].frozen) return;
+    /* the random force of a step is independent of the configuration it acts
+     * on: its torque and force have zero mean but a variance of order 1 / dt,
+     * so drag and torque are reported without it (and the random torque apart) */
+    double tr[3], Fr[3] = {-0.5 * F[2][0], -0.5 * F[2][1], -0.5 * F[2][2]};
+    cross3(d, Fr, tr);   /* eq. 1 for the random part alone */
     for (int a = 0; a < 3; a++) {
-        const double fa = F[0][a] + F[1][a] + F[2][a];
-        if (s->types[tj].frozen) { pv->frozen_force[tj][a] -= fa; pv->frozen_torque[tj][a] += tau[a]; }
-        if (s->types[ti].frozen) { pv->frozen_force[ti][a] += fa; pv->frozen_torque[ti][a] += tau[a]; }
+        const double fa = F[0][a] + F[1][a] + F[2][a], fn = F[0][a] + F[1][a];
+        if (s->types[tj].frozen) {
+            pv->frozen_force[tj][a] -= fa; pv->frozen_drag[tj][a] -= fn;
+            pv->frozen_torque[tj][a] += tau[a] - tr[a]; pv->frozen_torque_random[tj][a] += tr[a];
+        }
+        if (s->types[ti].frozen) {
+            pv->frozen_force[ti][a] += fa; pv->frozen_drag[ti][a] += fn;
+            pv->frozen_torque[ti][a] += tau[a] - tr[a]; pv->frozen_torque_random[ti][a] += tr[a];
+        }
     }
 }
 
@@ -221,6 +233,8 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
                 for (int d = 0; d < 3; d++) {
                     pv->frozen_force[t][d] += cv->frozen_force[t][d];
                     pv->frozen_torque[t][d] += cv->frozen_torque[t][d];
+                    pv->frozen_drag[t][d] += cv->frozen_drag[t][d];
+                    pv->frozen_torque_random[t][d] += cv->frozen_torque_random[t][d];
                 }
             if (pv->nbins > 0)
                 for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
