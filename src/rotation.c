@@ -39,9 +39,9 @@ static inline void cross3(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-void rotation_pair_force(const PairParams *p, const double d[3], const double dv[3],
-                         const double wsum[3], double theta, const double xi[3],
-                         double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3], const double dv[3],
+                              const double wsum[3], double theta, const double xi[3],
+                              double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
 {
     const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), inv_r = 1.0 / r;
     const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
@@ -89,6 +89,13 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
     tau[0] = -c[0]; tau[1] = -c[1]; tau[2] = -c[2];
 }
 
+void rotation_pair_force(const PairParams *p, const double d[3], const double dv[3],
+                         const double wsum[3], double theta, const double xi[3],
+                         double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+{
+    pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
+}
+
 /* Virial by part (asymmetric, r_a F_b), its Irving-Kirkwood split, pair energy,
  * force and torque on frozen particles. Only on measurement steps. */
 static void accumulate(PairVirial *pv, const System *s, int i, int j, const double d[3], double r,
@@ -132,16 +139,33 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *x = s->x, *v = s->v_pred, *w = s->omega_pred;
+    const double rc2_max = s->rc_max * s->rc_max;
+    enum { BATCH = 256 };
+    int near[BATCH];
+    double dd[BATCH][4];
     for (int i = i0; i < i1; i++) {
         const int ti = s->type[i];
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
-        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
+          const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
+          /* pass 1, branch free: keep the list entries inside the largest cutoff */
+          int m = 0;
+          for (int k = k0; k < k1; k++) {
             const int j = nl->nbr[k];
-            const PairParams *p = &s->pair[ti][s->type[j]];
             double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
             box_min_image(b, d, NULL);
             const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            near[m] = j;
+            dd[m][0] = d[0]; dd[m][1] = d[1]; dd[m][2] = d[2]; dd[m][3] = r2;
+            m += (r2 < rc2_max);
+          }
+          /* pass 2: forces and torques */
+          for (int q = 0; q < m; q++) {
+            const int j = near[q];
+            const PairParams *p = &s->pair[ti][s->type[j]];
+            const double r2 = dd[q][3];
             if (!p->active || r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
+            const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
             double dv[3] = {v[3 * i] - v[3 * j], v[3 * i + 1] - v[3 * j + 1], v[3 * i + 2] - v[3 * j + 2]};
             if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
                 const double dy = x[3 * i + 1] - x[3 * j + 1];
@@ -151,7 +175,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
             const double wsum[3] = {w[3 * i] + w[3 * j], w[3 * i + 1] + w[3 * j + 1], w[3 * i + 2] + w[3 * j + 2]};
             const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
             double xi[3] = {0.0, 0.0, 0.0};
-            if (p->gamma_shear != 0.0) {
+            if (p->gamma_shear != 0.0) {   /* antisymmetric noise: its own stream, same counter */
                 CounterRng c;
                 const uint32_t lo = s->id[i] < s->id[j] ? s->id[i] : s->id[j];
                 const uint32_t hi = s->id[i] < s->id[j] ? s->id[j] : s->id[i];
@@ -159,7 +183,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
             }
             double F[3][3], Ft[3], tau[3];
-            rotation_pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
+            pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
             for (int a = 0; a < 3; a++) {
                 const double fa = Ft[a];
                 fi[a] += fa;
@@ -168,6 +192,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 tq[3 * j + a] += tau[a];
             }
             if (pv) accumulate(pv, s, i, j, d, sqrt(r2), F, tau);
+          }
         }
         for (int a = 0; a < 3; a++) { f[3 * i + a] += fi[a]; tq[3 * i + a] += ti_[a]; }
     }

@@ -108,7 +108,7 @@ static void zero_shear_is_standard_dpd(void **state)
  * the friction tensor D of the dissipative force, F_D = -D . u with u the
  * relative velocity at the midpoint. D is read off the kernel with unit
  * velocities; the covariance is sampled over N draws of the eq. 15 noise
- * (Philox, stream STREAM_PAIR_NOISE_ROT): each entry has a standard error of at
+ * (Philox, streams STREAM_PAIR_NOISE and STREAM_PAIR_NOISE_ROT): each entry has a standard error of at
  * most sqrt(2 / N) times the largest diagonal entry; tolerance 5 of those. */
 static void random_covariance_matches_dissipation(void **state)
 {
@@ -127,7 +127,7 @@ static void random_covariance_matches_dissipation(void **state)
     double C[3][3] = {{0}};
     for (int k = 0; k < N; k++) {
         CounterRng c;
-        rng_counter_start(&c, 77, STREAM_PAIR_NOISE_ROT, (uint64_t)k, 3, 9);
+        rng_counter_start(&c, 77, STREAM_PAIR_NOISE_ROT, (uint64_t)k, 3, 9);   /* as src/rotation.c */
         double xi[3];
         for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
         const double th = rng_pair_normal(77, (uint64_t)k, 3, 9);
