@@ -140,7 +140,7 @@ static void random_covariance_matches_dissipation(void **state)
     const double tol = 5.0 * sqrt(2.0 / N) * 2.0 * kBT * dmax;
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
-            char what[64];
+            char what[96];
             snprintf(what, sizeof what, "<F_R,%d F_R,%d> vs 2 kBT D_%d%d", a, b, a, b);
             CHECK_ABS(what, C[a][b], 2.0 * kBT * D[a][b], tol);
         }

@@ -4,7 +4,7 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 MU=3.6388 R=0.2737     # the paper's mu and R in eq. 21
 case $TIER in
-    quick) tier=(--set equilibration=1500 --set steps=6000); ROWS="1 4" ;;
+    quick) tier=(--set steps=6000); ROWS="1 4" ;;
     paper) tier=(); ROWS="1 2 3 4" ;;
 esac
 row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
