@@ -20,6 +20,7 @@
 #include "output.h"
 #include "timers.h"
 #include "overdamped.h"
+#include "rotation.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -229,6 +230,10 @@ static int check_stable(const System *s, const RunConfig *rc, double *T)
         *T = vmax;
         return isfinite(vmax);
     }
+    if (s->rotation) {   /* spins can blow up first (too small an inertia for the step) */
+        const double Tr = rotation_temperature(s);
+        if (!isfinite(Tr) || Tr > rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0)) { *T = Tr; return 0; }
+    }
     return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
 }
 
@@ -325,7 +330,7 @@ int run_scene(const RunOptions *opt)
             t4 = wall_now();
         }
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
-        if (s.step % 10 == 0 || want) {
+        if (s.step % 10 == 0 || want || s.rotation) {   /* spins can run away within a few steps */
             double T;
             if (!check_stable(&s, &rc, &T)) {
                 if (show) fputc('\n', stderr);
