@@ -4,6 +4,7 @@
 #include <math.h>
 #include "forces.h"
 #include "random.h"
+#include "rotation.h"
 
 #define R_EPSILON 1e-10   /* pairs closer than this have no direction: skipped */
 
@@ -27,6 +28,7 @@ int forces_init(ForceWork *w, int n, int nbins)
 void forces_free(ForceWork *w)
 {
     free(w->buf);
+    free(w->tbuf);
     for (int c = 0; c < FORCE_CHUNKS; c++) free(w->chunk[c].Wbin);
     memset(w, 0, sizeof *w);
 }
@@ -177,7 +179,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     }
 }
 
-static void body_forces(System *s)
+void forces_body(System *s)
 {
     if (!s->has_body_force) return;
     for (int i = 0; i < s->n; i++) {
@@ -194,6 +196,7 @@ static void body_forces(System *s)
 
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
+    if (s->rotation) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
     const int n = s->n;
     const size_t stride = 3 * (size_t)n;
     #pragma omp parallel for schedule(static, 1)
@@ -237,5 +240,5 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
                 for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
         }
     }
-    body_forces(s);
+    forces_body(s);
 }

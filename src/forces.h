@@ -20,10 +20,14 @@ typedef struct {
     int bin_axis, nbins;      /* nbins = 0: no binned stress */
     double *Wbin;             /* PAIR_PARTS x nbins x 9 */
     double frozen_force[DPD_MAX_TYPES][3]; /* force of mobile particles on frozen ones, by frozen type */
+    double frozen_torque[DPD_MAX_TYPES][3]; /* rotation scenes: torque on frozen ones, by frozen type, */
+    double frozen_drag[DPD_MAX_TYPES][3];   /* and force, both without the zero-mean random part; */
+    double frozen_torque_random[DPD_MAX_TYPES][3]; /* the random part of the torque */
 } PairVirial;
 
 typedef struct {
     double *buf;              /* (FORCE_CHUNKS - 1) x 3 n; chunk 0 sums into f */
+    double *tbuf;             /* rotation scenes: (FORCE_CHUNKS - 1) x 3 n torques; chunk 0 sums into torque */
     PairVirial chunk[FORCE_CHUNKS];
     int n, nbins;
 } ForceWork;
@@ -44,5 +48,8 @@ void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double t
  * of j at x_i - d to x_i); used by forces and tests. */
 void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
                    double xi_axis, double d_axis, const double t[9]);
+
+/* Body forces of the types (added after the pair forces). */
+void forces_body(System *s);
 
 #endif

@@ -1,5 +1,6 @@
 /* integrator.c - Groot-Warren velocity Verlet. */
 #include "integrator.h"
+#include "rotation.h"
 
 double integrate_predict(System *s)
 {
@@ -26,6 +27,7 @@ double integrate_predict(System *s)
         }
         box_wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
+    if (s->rotation) rotation_predict(s);
     s->step++;
     s->time += dt;
     return doff;
@@ -41,4 +43,5 @@ void integrate_correct(System *s)
         const double h = 0.5 * dt / t->mass;
         for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
     }
+    if (s->rotation) rotation_correct(s);
 }

@@ -6,6 +6,7 @@
 #include "params.h"
 #include "linefit.h"
 #include "lengthscale.h"
+#include "poiseuille.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -31,6 +32,8 @@ static void usage(FILE *f)
         "  dpd wavelengths [--box 15] [--n 4] [--p 6] [--kmin 3] [--kmax 13]\n"
         "      phi of k^3 colloids of p particles among n L^3 solvent particles and the\n"
         "      cube (eq. 31) and sphere (eq. 32) length scales (Mai-Duy et al. 2019, Table 1)\n"
+        "  dpd fit-poiseuille PROFILE.tsv --force G [--column vx]\n"
+        "      viscosity from a reverse Poiseuille profile, parabola per half (GSL)\n"
         "  dpd --help | --version\n"
         "\n"
         "exit status: 0 success, 1 usage, 2 bad scene, 3 unstable run, 4 I/O failure,\n"
@@ -83,6 +86,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
     if (!strcmp(argv[1], "fit-line")) return cmd_fit_line(argc - 2, argv + 2);
     if (!strcmp(argv[1], "wavelengths")) return cmd_wavelengths(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "fit-poiseuille")) return poiseuille_command(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
     int rc = 1;

@@ -3,6 +3,7 @@
 #include <string.h>
 #include <math.h>
 #include "measure.h"
+#include "rotation.h"
 
 static int block_of(const Measure *m, long long sample)
 {
@@ -60,7 +61,11 @@ void measure_free(Measure *m)
     for (int p = 0; p < STRESS_PARTS; p++)
         for (int k = 0; k < 9; k++) series_free(&m->P[p][k]);
     for (int t = 0; t < DPD_MAX_TYPES; t++)
-        for (int d = 0; d < 3; d++) series_free(&m->frozen_force[t][d]);
+        for (int d = 0; d < 3; d++) {
+            series_free(&m->frozen_force[t][d]); series_free(&m->frozen_torque[t][d]);
+            series_free(&m->frozen_drag[t][d]); series_free(&m->frozen_torque_random[t][d]);
+        }
+    series_free(&m->rot_temperature);
     free(m->prof); free(m->prof_samples); free(m->prof_tsum);
     for (int d = 0; d < 3; d++) { series_free(&m->com_v[d]); series_free(&m->com_r[d]); }
     free(m->rdf_hist); free(m->rdf_samples);
@@ -107,6 +112,16 @@ static void sample_thermo(Measure *m, const System *s, const PairVirial *pv)
     for (int t = 0; t < s->ntypes; t++)
         if (s->types[t].frozen)
             for (int d = 0; d < 3; d++) series_push(&m->frozen_force[t][d], pv->frozen_force[t][d]);
+    if (s->rotation) {
+        series_push(&m->rot_temperature, rotation_temperature(s));
+        for (int t = 0; t < s->ntypes; t++)
+            if (s->types[t].frozen)
+                for (int d = 0; d < 3; d++) {
+                    series_push(&m->frozen_torque[t][d], pv->frozen_torque[t][d]);
+                    series_push(&m->frozen_drag[t][d], pv->frozen_drag[t][d]);
+                    series_push(&m->frozen_torque_random[t][d], pv->frozen_torque_random[t][d]);
+                }
+    }
 }
 
 static void sample_profile(Measure *m, const System *s, const PairVirial *pv, int blk)
@@ -484,6 +499,23 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
             series_stats(&m->frozen_force[t][d], B, &v, &se);
             row(summary, name, v, se);
         }
+        if (s->rotation)
+            for (int d = 0; d < 3; d++) {
+                char name[96];
+                snprintf(name, sizeof name, "torque_on_%s_%c", s->types[t].name, "xyz"[d]);
+                series_stats(&m->frozen_torque[t][d], B, &v, &se);
+                row(summary, name, v, se);
+                snprintf(name, sizeof name, "torque_random_on_%s_%c", s->types[t].name, "xyz"[d]);
+                series_stats(&m->frozen_torque_random[t][d], B, &v, &se);
+                row(summary, name, v, se);
+                snprintf(name, sizeof name, "drag_on_%s_%c", s->types[t].name, "xyz"[d]);
+                series_stats(&m->frozen_drag[t][d], B, &v, &se);
+                row(summary, name, v, se);
+            }
+    }
+    if (s->rotation) {
+        series_stats(&m->rot_temperature, B, &v, &se);
+        row(summary, "rotational_temperature", v, se);
     }
     if (field_write(&m->field, s, summary, dir)) return -1;
     if (m->prof_on && write_profile(m, s, dir)) return -1;

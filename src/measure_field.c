@@ -305,6 +305,8 @@ int field_write(const FieldMeasure *f, const System *s, FILE *summary, const cha
         for (int d = 0; d < 3; d++) {
             const int frozen = s->types[t].frozen;
             /* velocities along the box axes; torques: only z in 2D */
+            /* rotation scenes report the eq. 1 torque under the same name (measure.c) */
+            if (frozen && s->rotation) continue;
             if (frozen ? (s->box.dim == 2 && d < 2) : (d >= s->box.dim || f->mean_v[t][d].n == 0)) continue;
             char name[96];
             double v, se;

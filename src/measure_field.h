@@ -5,7 +5,8 @@
  *    mean velocity of each bin (its divergence measures compressibility);
  *  - the radial conservative force field of a body on a grid (their Fig. 6a);
  *  - always: the mean velocity of each mobile type, and the torque that the
- *    mobile particles exert on each frozen type about its centroid.
+ *    mobile particles exert on each frozen type about its centroid (in
+ *    rotation scenes measure.c reports the eq. 1 torque instead).
  * Errors: block standard errors; the exclusion radius, a threshold crossing,
  * gets a jackknife error over the blocks. */
 #ifndef DPD_MEASURE_FIELD_H

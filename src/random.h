@@ -14,7 +14,8 @@ enum rng_stream {
     STREAM_PAIR_NOISE     = 1,  /* theta_ij of eq. 4 */
     STREAM_INIT_POSITION  = 2,  /* initial placement, counter = (particle id, attempt) */
     STREAM_INIT_VELOCITY  = 3,  /* Maxwell-Boltzmann start, counter = (particle id) */
-    STREAM_PAIR_NOISE_ROT = 4,  /* reserved: antisymmetric noise of Pan 2008 eq. 15 */
+    STREAM_PAIR_NOISE_ROT = 4,  /* antisymmetric noise of Pan 2008 eq. 15, counter = (step, min id, max id) */
+    STREAM_INIT_SPIN      = 5,  /* Maxwell-Boltzmann angular velocities, counter = (particle id) */
     STREAM_TEST           = 99
 };
 

@@ -22,6 +22,7 @@
 #include "overdamped.h"
 #include "checkpoint.h"
 #include <signal.h>
+#include "rotation.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -251,6 +252,10 @@ static int check_stable(const System *s, const RunConfig *rc, double *T)
         *T = vmax;
         return isfinite(vmax);
     }
+    if (s->rotation) {   /* spins can blow up first (too small an inertia for the step) */
+        const double Tr = rotation_temperature(s);
+        if (!isfinite(Tr) || Tr > rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0)) { *T = Tr; return 0; }
+    }
     return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
 }
 
@@ -288,12 +293,12 @@ int run_scene(const RunOptions *opt)
         scene_free(&sc);
         return 2;
     }
-    /* the state of tcaf time origins and rigid colloid bodies is not in the
-     * checkpoint yet: such runs write none (an interrupted one restarts) */
-    const int can_checkpoint = !(m.tcaf.on || rc.colloids);
+    /* the state of tcaf time origins, rigid colloid bodies and particle spins
+     * is not in the checkpoint yet: such runs write none (an interrupted one restarts) */
+    const int can_checkpoint = !(m.tcaf.on || rc.colloids || s.rotation);
     if (!can_checkpoint && opt->checkpoint_every > 0)
         fprintf(stderr, "dpd: note: %s: no checkpoints for scenes with %s yet; an interrupted run restarts\n",
-                opt->scene, rc.colloids ? "'colloids'" : "'measure.tcaf'");
+                opt->scene, rc.colloids ? "'colloids'" : s.rotation ? "'rotation'" : "'measure.tcaf'");
 #ifdef _OPENMP
     /* the m = 0 solvers are serial: extra threads would only spin between the
      * short parallel loops (doubling the CPU time, and far worse on a busy
@@ -422,7 +427,7 @@ int run_scene(const RunOptions *opt)
             t4 = wall_now();
         }
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
-        if (s.step % 10 == 0 || want) {
+        if (s.step % 10 == 0 || want || s.rotation) {   /* spins can run away within a few steps */
             double T;
             if (!check_stable(&s, &rc, &T)) {
                 if (show) fputc('\n', stderr);

@@ -6,6 +6,7 @@
 #include "setup.h"
 #include "random.h"
 #include "overdamped.h"
+#include "rotation.h"
 
 int setup_validate_only = 0;
 
@@ -83,6 +84,11 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         const char *flip;
         if (scene_string(sc, g, "body_force_flip_axis", &flip, "none", AXES_NONE, 0) < 0) return -1;
         pt->body_force_flip_axis = strcmp(flip, "none") == 0 ? -1 : flip[0] - 'x';
+        /* rotation scenes: I = 0.1 m by default, a solid sphere of radius rc / 2 (0.4 m (rc/2)^2) */
+        if (scene_double(sc, g, "inertia", &pt->inertia, 0.1 * pt->mass, 1e-9, 1e9, 0) < 0) return -1;
+        if (scene_vector(sc, g, "spin", pt->spin, 3, NULL, -1e6, 1e6, 0) < 0) return -1;
+        if ((pt->spin[0] != 0.0 || pt->spin[1] != 0.0 || pt->spin[2] != 0.0) && (!pt->frozen || !s->rotation))
+            return scene_fail(sc, g, "spin (a prescribed angular velocity) needs frozen = true and rotation = true");
         if (pt->body_force_flip_axis >= dim)
             return scene_fail(sc, g, "body_force_flip_axis \"%s\" does not exist in %dD", flip, dim);
         for (int d = 0; d < dim; d++) if (pt->body_force[d] != 0.0 && !pt->frozen) s->has_body_force = 1;
@@ -153,6 +159,9 @@ static int read_pairs(Scene *sc, System *s)
         if (scene_double(sc, g, "a", &p.a, 0.0, 0.0, 1e5, 1) < 0) return -1;
         if (scene_double(sc, g, "gamma", &p.gamma, 0.0, 0.0, 1e6, 1) < 0) return -1;
         if (scene_double(sc, g, "s", &p.s, 2.0, 1e-3, 10.0, 0) < 0) return -1;
+        if (scene_double(sc, g, "gamma_shear", &p.gamma_shear, 0.0, 0.0, 1e6, 0) < 0) return -1;
+        if (p.gamma_shear > 0.0 && !s->rotation)
+            return scene_fail(sc, g, "gamma_shear = %g needs rotation = true (Pan et al. 2008 shear dissipation)", p.gamma_shear);
         if (scene_double(sc, g, "rc", &p.rc, 1.0, 1e-3, 1e3, 0) < 0) return -1;
         int active;
         if (scene_bool(sc, g, "interact", &active, 1) < 0) return -1;
@@ -390,6 +399,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
     if (scene_bool(sc, NULL, "walls_start_at_production", &rc->walls_start_at_production, 0) < 0) return -1;
+    if (scene_bool(sc, NULL, "rotation", &s->rotation, 0) < 0) return -1;
     TypeInit ti[DPD_MAX_TYPES];
     memset(ti, 0, sizeof ti);
     const int r = read_types(sc, s, ti) ? -1 : setup_particles(sc, s, m, rc, ti);
@@ -444,5 +454,10 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     place_particles(s, ti);
     if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
+    if (s->rotation) {
+        if (rc->overdamped) return scene_fail(sc, NULL, "rotation = true cannot be combined with overdamped");
+        s->rotation = 0;
+        if (rotation_alloc(s)) return scene_fail(sc, NULL, "out of memory for angular velocities");
+    }
     return 0;
 }

@@ -24,6 +24,8 @@ void system_free(System *s)
 {
     free(s->x); free(s->v); free(s->f); free(s->v_pred);
     free(s->img); free(s->id); free(s->type);
+    free(s->omega); free(s->omega_pred); free(s->torque);
+    s->omega = s->omega_pred = s->torque = NULL;
     s->x = s->v = s->f = s->v_pred = NULL;
     s->img = NULL; s->id = NULL; s->type = NULL;
     s->n = 0;
@@ -44,6 +46,11 @@ void system_permute(System *s, const int *perm, double *scratch)
     permute_vec3(s->v, perm, n, scratch);
     permute_vec3(s->f, perm, n, scratch);
     permute_vec3(s->v_pred, perm, n, scratch);
+    if (s->omega) {
+        permute_vec3(s->omega, perm, n, scratch);
+        permute_vec3(s->omega_pred, perm, n, scratch);
+        permute_vec3(s->torque, perm, n, scratch);
+    }
     int32_t *ti = (int32_t *)scratch;
     #pragma omp parallel for schedule(static)
     for (int k = 0; k < n; k++)
@@ -85,6 +92,7 @@ double system_kinetic_temperature(const System *s)
 void system_set_pair(System *s, int ti, int tj, PairParams p)
 {
     p.sigma = sqrt(2.0 * p.gamma * s->kBT); /* eq. 7: sigma from gamma, never read */
+    p.sigma_shear = sqrt(2.0 * p.gamma_shear * s->kBT); /* Pan 2008 eq. 15: sigma^S from gamma^S */
     p.rc2 = p.rc * p.rc;
     s->pair[ti][tj] = p;
     s->pair[tj][ti] = p;

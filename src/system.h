@@ -19,6 +19,8 @@ typedef struct {
     double wall_velocity[3];
     double body_force[3];     /* per particle */
     int body_force_flip_axis; /* -1: none; else sign flips in the upper half along this axis */
+    double inertia;           /* moment of inertia (rotation scenes only, src/rotation.c) */
+    double spin[3];           /* prescribed angular velocity of frozen particles (rotation scenes) */
 } ParticleType;
 
 typedef struct {
@@ -27,6 +29,8 @@ typedef struct {
     double gamma;             /* dissipation, eq. 3 */
     double sigma;             /* noise amplitude, eq. 7: sqrt(2 gamma kBT), derived */
     double s;                 /* w_D = (1 - r/rc)^s, eq. 6 */
+    double gamma_shear;       /* Pan et al. 2008 gamma^S (rotation scenes; gamma is gamma^C) */
+    double sigma_shear;       /* sqrt(2 gamma^S kBT), derived */
     double rc;
     double rc2;               /* rc^2, derived */
 } PairParams;
@@ -51,6 +55,10 @@ typedef struct {
     uint32_t seed;
     int has_body_force;
     int n_frozen;
+    /* rotational degrees of freedom (Pan et al. 2008), only when the scene asks:
+     * NULL otherwise. Angular velocity, its Groot-Warren prediction, torque: 3 n each */
+    int rotation;
+    double *omega, *omega_pred, *torque;
 } System;
 
 int  system_alloc(System *s, int n);

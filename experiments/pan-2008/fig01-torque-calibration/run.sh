@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Pan et al. 2008, Fig. 1: torque on a fixed colloid spinning at Omega = -0.4
+# against gamma^S_cf (gamma^C_cf = 0) and against gamma^C_cf (gamma^S_cf = 5.5).
+. "$DPD_ROOT/tools/lib/exp.sh"
+MU=3.6388 R=0.2737 OMEGA=-0.4     # the paper's mu and R (eq. 18 as the paper evaluates it)
+case $TIER in
+    quick) tier=(--set equilibration=1000 --set steps=6000)
+           RUNS="0.0:5.5 3.5:5.5" ;;
+    paper) tier=()
+           RUNS="0.0:2.5 0.0:5.5 0.0:8.5 3.5:5.5 7.0:5.5" ;;
+esac
+T18=$(awk -v m=$MU -v r=$R -v w=$OMEGA 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
+emit torque_eq18 "$T18" 0
+printf 'gammaC\tgammaS\ttorque\ttorque_se\n' > "$OUT/torque.tsv"
+k=0
+for run in $RUNS; do
+    gC=${run%%:*} gS=${run##*:}
+    name=gC${gC}_gS${gS}
+    dpd_run $name rotating-sphere.cfg "${tier[@]}" --set "pairs.[1].gamma=$gC" --set "pairs.[1].gamma_shear=$gS" \
+        --set "seed=$((8001 + k))"
+    emit_from $name torque_on_colloid_z "torque_$name"
+    printf '%s\t%s\t%s\n' "$gC" "$gS" "$(get $name torque_on_colloid_z)" >> "$OUT/torque.tsv"
+    k=$((k + 1))
+done
+# torque ratio to eq. 18 at the calibrated gamma^S_cf = 5.5, gamma^C_cf = 0
+get gC0.0_gS5.5 torque_on_colloid_z | awk -F'\t' -v t=$T18 '{printf "torque_ratio_gS5.5\t%.10g\t%.4g\n", $1/t, $2/t}' >> "$OUT/summary.tsv"
+# slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares)
+awk -F'\t' 'NR > 1 && $2 == 5.5 { w = 1/($4*$4); S += w; Sx += w*$1; Sy += w*$3; Sxx += w*$1*$1; Sxy += w*$1*$3; n++ }
+    END { d = S*Sxx - Sx*Sx; printf "torque_slope_gC\t%.10g\t%.4g\n", (S*Sxy - Sx*Sy)/d, sqrt(S/d) }' \
+    "$OUT/torque.tsv" >> "$OUT/summary.tsv"

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Viscosity of the Pan 2008 fluid by reverse Poiseuille flow (Backer et al. 2005),
+# a parabola per half (GSL), at two time steps (the viscosity depends on dt).
+. "$DPD_ROOT/tools/lib/exp.sh"
+G=0.05
+case $TIER in
+    quick) tier=(--set 'box=[6.0,6.0,12.0]' --set measure.profile.bins=24 --set equilibration=3000 --set steps=14000); S01=(--set equilibration=1500 --set steps=7000) ;;
+    paper) tier=(); S01=(--set equilibration=5000 --set steps=15000) ;;
+esac
+# dt = 0.005 (the scene), then dt = 0.01 for the same physical time
+dpd_run rpf fluid-poiseuille.cfg "${tier[@]}" --set "types.[0].body_force=[$G,0.0,0.0]"
+dpd_run rpf_dt0.01 fluid-poiseuille.cfg "${tier[@]}" --set "types.[0].body_force=[$G,0.0,0.0]" \
+    --set dt=0.01 "${S01[@]}" --set seed=2009
+"$DPD" fit-poiseuille "$OUT/runs/rpf/profile.tsv" --force $G > "$OUT/fit.tsv"
+"$DPD" fit-poiseuille "$OUT/runs/rpf_dt0.01/profile.tsv" --force $G > "$OUT/fit_dt0.01.tsv"
+awk -F'\t' 'NR > 1' "$OUT/fit.tsv" >> "$OUT/summary.tsv"
+awk -F'\t' 'NR > 1 { print $1 "_dt0.01\t" $2 "\t" $3 }' "$OUT/fit_dt0.01.tsv" >> "$OUT/summary.tsv"
+emit_from rpf rotational_temperature rotational_temperature
+emit_from rpf_dt0.01 rotational_temperature rotational_temperature_dt0.01
+cp "$OUT/runs/rpf/profile.tsv" "$OUT/profile.tsv"
+cp "$OUT/runs/rpf_dt0.01/profile.tsv" "$OUT/profile_dt0.01.tsv"

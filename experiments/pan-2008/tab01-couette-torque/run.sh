@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Pan et al. 2008, Table 1: torque on a fixed colloid spinning at Omega about y
+# in Couette flow between walls moving at -v and +v (curl/2 = v / H, H = 8).
+. "$DPD_ROOT/tools/lib/exp.sh"
+MU=3.6388 R=0.2737     # the paper's mu and R in eq. 21
+case $TIER in
+    quick) tier=(--set steps=6000); ROWS="1 4" ;;
+    paper) tier=(); ROWS="1 2 3 4" ;;
+esac
+row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
+row_curl()  { case $1 in 1|3) echo 0.2;; 2|4) echo 0.4;; esac; }
+paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) echo 1.0659;; esac; }
+printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\n' > "$OUT/table1.tsv"
+for r in $ROWS; do
+    W=$(row_omega $r) C=$(row_curl $r)
+    V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
+    dpd_run row$r couette-sphere.cfg "${tier[@]}" --set "types.[1].velocity=[-$V,0.0,0.0]" \
+        --set "types.[2].velocity=[$V,0.0,0.0]" --set "types.[3].spin=[0.0,$W,0.0]" --set "seed=$((9000 + r))"
+    # undisturbed vorticity: slope of the plane-averaged v_x(z) over the central 4 rc (weighted fit)
+    slope=$(awk -F'\t' 'NR > 2 && $1 > 3.0 && $1 < 7.0 && $5 > 0 { w = 1/($5*$5); S += w; Sx += w*$1; Sy += w*$4; Sxx += w*$1*$1; Sxy += w*$1*$4 }
+        END { d = S*Sxx - Sx*Sx; printf "%.10g\t%.4g", (S*Sxy - Sx*Sy)/d, sqrt(S/d) }' "$OUT/runs/row$r/profile.tsv")
+    c2=$(echo "$slope" | awk -F'\t' '{printf "%.10g\t%.4g", $1/2, $2/2}')
+    emit "curl2_row$r" $c2
+    T=$(get row$r torque_on_colloid_y)
+    emit "torque_row$r" $T
+    the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
+    emit "theory_row$r" "$the" 0
+    echo "$T" | awk -F'\t' -v t=$the -v r=$r '{printf "torque_ratio_row%s\t%.10g\t%.4g\n", r, $1/t, $2/t}' >> "$OUT/summary.tsv"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" >> "$OUT/table1.tsv"
+    cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
+done
