@@ -237,6 +237,10 @@ static int write_around(const FieldMeasure *f, const System *s, FILE *summary, c
         for (int k = 0; k < used; k++) var += (a[k] - abar) * (a[k] - abar);
         var *= (used - 1.0) / used;
     }
+    /* the radius is a bin edge: add the quantisation error of a uniform bin,
+     * dq / sqrt(12), to the jackknife variance (which is zero when every
+     * leave-one-out estimate lands on the same edge) */
+    var += f->around_dq * f->around_dq / 12.0;
     fprintf(summary, "exclusion_radius\t%.10g\t%.4g\n", a_all, used > 1 ? sqrt(var) : NAN);
     free(all); free(loo); free(g); free(a);
     return fclose(out);
