@@ -19,17 +19,19 @@ steps_for() { case $1 in 10) echo 3000;; 20) echo 1000;; *) echo 100;; esac; }
 # T = 1.3 and rebuilt their neighbour list 30 % more often)
 eq_for() { case $1 in 10) echo 500;; *) echo 300;; esac; }
 
-ours() {  # L threads -> "rate bytes_per_particle production_temperature"
-    local L=$1 T=$2 best=0 mem=0 temp=0 r
+ours() {  # L threads -> "rate bytes_per_particle production_temperature cpu_rate"
+    local L=$1 T=$2 best=0 mem=0 temp=0 cbest=0 r c
     for k in $(seq "$REPEAT"); do
         "$DPD" run bench/standard.cfg --out "$out/dpd-$L-$T" --threads "$T" --quiet \
             --set "box=[$L,$L,$L]" --set steps=$(steps_for "$L") --set equilibration=$(eq_for "$L") >/dev/null
         r=$(awk -F'\t' '$1=="production_particle_steps_per_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         mem=$(awk -F'\t' '$1=="peak_memory_bytes_per_particle"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         temp=$(awk -F'\t' '$1=="temperature"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        c=$(awk -F'\t' '$1=="production_particle_steps_per_cpu_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        cbest=$(awk -v a="$cbest" -v b="$c" 'BEGIN{print (b > a) ? b : a}')
         best=$(awk -v a="$best" -v b="$r" 'BEGIN{print (b > a) ? b : a}')
     done
-    echo "$best $mem $temp"
+    echo "$best $mem $temp $cbest"
 }
 peer() {  # L threads -> rate
     local L=$1 T=$2 best=0 r
@@ -41,17 +43,17 @@ peer() {  # L threads -> rate
 }
 
 if [ "${PEER:-0}" = 1 ]; then bash bench/peer/build-lammps.sh >/dev/null; fi
-printf '%-10s %-8s %14s %14s %12s %10s %8s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle" "T"
-declare -A rate
+printf '%-10s %-8s %14s %14s %12s %10s %8s %16s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle" "T" "dpd [ps/cpu-s]"
+declare -A rate crate
 for L in $SIZES; do
     n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
     for T in 1 2; do
-        read -r r mem temp < <(ours "$L" "$T")
-        rate[$L,$T]=$r
+        read -r r mem temp c < <(ours "$L" "$T")
+        rate[$L,$T]=$r; crate[$L,$T]=$c
         if [ "${PEER:-0}" = 1 ]; then
             p=$(peer "$L" "$T"); ratio=$(awk -v a="$r" -v b="$p" 'BEGIN{printf "%.2f", a/b}')
         else p="-"; ratio="-"; fi
-        printf '%-10s %-8s %14.4g %14s %12s %10.0f %8.3f\n' "$n" "$T" "$r" "$p" "$ratio" "$mem" "$temp"
+        printf '%-10s %-8s %14.4g %14s %12s %10.0f %8.3f %16.4g\n' "$n" "$T" "$r" "$p" "$ratio" "$mem" "$temp" "$c"
     done
 done
 echo
@@ -61,4 +63,6 @@ for L in $SIZES; do
 done
 first=$(echo $SIZES | awk '{print $1}'); last=$(echo $SIZES | awk '{print $NF}')
 awk -v a="${rate[$first,1]}" -v b="${rate[$last,1]}" \
-    'BEGIN{printf "time per particle-step, largest / smallest system (1 thread): %.2f\n", a/b}'
+    'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, wall): %.2f\n", a/b}'
+awk -v a="${crate[$first,1]}" -v b="${crate[$last,1]}" \
+    'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, process CPU time): %.2f\n", a/b}'

@@ -70,6 +70,7 @@ static void progress(long long done, long long total, double t0, int force)
 typedef struct {
     double wall0, cpu0, timers[T_COUNT];
     double prod_wall0;        /* wall clock when production started */
+    double prod_cpu0;         /* process CPU time then (< 0: unknown, a resumed run) */
     long long steps_done;
     int threads;
     long builds;
@@ -384,13 +385,14 @@ int run_scene(const RunOptions *opt)
         if (rc.colloids) colloid_step(rc.colloids, &s);   /* particles start on their sites */
     }
     if (!resumed) st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
+    st.prod_cpu0 = resumed ? -1.0 : cpu_now();
     struct sigaction sa = {.sa_handler = on_stop_signal}, old_int, old_term;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
     stop_signal = 0;
     for (long long k = (long long)s.step; k < total && status == 0; k++) {
-        if (k == rc.equilibration) st.prod_wall0 = wall_now();
+        if (k == rc.equilibration) { st.prod_wall0 = wall_now(); if (st.prod_cpu0 >= 0) st.prod_cpu0 = cpu_now(); }
         if (walls_later && k == rc.equilibration) set_walls_moving(&s, (const double (*)[3])vwall, 1);
         double t0 = wall_now(), t1, t2, t3, t4;
         long long prod;
@@ -489,6 +491,11 @@ int run_scene(const RunOptions *opt)
         const double pwall = wall_now() - st.prod_wall0;
         fprintf(f, "production_particle_steps_per_second\t%.6g\t0\n",
                 rc.steps > 0 ? (double)s.n * rc.steps / (pwall > 0 ? pwall : 1e-9) : 0.0);
+        /* the same per CPU second of the process: for one thread, far less
+         * sensitive than wall time to other jobs on a shared machine */
+        const double pcpu = cpu_now() - st.prod_cpu0;
+        if (st.prod_cpu0 >= 0 && rc.steps > 0 && pcpu > 0)
+            fprintf(f, "production_particle_steps_per_cpu_second\t%.6g\t0\n", (double)s.n * rc.steps / pcpu);
         struct rusage ru;
         getrusage(RUSAGE_SELF, &ru);
         fprintf(f, "peak_memory_bytes_per_particle\t%.6g\t0\n", ru.ru_maxrss * 1024.0 / s.n);
