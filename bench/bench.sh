@@ -27,7 +27,7 @@ ours() {  # L threads -> "rate bytes_per_particle production_temperature cpu_rat
         r=$(awk -F'\t' '$1=="production_particle_steps_per_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         mem=$(awk -F'\t' '$1=="peak_memory_bytes_per_particle"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         temp=$(awk -F'\t' '$1=="temperature"{print $2}' "$out/dpd-$L-$T/summary.tsv")
-        c=$(awk -F'\t' '$1=="production_particle_steps_per_cpu_second"{print $2}' "$out/dpd-$L-$T/summary.tsv")
+        c=$(awk -F'\t' '$1=="production_particle_steps_per_second_cpu"{print $2}' "$out/dpd-$L-$T/summary.tsv")
         cbest=$(awk -v a="$cbest" -v b="$c" 'BEGIN{print (b > a) ? b : a}')
         best=$(awk -v a="$best" -v b="$r" 'BEGIN{print (b > a) ? b : a}')
     done

@@ -495,7 +495,7 @@ int run_scene(const RunOptions *opt)
          * sensitive than wall time to other jobs on a shared machine */
         const double pcpu = cpu_now() - st.prod_cpu0;
         if (st.prod_cpu0 >= 0 && rc.steps > 0 && pcpu > 0)
-            fprintf(f, "production_particle_steps_per_cpu_second\t%.6g\t0\n", (double)s.n * rc.steps / pcpu);
+            fprintf(f, "production_particle_steps_per_second_cpu\t%.6g\t0\n", (double)s.n * rc.steps / pcpu);
         struct rusage ru;
         getrusage(RUSAGE_SELF, &ru);
         fprintf(f, "peak_memory_bytes_per_particle\t%.6g\t0\n", ru.ru_maxrss * 1024.0 / s.n);
