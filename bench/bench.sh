@@ -66,3 +66,22 @@ awk -v a="${rate[$first,1]}" -v b="${rate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, wall): %.2f\n", a/b}'
 awk -v a="${crate[$first,1]}" -v b="${crate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, process CPU time): %.2f\n", a/b}'
+
+# ---- overdamped solvers (issue 3): the Fig. 2 system of Phan-Thien et al. 2016 at the paper
+# tier, every solver side by side in one run, compared at equal true relative error (1e-6);
+# the experiment phan-thien-2016/fig02-equal-error run into build/bench (the committed results
+# are not touched). SOLVERS=0 skips it.
+if [ "${SOLVERS:-1}" = 1 ]; then
+    exp=experiments/phan-thien-2016/fig02-equal-error
+    sout="$root/$out/solvers"; rm -rf "$sout"; mkdir -p "$sout"
+    ( cd "$exp" && DPD="$root/$DPD" TIER=paper OUT="$sout" EXP="$root/$exp" DPD_ROOT="$root" \
+        OMP_NUM_THREADS=1 ./run.sh paper "$sout" ) > "$out/solvers.log" 2>&1 \
+        || { echo "bench: overdamped solvers failed (see $out/solvers.log)"; exit 1; }
+    echo
+    echo "overdamped solvers, Fig. 2 system, per step (mean +- stderr):"
+    column -t -s $'\t' "$sout/ladder.tsv"
+    echo
+    awk -F'\t' '$1 ~ /^(iteration_ratio_scheme2_best|time_ratio_scheme1_best|cpu_ratio_scheme1_scheme2_at_Estar)$/ {
+        printf "%-36s %8.3f +- %.3f\n", $1, $2, $3 }' "$sout/summary.tsv"
+    echo "targets (issue 3): iteration_ratio_scheme2_best >= 10, time_ratio_scheme1_best >= 15"
+fi
