@@ -32,7 +32,7 @@ int bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const
     b->type = type_named(s, tn);
     if (b->type < 0) { scene_fail(sc, g, "unknown type \"%s\"", tn); goto fail; }
     if (s->types[b->type].frozen) { scene_fail(sc, g, "type \"%s\" is frozen; colloid particles must move", tn); goto fail; }
-    if (scene_int(sc, g, "count", &v, 1, 1, 100000, 1) < 0) goto fail;
+    if (scene_int(sc, g, "count", &v, 1, 0, 100000, 1) < 0) goto fail;   /* 0: the solvent alone */
     b->ncol = (int)v;
     if (counts[b->type] != (long long)BOND_P * b->ncol) {
         scene_fail(sc, g, "type \"%s\" has %lld particles; %d colloids of %d need count = %d",
@@ -42,7 +42,7 @@ int bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const
     if (scene_double(sc, g, "side", &b->side, 0.25, 1e-3, 0.5 * s->rc_max, 0) < 0) goto fail;
     if (scene_double(sc, g, "H", &b->H, 1000.0, 0.0, 1e7, 0) < 0) goto fail;
     /* colloids on a grid of cells of side L / m: their triangles must fit */
-    const int m = (int)ceil(sqrt((double)b->ncol));
+    const int m = b->ncol > 0 ? (int)ceil(sqrt((double)b->ncol)) : 1;
     const double cell = fmin(s->box.L[0], s->box.L[1]) / m;
     if (b->side >= cell) {
         scene_fail(sc, g, "side %g: %d colloids on a %d x %d grid of cells %g wide would overlap",
@@ -81,6 +81,7 @@ int bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const
         if (scene_int(sc, rd, "bins", &v, 60, 1, 100000, 0) < 0) goto fail;
         b->rdf_bins = (int)v;
     }
+    if (b->ncol == 0) { bonds_free(b); return 0; }   /* every key read: nothing to build */
     const size_t nc = (size_t)b->ncol;
     b->ids = calloc(nc * BOND_P, sizeof(uint32_t));
     if (b->around_on) {
