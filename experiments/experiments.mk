@@ -46,3 +46,5 @@ paper:
 results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv
 # fig08 runs the m = 0 scene of fig06
 results/phan-thien-2016/fig08-compressibility/$(TIER)/summary.tsv: experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
+# fig13 takes the colloid radius and D measured by fig10-11 at the same tier
+results/phan-thien-2016/fig13-shear-thinning/$(TIER)/summary.tsv: results/phan-thien-2016/fig10-11-colloid-structure/$(TIER)/summary.tsv

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include "checkpoint.h"
+#include "bonds.h"
 
 static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
 #define CHECKPOINT_VERSION 1u
@@ -164,6 +165,21 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     io_bytes(io, &x->steps_done, sizeof x->steps_done, "steps done");
     for (int k = 0; k < x->nsolver; k++) io_series(io, x->solver[k], "solver statistics");
     io_bytes(io, x->unconverged, sizeof *x->unconverged, "solver unconverged");
+    if (x->bonds) {   /* 2D spring colloids: centre trajectory and histograms */
+        Bonds *b = x->bonds;
+        io_series(io, &b->traj, "colloid centres");
+        io_series(io, &b->ext2, "colloid spring extension");
+        io_series(io, &b->spring_wyx, "colloid spring stress");
+        io_bytes(io, &b->ext_max, sizeof b->ext_max, "colloid largest extension");
+        if (b->around_on) {
+            io_array(io, b->around_hist, (size_t)b->nblocks * b->around_bins, sizeof(double), "colloid around");
+            io_array(io, b->around_samples, (size_t)b->nblocks, sizeof(long long), "colloid around samples");
+        }
+        if (b->rdf_on) {
+            io_array(io, b->rdf_hist, (size_t)b->nblocks * b->rdf_bins, sizeof(double), "colloid rdf");
+            io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
+        }
+    }
 }
 
 static void header(Io *io, uint64_t *hash, uint32_t *version, uint32_t *n, char magic[8])

@@ -29,6 +29,7 @@ typedef struct {
     Series *solver[4];        /* the m = 0 solver series (nsolver of them) */
     int nsolver;
     long long *unconverged;
+    struct Bonds *bonds;      /* 2D spring colloids' records (bonds.h), NULL if none */
 } CheckpointExtra;
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h);   /* FNV-1a; h = 0 to start */

@@ -25,9 +25,11 @@ int cmd_fit_line(int argc, char **argv)
 {
     const char *file = NULL, *xn = NULL, *yn = NULL, *sn = NULL;
     double lo = -INFINITY, hi = INFINITY;
+    int origin = 0;           /* --origin: y = c1 x through (0, 0) (gsl_fit_wmul) */
     for (int k = 0; k < argc; k++) {
         const char *o = argv[k];
         if (o[0] != '-') { file = o; continue; }
+        if (!strcmp(o, "--origin")) { origin = 1; continue; }
         if (k + 1 >= argc) { fprintf(stderr, "dpd fit-line: %s needs a value\n", o); return 1; }
         const char *v = argv[++k];
         if (!strcmp(o, "--x")) xn = v;
@@ -78,6 +80,17 @@ int cmd_fit_line(int argc, char **argv)
         x[n] = xv; y[n] = yv; w[n] = 1.0 / (se * se); n++;
     }
     fclose(f);
+    if (status == 0 && origin && n >= 2) {
+        double c1, cov11, chisq;
+        gsl_fit_wmul(x, 1, w, 1, y, 1, (size_t)n, &c1, &cov11, &chisq);
+        const double chi2dof = chisq / (n - 1), scale = chi2dof > 1.0 ? chi2dof : 1.0;
+        printf("quantity\tvalue\tstderr\n");
+        printf("slope\t%.10g\t%.4g\n", c1, sqrt(scale * cov11));
+        printf("chi2_dof\t%.10g\t0\n", chi2dof);
+        printf("points\t%d\t0\n", n);
+        free(x); free(y); free(w);
+        return 0;
+    }
     if (status == 0 && n < 3) {
         fprintf(stderr, "dpd fit-line: %s: %d usable rows in [%g, %g]; need at least 3\n", file, n, lo, hi);
         status = 1;

@@ -27,7 +27,7 @@ static void usage(FILE *f)
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
-        "  dpd fit-line TABLE --x COL --y COL --se COL [--range LO:HI]\n"
+        "  dpd fit-line TABLE --x COL --y COL --se COL [--range LO:HI] [--origin]\n"
         "      weighted straight-line fit (GSL) of a result table, e.g. a velocity profile\n"
         "  dpd wavelengths [--box 15] [--n 4] [--p 6] [--kmin 3] [--kmax 13]\n"
         "      phi of k^3 colloids of p particles among n L^3 solvent particles and the\n"

@@ -553,6 +553,20 @@ static int coarse_build(OdSystem *od)
     return bad ? -1 : 0;
 }
 
+/* Without frozen contact A is singular (a uniform translation costs nothing)
+ * and the block-Jacobi preconditioner does not keep the iterates out of that
+ * null space: the mean velocity then drifts from step to step. Projecting
+ * the warm start and every preconditioned residual onto zero mean picks the
+ * solution whose centre of mass is at rest (the constraint of Scheme 2,
+ * eqs 41-44, which is exact when there are no frozen particles). */
+static void remove_mean(const OdSystem *od, double *v)
+{
+    double mean[3] = {0.0, 0.0, 0.0};
+    for (int r = 0; r < od->nm; r++) for (int a = 0; a < 3; a++) mean[a] += v[3 * (size_t)r + a];
+    for (int a = 0; a < 3; a++) mean[a] /= od->nm;
+    for (int r = 0; r < od->nm; r++) for (int a = 0; a < 3; a++) v[3 * (size_t)r + a] -= mean[a];
+}
+
 /* z = M^{-1} r: block Jacobi (eq. 22), plus P (P^T A P)^{-1} P^T r when two-level. */
 static void precondition(const OdSystem *od, const double *r, double *z, int twolevel, double *rc)
 {
@@ -585,12 +599,15 @@ static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_it
         if (od->coarse_ok == 1) rc = malloc((size_t)od->ncoarse * sizeof(double) + 1);
         twolevel = rc != NULL;           /* no coarse operator: plain block Jacobi */
     }
+    const int singular = !(od->wall[0] + od->wall[4] + od->wall[8] > 0.0);
+    if (singular) remove_mean(od, x);
     od_matvec(od, x, q);
     res.matvecs++;
     for (int k = 0; k < n3; k++) r[k] = od->f[k] - q[k];
     res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
     if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; free(rc); return res; }
     precondition(od, r, z, twolevel, rc);
+    if (singular) remove_mean(od, z);
     memcpy(p, z, (size_t)n3 * sizeof(double));
     double rz = cblas_ddot(n3, r, 1, z, 1);
     while (res.iterations < max_iter) {
@@ -608,6 +625,7 @@ static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_it
         if ((stop == OD_STOP_CHANGE && stop_change(dnorm, vnorm, tol))
             || (stop == OD_STOP_RESIDUAL && res.rel_residual < tol)) { res.converged = 1; break; }
         precondition(od, r, z, twolevel, rc);
+        if (singular) remove_mean(od, z);
         const double rz_new = cblas_ddot(n3, r, 1, z, 1);
         const double beta = rz_new / rz;
         rz = rz_new;

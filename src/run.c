@@ -167,6 +167,7 @@ static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunC
     const int record = (long long)s->step >= rc->equilibration;   /* production steps only */
     const double t0 = wall_now(), c0 = cpu_now();
     if (od_assemble(od, s, nl)) return -2;
+    if (rc->bonds) bonds_rhs(rc->bonds, s, od);                    /* eqs 50-51 into eq. 18 */
     OdResult r = od_solve(od, s, (OdSolver)rc->od_solver, (OdStop)rc->od_stop, rc->od_tol, rc->od_max_iter);
     if (record) {
         series_push(&ss->iterations, r.iterations);
@@ -291,6 +292,7 @@ int run_scene(const RunOptions *opt)
     if (scene_load(&sc, opt->scene, opt->overrides, opt->noverrides) || setup_from_scene(&sc, &s, &m, &rc)) {
         fprintf(stderr, "dpd: %s\n", sc.error);
         colloid_free(rc.colloids);
+        bonds_free(rc.bonds);
         scene_free(&sc);
         return 2;
     }
@@ -354,7 +356,7 @@ int run_scene(const RunOptions *opt)
     free(scene_txt);
     CheckpointExtra cx = {.timers = st.timers, .ntimers = T_COUNT, .nsolver = 4,
                           .solver = {&ss.iterations, &ss.residual, &ss.seconds, &ss.true_error},
-                          .unconverged = &ss.unconverged};
+                          .unconverged = &ss.unconverged, .bonds = rc.bonds};
     int resumed = 0;
     if (opt->resume) {
         char err[1400];
@@ -382,6 +384,7 @@ int run_scene(const RunOptions *opt)
         if (r) { status = r == -2 ? 4 : 3; }
     } else {
         forces_compute(&s, &nl, &fw, NULL);
+        if (rc.bonds) bonds_forces(rc.bonds, &s, NULL);
         if (rc.colloids) colloid_step(rc.colloids, &s);   /* particles start on their sites */
     }
     if (!resumed) st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
@@ -402,7 +405,9 @@ int run_scene(const RunOptions *opt)
             prod = (long long)s.step - rc.equilibration;
             want = prod >= 0 && measure_wants_virial(&m, prod);
             if (want) forces_compute(&s, &nl, &fw, &pv);   /* virial of the solved state */
+            if (want && rc.bonds) bonds_forces(rc.bonds, &s, &pv);   /* spring virial */
             if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
+            if (prod >= 0 && rc.bonds) bonds_sample(rc.bonds, &s, prod);
             overdamped_move(&s);
             confine(&s, &rc);
             t1 = wall_now();
@@ -423,6 +428,7 @@ int run_scene(const RunOptions *opt)
             prod = (long long)s.step - rc.equilibration;
             want = prod >= 0 && measure_wants_virial(&m, prod);
             forces_compute(&s, &nl, &fw, want ? &pv : NULL);
+            if (rc.bonds) { bonds_forces(rc.bonds, &s, want ? &pv : NULL); bonds_sample(rc.bonds, &s, prod); }
             if (rc.colloids) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s); }   /* eq. 30 */
             t3 = wall_now();
             integrate_correct(&s);
@@ -482,6 +488,7 @@ int run_scene(const RunOptions *opt)
         fprintf(f, "quantity\tvalue\tstderr\n");
         if (measure_write(&m, &s, f, opt->outdir)) status = 4;
         if (rc.colloids) colloid_write(rc.colloids, &s, f, m.nblocks);
+        if (rc.bonds && bonds_write(rc.bonds, &s, f, opt->outdir)) status = 4;
         const double wall = wall_now() - st.wall0;
         fprintf(f, "particles\t%d\t0\n", s.n);
         fprintf(f, "steps\t%lld\t0\n", total);
@@ -566,6 +573,7 @@ int run_scene(const RunOptions *opt)
     series_free(&ss.true_error); series_free(&ss.cpu_seconds); free(ss.sol); free(ss.ref);
     measure_free(&m);
     colloid_free(rc.colloids);
+    bonds_free(rc.bonds);
     forces_free(&fw);
     neighbor_free(&nl);
     system_free(&s);

@@ -446,6 +446,13 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
         if (rc->overdamped) return scene_fail(sc, cg, "colloids need massive particles (no 'overdamped' group)");
         if (colloid_configure(sc, cg, s, counts, &rc->colloids)) return -1;
     }
+    config_setting_t *bg = scene_child(sc, NULL, "colloids2d", CONFIG_TYPE_GROUP);
+    if (sc->failed) return -1;
+    if (bg) {
+        long long counts[DPD_MAX_TYPES];
+        for (int t = 0; t < s->ntypes; t++) counts[t] = ti[t].count;
+        if (bonds_configure(sc, bg, s, counts, rc->steps, m->nblocks, &rc->bonds)) return -1;
+    }
     if (scene_check_unknown(sc)) return -1;
     if (setup_validate_only) return 0;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
@@ -453,6 +460,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     s->n_frozen = nfrozen;
     place_particles(s, ti);
     if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
+    if (rc->bonds && bonds_place(rc->bonds, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
     if (s->rotation) {
         if (rc->overdamped) return scene_fail(sc, NULL, "rotation = true cannot be combined with overdamped");

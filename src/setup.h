@@ -7,6 +7,7 @@
 #include "system.h"
 #include "measure.h"
 #include "colloid.h"
+#include "bonds.h"
 
 typedef struct {
     long long steps, equilibration;
@@ -26,6 +27,7 @@ typedef struct {
      * production step 0 (start-up flows, Phan-Thien et al. 2016 Fig. 4) */
     int walls_start_at_production;
     Colloids *colloids;       /* spring-model colloids (colloid.h), NULL if none */
+    Bonds *bonds;             /* massless 2D spring colloids (bonds.h), NULL if none */
 } RunConfig;
 
 /* Reads every key; on error returns -1 with sc->error set. */

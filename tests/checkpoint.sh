@@ -29,7 +29,7 @@ same_run() {   # same_run REF DIR: bit-identical results
     [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] || { echo "  $d: no complete result"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /results/final_state || { echo "  final_state differs"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /observables || { echo "  observables differ"; return 1; }
-    for t in profile rdf msd around density_map; do
+    for t in profile rdf msd around density_map colloid_msd colloid_around colloid_rdf; do
         [ -e "$r/$t.tsv" ] || continue
         cmp -s "$r/$t.tsv" "$d/$t.tsv" || { echo "  $t.tsv differs"; return 1; }
     done
@@ -37,7 +37,7 @@ same_run() {   # same_run REF DIR: bit-identical results
 }
 incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1/run.h5" ]; }
 
-for scene in tests/checkpoint-shear.cfg tests/checkpoint-overdamped.cfg; do
+for scene in tests/checkpoint-shear.cfg tests/checkpoint-overdamped.cfg tests/checkpoint-colloids2d.cfg; do
     s=$(basename "$scene" .cfg)
     "$DPD" run "$scene" --out "$tmp/$s-ref" --threads 1 --quiet 2>"$tmp/err"
     check "$s: reference run" test $? -eq 0

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Fig. 13 of Phan-Thien et al. 2016: viscosity of the most dilute suspension (one
+# massless spring colloid in the 6 x 6 box, phi = 0.0204) against the Peclet number
+# Pe = rate a^2 / D (a, D of the colloid measured by fig10-11-colloid-structure at the
+# same tier), Lees-Edwards shear at rates 0.25 ... 33, m = 0; the solvent alone at the
+# same rates separates the solvent's own rate dependence from the colloid's.
+. "$DPD_ROOT/tools/lib/exp.sh"
+scene=$DPD_ROOT/experiments/phan-thien-2016/fig12-relative-viscosity/shear.cfg
+f1011=$DPD_ROOT/results/phan-thien-2016/fig10-11-colloid-structure/$TIER/summary.tsv
+[ -f "$f1011" ] || { echo "fig13: needs $f1011" >&2; exit 1; }
+case $TIER in
+    quick) rates="0.25 1 4 33"; tier=(--set equilibration=300 --set steps=8000) ;;
+    paper) rates="0.25 1 4 33"; tier=(--set equilibration=1000 --set steps=20000) ;;   # reduced: CPU budget
+esac
+a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
+emit colloid_radius "$a" 0
+emit D_colloid "$D" 0
+printf 'rate\tPe\teta\teta_se\teta_solvent\teta_solvent_se\teta_r\teta_r_se\n' > "$OUT/thinning.tsv"
+n=0
+for r in $rates; do
+    n=$((n + 1))
+    dpd_run "k1_rate$r" "$scene" "${tier[@]}" --set shear_rate=$r --set seed=$((1300 + n))
+    dpd_run "k0_rate$r" "$scene" "${tier[@]}" --set shear_rate=$r --set seed=$((1400 + n)) \
+        --set colloids2d.count=0 --set types.[1].count=0
+    emit_from "k1_rate$r" viscosity "eta_rate$r"
+    emit_from "k0_rate$r" viscosity "eta_solvent_rate$r"
+    emit_ratio "eta_r_rate$r" "k1_rate$r" viscosity "k0_rate$r" viscosity
+    e=$(get "k1_rate$r" viscosity) e0=$(get "k0_rate$r" viscosity)
+    awk -F'\t' -v r=$r -v a="$a" -v D="$D" -v e="$e" -v e0="$e0" 'BEGIN { split(e, x, "\t"); split(e0, y, "\t")
+        q = x[1] / y[1]; qs = q * sqrt((x[2] / x[1])^2 + (y[2] / y[1])^2)
+        printf "%s\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.4g\n", r, r * a * a / D, x[1], x[2], y[1], y[2], q, qs }' >> "$OUT/thinning.tsv"
+done
+lo=${rates%% *} hi=${rates##* }
+emit_ratio thinning_ratio "k1_rate$lo" viscosity "k1_rate$hi" viscosity
+emit_ratio solvent_thinning_ratio "k0_rate$lo" viscosity "k0_rate$hi" viscosity
+awk -F'\t' '$1=="thinning_ratio"{ printf "thinning_significance\t%.6g\t0\n", ($2 - 1) / $3 }' "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+awk -F'\t' -v lo=$lo -v hi=$hi 'NR > 1 && $1 == lo { a = $7; as = $8 } NR > 1 && $1 == hi { b = $7; bs = $8 }
+    END { q = a / b; printf "relative_thinning_ratio\t%.10g\t%.4g\n", q, q * sqrt((as / a)^2 + (bs / b)^2) }' \
+    "$OUT/thinning.tsv" >> "$OUT/summary.tsv"

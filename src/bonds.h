@@ -1,0 +1,76 @@
+/* bonds.h - massless spring colloids in 2D (Phan-Thien, Mai-Duy, Khoo &
+ * Duong-Hong 2016, section 4.3, eqs 50-52): each colloid is 3 ordinary DPD
+ * particles of one type at the corners of an equilateral triangle of side
+ * r_bar, every pair joined by a spring F = -H (r - r_bar) e (eqs 50-51).
+ * The springs are conservative: at m = 0 they join the right side f of
+ * A v = f (eq. 18); at m > 0 they join the forces. Their virial joins the
+ * conservative stress (so the suspension viscosity includes them).
+ * Measured: the colloid centres (mean of the 3 particles by minimum image),
+ * their MSD and D (eq. 52, time average), the distribution of a type about
+ * the centres (eq. 48, the colloid size where it reaches a threshold), the
+ * RDF between centres, the rms spring extension and the spring stress. */
+#ifndef DPD_BONDS_H
+#define DPD_BONDS_H
+
+#include <stdio.h>
+#include <stdint.h>
+#include "system.h"
+#include "scene.h"
+#include "blockavg.h"
+#include "forces.h"
+#include "overdamped.h"
+
+enum { BOND_P = 3 };          /* particles per colloid */
+
+typedef struct Bonds {
+    int type;                 /* particle type of the constituent particles */
+    int ncol;
+    double side;              /* r_bar of eqs 50-51 */
+    double H;                 /* spring stiffness */
+    uint32_t *ids;            /* ncol x 3 stable ids */
+    int *index;               /* stable id -> array index (refreshed per call) */
+    int nparticles;
+    /* measurements */
+    int every, nblocks;
+    long long nsamples_expected;
+    int msd_window;           /* lags of the MSD, in samples */
+    Series traj;              /* per sample: ncol x 2 unwrapped centres */
+    Series ext2;              /* per sample: mean (r - r_bar)^2 over springs */
+    Series spring_wyx;        /* per sample: sum over springs of d_y F_x (virial, yx) */
+    double ext_max;           /* largest |r - r_bar| / r_bar seen */
+    int around_on, around_type, around_bins;
+    double around_dq, around_threshold, around_density;
+    double *around_hist;      /* nblocks x bins */
+    long long *around_samples;
+    int rdf_on, rdf_bins;
+    double rdf_rmax;
+    double *rdf_hist;         /* nblocks x bins */
+    long long *rdf_samples;
+} Bonds;
+
+/* colloids2d = { type = "colloid"; count = 1; side = 0.25; H = 1000.0;
+ *   every = 10; msd_window = 2000;
+ *   around = { type = "solvent"; dq = 0.01; qmax = 2.0; threshold = 1e-3; };
+ *   rdf = { rmax = 3.0; bins = 60; }; }
+ * counts[t]: the particle count of each type (the colloid type needs 3 count).
+ * *out NULL when the group is absent. */
+int  bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
+                     long long steps, int nblocks, Bonds **out);
+void bonds_free(Bonds *b);
+/* Centres on a square grid of cells (no overlap), random orientation;
+ * the particles of the type, in array order, fill the corners. */
+int  bonds_place(Bonds *b, System *s);
+/* Spring force on particle a of the pair (a, b): -H (r - r_bar) e_ab (eq. 50),
+ * b gets the opposite (eq. 51). d = x_a - x_b. Zero when r < 1e-10. */
+void bonds_spring(double H, double rbar, const double d[3], double F[3]);
+/* Add the spring forces to the rows of f of the m = 0 system (eq. 18). */
+void bonds_rhs(Bonds *b, const System *s, OdSystem *od);
+/* Add the spring forces to s->f; pv != NULL: their virial joins the
+ * conservative part (and the slabs). */
+void bonds_forces(Bonds *b, System *s, PairVirial *pv);
+/* One sample of the centres (every b->every production steps). */
+void bonds_sample(Bonds *b, const System *s, long long prod_step);
+/* Summary rows and colloid_msd.tsv, colloid_around.tsv, colloid_rdf.tsv. */
+int  bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir);
+
+#endif
