@@ -139,8 +139,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *x = s->x, *v = s->v_pred, *w = s->omega_pred;
-    const double rc2_max = s->rc_max * s->rc_max;
-    enum { BATCH = 256 };
+    enum { BATCH = PAIR_BATCH };
     int near[BATCH];
     double dd[BATCH][4];
     for (int i = i0; i < i1; i++) {
@@ -148,17 +147,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
           const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-          /* pass 1, branch free: keep the list entries inside the largest cutoff */
-          int m = 0;
-          for (int k = k0; k < k1; k++) {
-            const int j = nl->nbr[k];
-            double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
-            box_min_image(b, d, NULL);
-            const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            near[m] = j;
-            dd[m][0] = d[0]; dd[m][1] = d[1]; dd[m][2] = d[2]; dd[m][3] = r2;
-            m += (r2 < rc2_max);
-          }
+          const int m = pairs_in_range(s, nl, i, k0, k1, near, dd);
           /* pass 2: forces and torques */
           for (int q = 0; q < m; q++) {
             const int j = near[q];
