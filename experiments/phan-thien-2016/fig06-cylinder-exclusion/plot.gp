@@ -12,7 +12,7 @@ set palette rgb 33,13,10
 splot res.'/force_map.tsv' u 1:2:3 skip 1 w pm3d
 set title "fluid number density"
 splot res.'/density_map.tsv' u 1:2:3 skip 1 w pm3d
-unset view; set size noratio; set autoscale; set key top left
+unset view; set size noratio; set autoscale; set key bottom right
 set title "g(q) about the centre (eq. 48, dq = 0.01)"
 set xlabel "q"; set ylabel "g(q)"; set logscale y; set yrange [1e-4:3]; set xrange [0:2]
 a = system("awk -F'\t' '$1==\"exclusion_radius\"{print $2}' ".res."/summary.tsv") + 0
