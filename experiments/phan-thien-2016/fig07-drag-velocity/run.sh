@@ -22,7 +22,7 @@ printf 'P\tdrag\tdrag_se\tU\tU_se\thasimoto_drag\thasimoto_drag_se\n' > "$OUT/dr
 # the m = 0 runs are serial: two at a time
 run_P() {   # sampled every step: the m = 0 velocities are nearly white in time
     dpd_run "P$1" "$scene" "${tier[@]}" --set "types.[0].body_force=[$1,0.0]" --set measure.every=1 \
-        --set seed=$((7000 + ${1/./}))
+        --set seed=$((7000 + 10#${1/./}))
 }
 set -- $Ps
 while [ $# -gt 0 ]; do

@@ -19,7 +19,7 @@ for m in 0 1; do
         for k in $seeds; do
             name="m${m}_P${P}_s$k"
             dpd_run "$name" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
-                --set 'measure.density_map.bins=[12,12]' --set seed=$((8000 + 100 * k + ${P/./} + 1000 * m))
+                --set 'measure.density_map.bins=[12,12]' --set seed=$((8000 + 100 * k + 10#${P/./} + 1000 * m))
             rows+="$(awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
         done
         # mean and standard error over the seeds
