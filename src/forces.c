@@ -82,7 +82,7 @@ void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
     }
 }
 
-static void zero_virial(PairVirial *pv)
+void forces_zero_virial(PairVirial *pv)
 {
     double *wb = pv->Wbin;
     int nb = pv->nbins, ax = pv->bin_axis;
@@ -183,6 +183,29 @@ void forces_body(System *s)
     }
 }
 
+/* The chunks' virials added in chunk order (deterministic); the rotation
+ * fields stay zero in scenes without rotation. */
+void forces_reduce_virial(PairVirial *pv, const ForceWork *w)
+{
+    forces_zero_virial(pv);
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        const PairVirial *cv = &w->chunk[c];
+        for (int q = 0; q < PAIR_PARTS; q++)
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) pv->W[q][a][b] += cv->W[q][a][b];
+        pv->epot += cv->epot;
+        for (int t = 0; t < DPD_MAX_TYPES; t++)
+            for (int d = 0; d < 3; d++) {
+                pv->frozen_force[t][d] += cv->frozen_force[t][d];
+                pv->frozen_torque[t][d] += cv->frozen_torque[t][d];
+                pv->frozen_drag[t][d] += cv->frozen_drag[t][d];
+                pv->frozen_torque_random[t][d] += cv->frozen_torque_random[t][d];
+            }
+        if (pv->nbins > 0)
+            for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
+    }
+}
+
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
     if (s->rotation) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
@@ -206,7 +229,7 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
             i1 = (c == FORCE_CHUNKS - 1) ? n : lo;
         }
         PairVirial *cv = NULL;
-        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; zero_virial(cv); }
+        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
         pair_loop(s, nl, i0, i1, buf, cv);
     }
     #pragma omp parallel for schedule(static)
@@ -215,19 +238,6 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
         for (int c = 1; c < FORCE_CHUNKS; c++) sum += w->buf[(size_t)(c - 1) * stride + k];
         s->f[k] = sum;
     }
-    if (pv) {
-        zero_virial(pv);
-        for (int c = 0; c < FORCE_CHUNKS; c++) {
-            const PairVirial *cv = &w->chunk[c];
-            for (int q = 0; q < PAIR_PARTS; q++)
-                for (int a = 0; a < 3; a++)
-                    for (int b = 0; b < 3; b++) pv->W[q][a][b] += cv->W[q][a][b];
-            pv->epot += cv->epot;
-            for (int t = 0; t < DPD_MAX_TYPES; t++)
-                for (int d = 0; d < 3; d++) pv->frozen_force[t][d] += cv->frozen_force[t][d];
-            if (pv->nbins > 0)
-                for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
-        }
-    }
+    if (pv) forces_reduce_virial(pv, w);
     forces_body(s);
 }

@@ -38,6 +38,10 @@ void forces_free(ForceWork *w);
  * the virial is accumulated into it (zeroed first; pv->Wbin must hold
  * PAIR_PARTS x nbins x 9 doubles when nbins > 0). */
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv);
+/* Zero a virial, keeping its bins (Wbin, nbins, bin_axis). */
+void forces_zero_virial(PairVirial *pv);
+/* pv = the sum of the per-chunk virials of the last pair loop, in chunk order. */
+void forces_reduce_virial(PairVirial *pv, const ForceWork *w);
 
 /* The three pair force magnitudes along e_ij for one pair (exposed for tests).
  * theta is the N(0,1) variate; inv_sqrt_dt scales the noise (theta/sqrt(dt)). */

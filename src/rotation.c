@@ -187,15 +187,6 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     }
 }
 
-static void zero_virial(PairVirial *pv)
-{
-    double *wb = pv->Wbin;
-    int nb = pv->nbins, ax = pv->bin_axis;
-    memset(pv, 0, sizeof *pv);
-    pv->Wbin = wb; pv->nbins = nb; pv->bin_axis = ax;
-    if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
-}
-
 /* first particle of chunk c: equal numbers of list entries per chunk */
 static int chunk_start(const NeighborList *nl, int n, int c)
 {
@@ -222,7 +213,7 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
         memset(tb, 0, stride * sizeof(double));
         const int i0 = chunk_start(nl, n, c), i1 = c == FORCE_CHUNKS - 1 ? n : chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
-        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; zero_virial(cv); }
+        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
         pair_loop(s, nl, i0, i1, fb, tb, cv);
     }
     #pragma omp parallel for schedule(static)
@@ -235,25 +226,7 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
         s->f[k] = sf;
         s->torque[k] = st;
     }
-    if (pv) {
-        zero_virial(pv);
-        for (int c = 0; c < FORCE_CHUNKS; c++) {
-            const PairVirial *cv = &w->chunk[c];
-            for (int q = 0; q < PAIR_PARTS; q++)
-                for (int a = 0; a < 3; a++)
-                    for (int b = 0; b < 3; b++) pv->W[q][a][b] += cv->W[q][a][b];
-            pv->epot += cv->epot;
-            for (int t = 0; t < DPD_MAX_TYPES; t++)
-                for (int d = 0; d < 3; d++) {
-                    pv->frozen_force[t][d] += cv->frozen_force[t][d];
-                    pv->frozen_torque[t][d] += cv->frozen_torque[t][d];
-                    pv->frozen_drag[t][d] += cv->frozen_drag[t][d];
-                    pv->frozen_torque_random[t][d] += cv->frozen_torque_random[t][d];
-                }
-            if (pv->nbins > 0)
-                for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
-        }
-    }
+    if (pv) forces_reduce_virial(pv, w);
 }
 
 /* Called inside integrate_predict after the positions: same scheme as the
