@@ -233,8 +233,10 @@ int neighbor_build(NeighborList *nl, System *s)
     for (int a = 0; a < s->ntypes; a++)
         for (int b = 0; b < s->ntypes; b++) if (!s->pair[a][b].active) filter = 1;
     int failed = 0;
+    size_t total = 0;
     /* contiguous ranges per thread, concatenated in order: the list does not
-     * depend on the thread count */
+     * depend on the thread count. Every thread copies its own part and turns
+     * its own counts into offsets (no serial pass over the list). */
     #pragma omp parallel
     {
         int tid = 0, nth = 1;
@@ -243,38 +245,41 @@ int neighbor_build(NeighborList *nl, System *s)
         nth = omp_get_num_threads();
 #endif
         if (nth > NL_MAX_THREADS) nth = NL_MAX_THREADS;
+        const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
         if (tid < nth) {
-            const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
             nl->tlen[tid] = 0;
             if (build_range(nl, s, i0, i1, filter, &nl->tbuf[tid], &nl->tcap[tid], &nl->tlen[tid])) {
                 #pragma omp atomic write
                 failed = 1;
             }
         }
+        #pragma omp barrier
         #pragma omp single
-        nl->nthreads_used = nth;
-    }
-    if (failed) return -1;
-    size_t total = 0;
-    for (int t = 0; t < nl->nthreads_used; t++) total += nl->tlen[t];
-    if (total > (size_t)INT32_MAX) return -1;
-    if (nl->nthreads_used == 1) {
-        /* one range: the thread buffer becomes the list, no copy */
-        int *p = nl->nbr; size_t c = nl->cap;
-        nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
-        nl->tbuf[0] = p; nl->tcap[0] = c;
-    } else {
-        if (ensure_capacity(&nl->nbr, &nl->cap, total + 1)) return -1;
-        size_t at = 0;
-        for (int t = 0; t < nl->nthreads_used; t++) {
-            memcpy(nl->nbr + at, nl->tbuf[t], nl->tlen[t] * sizeof(int));
-            at += nl->tlen[t];
+        {
+            nl->nthreads_used = nth;
+            for (int t = 0; t < nth; t++) total += nl->tlen[t];
+            if (!failed && total > (size_t)INT32_MAX) failed = 1;
+            if (!failed && nth == 1) {
+                /* one range: the thread buffer becomes the list, no copy */
+                int *p = nl->nbr; size_t c = nl->cap;
+                nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
+                nl->tbuf[0] = p; nl->tcap[0] = c;
+            } else if (!failed && ensure_capacity(&nl->nbr, &nl->cap, total + 1)) {
+                failed = 1;
+            }
+        }   /* implicit barrier */
+        if (!failed && tid < nth) {
+            size_t at = 0;
+            for (int t = 0; t < tid; t++) at += nl->tlen[t];
+            if (nth > 1) memcpy(nl->nbr + at, nl->tbuf[tid], nl->tlen[tid] * sizeof(int));
+            int run = (int)at;   /* start[i + 1] holds the count of i: make it the offset */
+            for (int i = i0; i < i1; i++) { run += nl->start[i + 1]; nl->start[i + 1] = run; }
+            memcpy(nl->x_ref + 3 * (size_t)i0, s->x + 3 * (size_t)i0, 3 * (size_t)(i1 - i0) * sizeof(double));
+            for (int i = i0; i < i1; i++) nl->img_ref[i] = s->img[3 * i + 1];
         }
     }
+    if (failed) return -1;
     nl->start[0] = 0;
-    for (int i = 0; i < n; i++) nl->start[i + 1] += nl->start[i];
-    memcpy(nl->x_ref, s->x, 3 * (size_t)n * sizeof(double));
-    for (int i = 0; i < n; i++) nl->img_ref[i] = s->img[3 * i + 1];
     nl->offset_moved = 0.0;
     nl->builds++;
     return 0;
