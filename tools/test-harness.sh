@@ -169,6 +169,8 @@ if [ -f "$G" ]; then
     in_file "mkpaper: summary not run" "$G" '^| `x/nores` | not run |'
     in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
+    # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
+    in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
     in_file "mkpaper: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
     in_file "mkpaper: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
