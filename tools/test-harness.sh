@@ -112,6 +112,8 @@ title: Fixture paper
 
 <!-- tsv: data/t.tsv -->
 
+Verdicts: y {{verdict:x/y}}; miss {{verdict:x/miss}}; out {{verdict:x/out}}.
+
 # Environment
 
 <!-- environment -->
@@ -169,6 +171,7 @@ if [ -f "$G" ]; then
     in_file "mkpaper: summary not run" "$G" '^| `x/nores` | not run |'
     in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
+    in_file "mkpaper: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
