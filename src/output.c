@@ -467,6 +467,11 @@ int output_close(Output *o, int complete)
 {
     if (o->traj_on) traj_close(o->traj);
     if (o->seg_file >= 0) { traj_close(o->seg); H5Fclose(o->seg_file); o->seg_file = -1; }
+    if (o->segmented) {   /* a failed run: its open segment is no part of any checkpoint */
+        char part[1100];
+        segment_path(o, o->nseg, 1, part, sizeof part);
+        unlink(part);
+    }
     if (H5Fclose(o->file) < 0) return -1;
     if (!complete) return 0;   /* the .part file stays: never mistaken for a result */
     int fd = open(o->tmp_path, O_RDONLY);
