@@ -51,7 +51,6 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
     const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
     const size_t n = (size_t)s->n;
     nl->cell_start = calloc((size_t)ncell + 1, sizeof(int));
-    nl->count = calloc((size_t)ncell, sizeof(int));
     nl->cell_of = calloc(n + 1, sizeof(int));
     nl->perm = calloc(n + 1, sizeof(int));
     nl->start = calloc(n + 1, sizeof(int));
@@ -60,7 +59,7 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
     nl->scratch = calloc(3 * n + 1, sizeof(double));
     nl->cap = 16 * n + 16;
     nl->nbr = malloc(nl->cap * sizeof(int));
-    if (!nl->cell_start || !nl->count || !nl->cell_of || !nl->perm || !nl->start
+    if (!nl->cell_start || !nl->cell_of || !nl->perm || !nl->start
         || !nl->x_ref || !nl->img_ref || !nl->scratch || !nl->nbr) {
         neighbor_free(nl);
         return -1;
@@ -70,25 +69,61 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
 
 void neighbor_free(NeighborList *nl)
 {
-    free(nl->cell_start); free(nl->count); free(nl->cell_of); free(nl->perm);
+    free(nl->cell_start); free(nl->tcount); free(nl->cell_of); free(nl->perm);
     for (int t = 0; t < NL_MAX_THREADS; t++) free(nl->tbuf[t]);
     free(nl->start); free(nl->nbr); free(nl->x_ref); free(nl->img_ref); free(nl->scratch);
     memset(nl, 0, sizeof *nl);
 }
 
-/* Sort the particles by cell (counting sort), keeping the order within a cell. */
-static void sort_by_cell(NeighborList *nl, System *s)
+/* Sort the particles by cell (counting sort), keeping the order within a cell.
+ * Each thread counts the cells of a contiguous range of particles; the counts
+ * scanned in (cell, thread) order put thread 0's particles of a cell before
+ * thread 1's, which is the serial order: the permutation does not depend on
+ * the thread count. */
+static int sort_by_cell(NeighborList *nl, System *s)
 {
-    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
-    memset(nl->count, 0, (size_t)ncell * sizeof(int));
-    #pragma omp parallel for schedule(static)
-    for (int i = 0; i < s->n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
-    for (int i = 0; i < s->n; i++) nl->count[nl->cell_of[i]]++;
-    nl->cell_start[0] = 0;
-    for (int c = 0; c < ncell; c++) nl->cell_start[c + 1] = nl->cell_start[c] + nl->count[c];
-    memcpy(nl->count, nl->cell_start, (size_t)ncell * sizeof(int));
-    for (int i = 0; i < s->n; i++) nl->perm[nl->count[nl->cell_of[i]]++] = i;
+    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2], n = s->n;
+    int maxth = 1;
+#ifdef _OPENMP
+    maxth = omp_get_max_threads();
+#endif
+    if (maxth > NL_MAX_THREADS) maxth = NL_MAX_THREADS;
+    if (nl->tcount_threads < maxth) {
+        free(nl->tcount);
+        nl->tcount = malloc((size_t)ncell * (size_t)maxth * sizeof(int));
+        nl->tcount_threads = nl->tcount ? maxth : 0;
+        if (!nl->tcount) return -1;
+    }
+    #pragma omp parallel num_threads(maxth)
+    {
+        int tid = 0, nth = 1;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+        nth = omp_get_num_threads();
+#endif
+        const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
+        int *cnt = nl->tcount + (size_t)tid * (size_t)ncell;
+        memset(cnt, 0, (size_t)ncell * sizeof(int));
+        for (int i = i0; i < i1; i++) { const int c = cell_index(nl, s->x + 3 * i); nl->cell_of[i] = c; cnt[c]++; }
+        #pragma omp barrier
+        #pragma omp single
+        {
+            int run = 0;
+            for (int c = 0; c < ncell; c++) {
+                nl->cell_start[c] = run;
+                for (int t = 0; t < nth; t++) {
+                    int *tc = nl->tcount + (size_t)t * (size_t)ncell + c;
+                    const int k = *tc;
+                    *tc = run;
+                    run += k;
+                }
+            }
+            nl->cell_start[ncell] = run;
+        }   /* implicit barrier */
+        for (int i = i0; i < i1; i++) nl->perm[cnt[nl->cell_of[i]]++] = i;
+    }
     system_permute(s, nl->perm, nl->scratch);
+    return 0;
 }
 
 /* A stencil segment: a run of particles (consecutive cells of one row, x
@@ -226,15 +261,17 @@ static int build_range(const NeighborList *nl, const System *s, int i0, int i1, 
 int neighbor_build(NeighborList *nl, System *s)
 {
     const int n = s->n;
-    sort_by_cell(nl, s);
+    if (sort_by_cell(nl, s)) return -1;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
     int filter = s->n_frozen > 0;
     for (int a = 0; a < s->ntypes; a++)
         for (int b = 0; b < s->ntypes; b++) if (!s->pair[a][b].active) filter = 1;
     int failed = 0;
+    size_t total = 0;
     /* contiguous ranges per thread, concatenated in order: the list does not
-     * depend on the thread count */
+     * depend on the thread count. Every thread copies its own part and turns
+     * its own counts into offsets (no serial pass over the list). */
     #pragma omp parallel
     {
         int tid = 0, nth = 1;
@@ -243,38 +280,41 @@ int neighbor_build(NeighborList *nl, System *s)
         nth = omp_get_num_threads();
 #endif
         if (nth > NL_MAX_THREADS) nth = NL_MAX_THREADS;
+        const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
         if (tid < nth) {
-            const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
             nl->tlen[tid] = 0;
             if (build_range(nl, s, i0, i1, filter, &nl->tbuf[tid], &nl->tcap[tid], &nl->tlen[tid])) {
                 #pragma omp atomic write
                 failed = 1;
             }
         }
+        #pragma omp barrier
         #pragma omp single
-        nl->nthreads_used = nth;
-    }
-    if (failed) return -1;
-    size_t total = 0;
-    for (int t = 0; t < nl->nthreads_used; t++) total += nl->tlen[t];
-    if (total > (size_t)INT32_MAX) return -1;
-    if (nl->nthreads_used == 1) {
-        /* one range: the thread buffer becomes the list, no copy */
-        int *p = nl->nbr; size_t c = nl->cap;
-        nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
-        nl->tbuf[0] = p; nl->tcap[0] = c;
-    } else {
-        if (ensure_capacity(&nl->nbr, &nl->cap, total + 1)) return -1;
-        size_t at = 0;
-        for (int t = 0; t < nl->nthreads_used; t++) {
-            memcpy(nl->nbr + at, nl->tbuf[t], nl->tlen[t] * sizeof(int));
-            at += nl->tlen[t];
+        {
+            nl->nthreads_used = nth;
+            for (int t = 0; t < nth; t++) total += nl->tlen[t];
+            if (!failed && total > (size_t)INT32_MAX) failed = 1;
+            if (!failed && nth == 1) {
+                /* one range: the thread buffer becomes the list, no copy */
+                int *p = nl->nbr; size_t c = nl->cap;
+                nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
+                nl->tbuf[0] = p; nl->tcap[0] = c;
+            } else if (!failed && ensure_capacity(&nl->nbr, &nl->cap, total + 1)) {
+                failed = 1;
+            }
+        }   /* implicit barrier */
+        if (!failed && tid < nth) {
+            size_t at = 0;
+            for (int t = 0; t < tid; t++) at += nl->tlen[t];
+            if (nth > 1) memcpy(nl->nbr + at, nl->tbuf[tid], nl->tlen[tid] * sizeof(int));
+            int run = (int)at;   /* start[i + 1] holds the count of i: make it the offset */
+            for (int i = i0; i < i1; i++) { run += nl->start[i + 1]; nl->start[i + 1] = run; }
+            memcpy(nl->x_ref + 3 * (size_t)i0, s->x + 3 * (size_t)i0, 3 * (size_t)(i1 - i0) * sizeof(double));
+            for (int i = i0; i < i1; i++) nl->img_ref[i] = s->img[3 * i + 1];
         }
     }
+    if (failed) return -1;
     nl->start[0] = 0;
-    for (int i = 0; i < n; i++) nl->start[i + 1] += nl->start[i];
-    memcpy(nl->x_ref, s->x, 3 * (size_t)n * sizeof(double));
-    for (int i = 0; i < n; i++) nl->img_ref[i] = s->img[3 * i + 1];
     nl->offset_moved = 0.0;
     nl->builds++;
     return 0;

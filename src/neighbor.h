@@ -18,7 +18,9 @@ typedef struct {
     int brute_force;          /* box too small for cells: all pairs */
     int per_cutoff;           /* cells per cutoff length, R = 1 or 2 */
     int *cell_start;          /* ncells + 1 */
-    int *cell_of, *perm, *count;
+    int *cell_of, *perm;
+    int *tcount;              /* per-thread cell counts of the sort (ncells x threads) */
+    int tcount_threads;
     int *start;               /* n + 1: pairs of i are nbr[start[i] .. start[i+1]) */
     int *nbr;
     size_t cap;

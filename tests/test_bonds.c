@@ -266,6 +266,64 @@ static void coincident_particles_give_no_nan(void **state)
     free_col(&c);
 }
 
+/* A colloid started on top of a frozen body (the 4-particle cylinder of
+ * fig06 centred on the colloid centre, one frozen particle exactly on a
+ * constituent) in the n = 4 fluid: the r = 0 pair has no direction and is
+ * skipped, every other pair repels, and the m = 0 system (pinned by the frozen
+ * particles) stays solvable. Expected: bounded velocities at every step, the
+ * body at rest, and after t = 2 the colloid centre farther from the body centre
+ * than 0.15, the sum of the colloid's circumradius (0.144) and the half
+ * diagonal of the cylinder square (0.071) less a margin of 0.07 (half the
+ * fluid's exclusion distance measured by fig06 is 0.18). */
+static void colloid_on_a_frozen_body_is_pushed_out(void **state)
+{
+    (void)state;
+    Col c;
+    make_col(&c, SIDE, A_REP, 140, 1.0, 21);   /* n = 4, the paper's density: a dilute m = 0 fluid has particles with almost no friction */
+    System *s = &c.s;
+    /* four of the solvent particles become the frozen cylinder (type 2) */
+    s->ntypes = 3;
+    snprintf(s->types[2].name, sizeof s->types[2].name, "cylinder");
+    s->types[2].frozen = 1;
+    s->types[2].body_force_flip_axis = -1;
+    PairParams p = {.active = 1, .a = A_REP, .gamma = GAMMA, .s = 0.5, .rc = 1.0};
+    system_set_pair(s, 0, 2, p);
+    system_set_pair(s, 1, 2, p);
+    PairParams off = {.active = 0, .rc = 1.0};
+    system_set_pair(s, 2, 2, off);
+    const double corner[4][2] = {{2.95, 2.95}, {3.05, 2.95}, {2.95, 3.05}, {3.05, 3.05}};
+    const int c0 = at(&c, 0);
+    for (int k = 0; k < 4; k++) {
+        const int i = at(&c, 3 + k);
+        s->type[i] = 2;
+        s->x[3 * i] = corner[k][0];
+        s->x[3 * i + 1] = corner[k][1];
+    }
+    const int f0 = at(&c, 3);
+    s->x[3 * f0] = s->x[3 * c0];            /* a frozen particle exactly on a constituent: r = 0 */
+    s->x[3 * f0 + 1] = s->x[3 * c0 + 1];
+    s->n_frozen = 4;
+    assert_int_equal(neighbor_build(&c.nl, s), 0);
+    int blown = -1;
+    for (int step = 0; step < 400 && blown < 0; step++) {
+        od_step(&c);
+        for (int k = 0; k < 3 * s->n; k++)
+            if (!(fabs(s->v[k]) < 1e3)) { blown = step; break; }   /* also catches NaN */
+    }
+    CHECK_TRUE(blown < 0, "the run stayed bounded (|v| >= 1e3 at step %d)", blown);
+    double cx = 0.0, cy = 0.0;
+    for (int k = 0; k < 3; k++) { cx += s->x[3 * at(&c, k)] / 3.0; cy += s->x[3 * at(&c, k) + 1] / 3.0; }
+    for (int k = 0; k < 3 * s->n; k++) CHECK_TRUE(isfinite(s->x[k]) && isfinite(s->v[k]), "component %d not finite", k);
+    const double dist = hypot(cx - 3.0, cy - 3.0);
+    print_message("colloid started on the cylinder: centre %.3f from the body centre after t = 2\n", dist);
+    CHECK_TRUE(dist > 0.15, "the colloid left the frozen body (centre distance %.3f > 0.15)", dist);
+    for (int k = 0; k < 4; k++) {   /* the body did not move */
+        const int i = at(&c, 3 + k);
+        CHECK_TRUE(s->v[3 * i] == 0.0 && s->v[3 * i + 1] == 0.0, "frozen particle %d has velocity", k);
+    }
+    free_col(&c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -273,6 +331,7 @@ int main(void)
         cmocka_unit_test(colloid_at_rest_keeps_its_shape),
         cmocka_unit_test(largest_stable_dt_at_H1000),
         cmocka_unit_test(coincident_particles_give_no_nan),
+        cmocka_unit_test(colloid_on_a_frozen_body_is_pushed_out),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

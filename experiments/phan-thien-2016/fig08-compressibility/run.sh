@@ -36,6 +36,18 @@ for m in 0 1; do
             'BEGIN { split(v, x, "\t"); printf "%s\t%.10g\t%.4g\n", q, x[1] / (144 * P) - 1, x[2] / (144 * P) }' >> "$OUT/summary.tsv"
     done
 done
+# Mach number of the m = 1 runs: U / c_T with the isothermal speed of sound
+# c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %), central difference
+for N in 137 151; do dpd_run "eos_N$N" eos-m1.cfg --set "types.[0].count=$N" --set seed=$((8500 + N)); done
+c2=$(awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
+        split(lo, a, "\t"); split(hi, b, "\t"); dn = (151 - 137) / 36.0
+        c2 = (b[1] - a[1]) / dn; printf "%.10g\t%.4g", c2, sqrt(a[2]^2 + b[2]^2) / dn }')
+echo "$c2" | awk -F'\t' '{ c = sqrt($1); printf "sound_speed_m1\t%.6g\t%.3g\n", c, 0.5 * $2 / c }' >> "$OUT/summary.tsv"
+printf 'P\tmach\tmach_se\n' > "$OUT/mach.tsv"
+awk -F'\t' -v c2="$c2" 'BEGIN { split(c2, x, "\t"); c = sqrt(x[1]); cse = 0.5 * x[2] / c }
+    NR > 1 && $2 == 1 { M = $7 / c; printf "%s\t%.6g\t%.3g\n", $1, M, M * sqrt(($8 / $7)^2 + (cse / c)^2) }' \
+    "$OUT/fields.tsv" >> "$OUT/mach.tsv"
+awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { printf "mach_m1_P%s\t%s\t%s\n", $1, $2, $3 }' "$OUT/mach.tsv" >> "$OUT/summary.tsv"
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
 awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2, $1] = $4; D[$2, $1] = $5; Dse[$2, $1] = $6 }
     function ratio(q, a, as, b, bs) { g = a / b; e = g * sqrt((as / a)^2 + (bs / b)^2); G[q] = g; E[q] = e
