@@ -50,8 +50,8 @@ incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1
 
 # wait_for FILE PID: until FILE exists or the process ended (at most 60 s)
 wait_for() { for _ in $(seq 6000); do [ -e "$1" ] && return; kill -0 "$2" 2>/dev/null || return; sleep 0.01; done; }
-# kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-50 ms more
-kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 6))"; kill -"$3" "$2" 2>/dev/null; }
+# kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-30 ms more
+kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 4))"; kill -"$3" "$2" 2>/dev/null; }
 
 for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2" "colloids3d 1 1 2" "tcaf 2 2 2"; do
     read -r s tref tkill tres <<< "$spec"
@@ -214,7 +214,7 @@ echo "$(basename "$out")" >> "$CRASH_LOG"
 [ "$(basename "$out")" = "${CRASH_RUN:-}" ] || exec "$REAL_DPD" "$@"
 "$REAL_DPD" "$@" & pid=$!
 for _ in $(seq 6000); do [ -e "$out/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
-sleep "0.0$((RANDOM % 6))"; kill -KILL $pid; wait $pid
+sleep "0.0$((RANDOM % 4))"; kill -KILL $pid; wait $pid
 EOF2
 chmod +x "$rx/experiments/t/e/run.sh" "$rx/crashing-dpd"
 printf 'quantity\ttier\tlo\thi\tk_sigma\tpaper\tsource\n%s\n%s\n%s\n' \
