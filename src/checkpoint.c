@@ -7,9 +7,15 @@
 #include <unistd.h>
 #include "checkpoint.h"
 #include "bonds.h"
+#include "colloid.h"
 
 static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
-#define CHECKPOINT_VERSION 1u
+/* Version 2 appends the state of rotation scenes, 3D spring colloids, the
+ * TCAF and the trajectory segments after the version 1 layout, each only for
+ * a scene that has it: for any other scene the two layouts are the same
+ * byte for byte, so a version 1 checkpoint of such a scene is still read. */
+#define CHECKPOINT_VERSION 2u
+#define CHECKPOINT_VERSION_OLDEST 1u
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
 {
@@ -180,6 +186,60 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
             io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
         }
     }
+    /* version 2 from here */
+    if (s->rotation) {   /* spins, their Groot-Warren prediction, the torques of the step */
+        io_array(io, s->omega, 3 * n, sizeof(double), "angular velocity");
+        io_array(io, s->omega_pred, 3 * n, sizeof(double), "predicted angular velocity");
+        io_array(io, s->torque, 3 * n, sizeof(double), "torque");
+        io_series(io, &m->rot_temperature, "rotational temperature");
+        for (int t = 0; t < DPD_MAX_TYPES; t++)
+            for (int d = 0; d < 3; d++) {
+                io_series(io, &m->frozen_torque[t][d], "frozen torque");
+                io_series(io, &m->frozen_drag[t][d], "frozen drag");
+                io_series(io, &m->frozen_torque_random[t][d], "frozen random torque");
+            }
+    }
+    if (x->colloids) {   /* 3D spring colloids: the rigid reference bodies */
+        Colloids *c = x->colloids;
+        const size_t nc = (size_t)c->ncol;
+        io_array(io, c->R, 3 * nc, sizeof(double), "colloid body centres");
+        io_array(io, c->V, 3 * nc, sizeof(double), "colloid body velocities");
+        io_array(io, c->q, 4 * nc, sizeof(double), "colloid body quaternions");
+        io_array(io, c->L, 3 * nc, sizeof(double), "colloid body angular momenta");
+        io_array(io, c->F, 3 * nc, sizeof(double), "colloid body forces");
+        io_array(io, c->T, 3 * nc, sizeof(double), "colloid body torques");
+        io_series(io, &c->ext2, "colloid spring extension");
+        io_bytes(io, &c->nsteps, sizeof c->nsteps, "colloid steps");
+    }
+    if (m->tcaf.on) {   /* time origins in flight, their running sums, the block sums */
+        Tcaf *t = &m->tcaf;
+        io_array(io, t->origin, (size_t)t->nslots * t->nvec * 3, sizeof(double complex), "tcaf origins");
+        io_array(io, t->origin_step, (size_t)t->nslots, sizeof(long long), "tcaf origin steps");
+        io_array(io, t->origin_index, (size_t)t->nslots, sizeof(long long), "tcaf origin indices");
+        io_array(io, t->curve, (size_t)t->nslots * t->nshell * t->nlags, sizeof(double), "tcaf curves");
+        io_array(io, t->acc, (size_t)t->nblocks * t->nshell * t->nlags, sizeof(double), "tcaf blocks");
+        io_array(io, t->acc_n, (size_t)t->nblocks, sizeof(long long), "tcaf block origins");
+        io_bytes(io, &t->nstarted, sizeof t->nstarted, "tcaf origins started");
+        io_bytes(io, &t->ndone, sizeof t->ndone, "tcaf origins done");
+        int32_t threads = x->threads;
+        io_bytes(io, &threads, sizeof threads, "threads");
+        x->threads = threads;
+    }
+    if (x->trajectory) {   /* the trajectory segment files complete at this checkpoint */
+        int32_t seg = x->trajectory_segments;
+        int64_t frames = x->trajectory_frames;
+        io_bytes(io, &seg, sizeof seg, "trajectory segments");
+        io_bytes(io, &frames, sizeof frames, "trajectory frames");
+        if (io->reading && !io->bad && (seg < 0 || frames < 0)) { io->bad = 1; io->what = "trajectory segments"; }
+        x->trajectory_segments = seg;
+        x->trajectory_frames = frames;
+    }
+}
+
+/* Does the scene have state that only version 2 stores? */
+static int needs_version2(const System *s, const Measure *m, const CheckpointExtra *x)
+{
+    return s->rotation || x->colloids || m->tcaf.on || x->trajectory;
 }
 
 static void header(Io *io, uint64_t *hash, uint32_t *version, uint32_t *n, char magic[8])
@@ -271,8 +331,13 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
     char magic[8] = {0};
     header(&io, &h, &version, &n, magic);
     int rc = 0;
-    if (io.bad || memcmp(magic, MAGIC, 8) || version != CHECKPOINT_VERSION) {
-        snprintf(err, errlen, "%s is not a dpd checkpoint of version %u", path, CHECKPOINT_VERSION);
+    if (io.bad || memcmp(magic, MAGIC, 8)) {
+        snprintf(err, errlen, "%s is not a dpd checkpoint", path);
+        rc = -1;
+    } else if (version < CHECKPOINT_VERSION_OLDEST || version > CHECKPOINT_VERSION
+               || (version < 2 && needs_version2(s, m, x))) {
+        snprintf(err, errlen, "checkpoint %s has format version %u, which this dpd (format %u) cannot resume "
+                 "for this scene; delete it to start afresh", path, version, CHECKPOINT_VERSION);
         rc = -1;
     } else if (h != scene_hash || n != (uint32_t)s->n) {
         snprintf(err, errlen, "checkpoint %s was written for another scene (or other --set values): "

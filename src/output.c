@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 #include <fcntl.h>
+#include <dirent.h>
 #include "output.h"
 
 static hid_t ensure_group(hid_t file, const char *path)
@@ -156,9 +157,68 @@ static hid_t extensible(hid_t g, const char *name, hid_t type, int cols, int dim
     return d;
 }
 
+/* The H5MD trajectory group /particles/all of a file: box, species (in id
+ * order like the frames) and the extensible position, velocity and image
+ * datasets with their shared step and time. */
+static int traj_create(hid_t file, const System *s, hid_t h[TRAJ_SETS])
+{
+    hid_t box = ensure_group(file, "/particles/all/box");
+    if (box < 0) return -1;
+    const int dim = s->box.dim;
+    hsize_t nd = (hsize_t)dim;
+    hid_t sp1 = H5Screate(H5S_SCALAR);
+    hid_t ad = H5Acreate2(box, "dimension", H5T_NATIVE_INT, sp1, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(ad, H5T_NATIVE_INT, &dim);
+    H5Aclose(ad); H5Sclose(sp1);
+    hid_t spn = H5Screate_simple(1, &nd, NULL);
+    hid_t st = H5Tcopy(H5T_C_S1);
+    H5Tset_size(st, 9);
+    char bnd[3][9] = {"periodic", "periodic", "periodic"};
+    hid_t ab = H5Acreate2(box, "boundary", st, spn, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(ab, st, bnd);
+    H5Aclose(ab); H5Tclose(st);
+    hid_t de = H5Dcreate2(box, "edges", H5T_NATIVE_DOUBLE, spn, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dwrite(de, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s->box.L);
+    H5Dclose(de); H5Sclose(spn); H5Gclose(box);
+    int *sp_id = malloc((size_t)s->n * sizeof(int) + 1);
+    if (!sp_id) return -1;
+    for (int i = 0; i < s->n; i++) sp_id[s->id[i]] = s->type[i];
+    hsize_t nn = (hsize_t)s->n;
+    hid_t sps = H5Screate_simple(1, &nn, NULL);
+    hid_t all = ensure_group(file, "/particles/all");
+    hid_t dsp = H5Dcreate2(all, "species", H5T_NATIVE_INT, sps, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (dsp >= 0) { H5Dwrite(dsp, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, sp_id); H5Dclose(dsp); }
+    H5Sclose(sps); H5Gclose(all); free(sp_id);
+    hid_t pg = ensure_group(file, "/particles/all/position");
+    h[TRAJ_POS] = extensible(pg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
+    h[TRAJ_STEP] = extensible(pg, "step", H5T_NATIVE_LLONG, 0, 1);
+    h[TRAJ_TIME] = extensible(pg, "time", H5T_NATIVE_DOUBLE, 0, 1);
+    H5Gclose(pg);
+    hid_t vg = ensure_group(file, "/particles/all/velocity");
+    h[TRAJ_VEL] = extensible(vg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
+    H5Lcreate_hard(file, "/particles/all/position/step", vg, "step", H5P_DEFAULT, H5P_DEFAULT);
+    H5Lcreate_hard(file, "/particles/all/position/time", vg, "time", H5P_DEFAULT, H5P_DEFAULT);
+    H5Gclose(vg);
+    hid_t ig = ensure_group(file, "/particles/all/image");
+    h[TRAJ_IMG] = extensible(ig, "value", H5T_NATIVE_INT, s->n, dim);
+    H5Lcreate_hard(file, "/particles/all/position/step", ig, "step", H5P_DEFAULT, H5P_DEFAULT);
+    H5Lcreate_hard(file, "/particles/all/position/time", ig, "time", H5P_DEFAULT, H5P_DEFAULT);
+    H5Gclose(ig);
+    for (int k = 0; k < TRAJ_SETS; k++) if (h[k] < 0) return -1;
+    return 0;
+}
+
+static void traj_close(hid_t h[TRAJ_SETS])
+{
+    for (int k = 0; k < TRAJ_SETS; k++) if (h[k] > 0) { H5Dclose(h[k]); h[k] = -1; }
+}
+
 int output_open(Output *o, const char *dir, const System *s, int trajectory)
 {
     memset(o, 0, sizeof *o);
+    for (int k = 0; k < TRAJ_SETS; k++) o->traj[k] = o->seg[k] = -1;
+    o->seg_file = -1;
+    snprintf(o->dir, sizeof o->dir, "%s", dir);
     snprintf(o->path, sizeof o->path, "%s/run.h5", dir);
     snprintf(o->tmp_path, sizeof o->tmp_path, "%s/run.h5.part", dir);
     /* HDF5 1.10 closes a file whose H5Fclose failed (disk full) again at exit
@@ -180,51 +240,8 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     output_attr_text(o, "/h5md/creator", "name", "dpd");
     output_attr_text(o, "/h5md/creator", "version", DPD_GIT);
     o->traj_on = trajectory;
-    if (trajectory) {
-        hid_t box = ensure_group(o->file, "/particles/all/box");
-        const int dim = s->box.dim;
-        hsize_t nd = (hsize_t)dim;
-        hid_t sp1 = H5Screate(H5S_SCALAR);
-        hid_t ad = H5Acreate2(box, "dimension", H5T_NATIVE_INT, sp1, H5P_DEFAULT, H5P_DEFAULT);
-        H5Awrite(ad, H5T_NATIVE_INT, &dim);
-        H5Aclose(ad); H5Sclose(sp1);
-        hid_t spn = H5Screate_simple(1, &nd, NULL);
-        hid_t st = H5Tcopy(H5T_C_S1);
-        H5Tset_size(st, 9);
-        char bnd[3][9] = {"periodic", "periodic", "periodic"};
-        hid_t ab = H5Acreate2(box, "boundary", st, spn, H5P_DEFAULT, H5P_DEFAULT);
-        H5Awrite(ab, st, bnd);
-        H5Aclose(ab); H5Tclose(st);
-        hid_t de = H5Dcreate2(box, "edges", H5T_NATIVE_DOUBLE, spn, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        H5Dwrite(de, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s->box.L);
-        H5Dclose(de); H5Sclose(spn); H5Gclose(box);
-        /* species (time independent), in id order like the frames */
-        int *sp_id = malloc((size_t)s->n * sizeof(int) + 1);
-        if (!sp_id) return -1;
-        for (int i = 0; i < s->n; i++) sp_id[s->id[i]] = s->type[i];
-        hsize_t nn = (hsize_t)s->n;
-        hid_t sps = H5Screate_simple(1, &nn, NULL);
-        hid_t all = ensure_group(o->file, "/particles/all");
-        hid_t dsp = H5Dcreate2(all, "species", H5T_NATIVE_INT, sps, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        if (dsp >= 0) { H5Dwrite(dsp, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, sp_id); H5Dclose(dsp); }
-        H5Sclose(sps); H5Gclose(all); free(sp_id);
-        hid_t pg = ensure_group(o->file, "/particles/all/position");
-        o->pos = extensible(pg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
-        o->step = extensible(pg, "step", H5T_NATIVE_LLONG, 0, 1);
-        o->time = extensible(pg, "time", H5T_NATIVE_DOUBLE, 0, 1);
-        H5Gclose(pg);
-        hid_t vg = ensure_group(o->file, "/particles/all/velocity");
-        o->vel = extensible(vg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
-        H5Lcreate_hard(o->file, "/particles/all/position/step", vg, "step", H5P_DEFAULT, H5P_DEFAULT);
-        H5Lcreate_hard(o->file, "/particles/all/position/time", vg, "time", H5P_DEFAULT, H5P_DEFAULT);
-        H5Gclose(vg);
-        hid_t ig = ensure_group(o->file, "/particles/all/image");
-        o->img = extensible(ig, "value", H5T_NATIVE_INT, s->n, dim);
-        H5Lcreate_hard(o->file, "/particles/all/position/step", ig, "step", H5P_DEFAULT, H5P_DEFAULT);
-        H5Lcreate_hard(o->file, "/particles/all/position/time", ig, "time", H5P_DEFAULT, H5P_DEFAULT);
-        H5Gclose(ig);
-        if (o->pos < 0 || o->vel < 0 || o->step < 0 || o->time < 0 || o->img < 0) return -1;
-    }
+    o->segmented = trajectory;
+    if (trajectory && traj_create(o->file, s, o->traj)) return -1;
     return 0;
 }
 
@@ -242,10 +259,47 @@ static int append(hid_t d, hid_t type, long long frame, int cols, int dim, const
     return rc < 0 ? -1 : 0;
 }
 
+/* Read frame `frame` of an extensible dataset (the inverse of append). */
+static int read_frame(hid_t d, hid_t type, long long frame, int cols, int dim, void *buf)
+{
+    const int rank = cols > 0 ? 3 : 1;
+    hid_t fs = H5Dget_space(d);
+    if (fs < 0) return -1;
+    hsize_t start[3] = {(hsize_t)frame, 0, 0}, count[3] = {1, (hsize_t)(cols > 0 ? cols : 1), (hsize_t)dim};
+    herr_t rc = H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL);
+    hid_t ms = H5Screate_simple(rank, count, NULL);
+    if (rc >= 0) rc = H5Dread(d, type, ms, fs, H5P_DEFAULT, buf);
+    H5Sclose(ms); H5Sclose(fs);
+    return rc < 0 ? -1 : 0;
+}
+
+static const char *SET_PATH[TRAJ_SETS] = {
+    "/particles/all/position/value", "/particles/all/velocity/value", "/particles/all/image/value",
+    "/particles/all/position/step", "/particles/all/position/time"};
+
+static void segment_path(const Output *o, int k, int part, char *buf, size_t len)
+{
+    if (part) snprintf(buf, len, "%s/.trajectory-%04d.h5.part", o->dir, k);
+    else snprintf(buf, len, "%s/trajectory-%04d.h5", o->dir, k);
+}
+
 /* Frames are stored in id order so that a particle keeps its row. */
 int output_frame(Output *o, const System *s)
 {
     if (!o->traj_on) return 0;
+    hid_t *h = o->traj;
+    long long at = o->frames;
+    if (o->segmented) {   /* into the open segment file, created with its first frame */
+        if (o->seg_file < 0) {
+            char part[1100];
+            segment_path(o, o->nseg, 1, part, sizeof part);
+            o->seg_file = H5Fcreate(part, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+            if (o->seg_file < 0 || traj_create(o->seg_file, s, o->seg)) return -1;
+            o->seg_frames = 0;
+        }
+        h = o->seg;
+        at = o->seg_frames;
+    }
     const int n = s->n;
     double *buf = malloc(3 * (size_t)n * sizeof(double) + 1);
     int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
@@ -253,23 +307,170 @@ int output_frame(Output *o, const System *s)
     int rc = 0;
     const int dim = s->box.dim;
     for (int i = 0; i < n; i++) memcpy(buf + dim * s->id[i], s->x + 3 * i, dim * sizeof(double));
-    rc |= append(o->pos, H5T_NATIVE_DOUBLE, o->frames, n, dim, buf);
+    rc |= append(h[TRAJ_POS], H5T_NATIVE_DOUBLE, at, n, dim, buf);
     for (int i = 0; i < n; i++) memcpy(buf + dim * s->id[i], s->v + 3 * i, dim * sizeof(double));
-    rc |= append(o->vel, H5T_NATIVE_DOUBLE, o->frames, n, dim, buf);
+    rc |= append(h[TRAJ_VEL], H5T_NATIVE_DOUBLE, at, n, dim, buf);
     for (int i = 0; i < n; i++) memcpy(ib + dim * s->id[i], s->img + 3 * i, dim * sizeof(int));
-    rc |= append(o->img, H5T_NATIVE_INT, o->frames, n, dim, ib);
+    rc |= append(h[TRAJ_IMG], H5T_NATIVE_INT, at, n, dim, ib);
     long long st = (long long)s->step;
-    rc |= append(o->step, H5T_NATIVE_LLONG, o->frames, 0, 1, &st);
-    rc |= append(o->time, H5T_NATIVE_DOUBLE, o->frames, 0, 1, &s->time);
+    rc |= append(h[TRAJ_STEP], H5T_NATIVE_LLONG, at, 0, 1, &st);
+    rc |= append(h[TRAJ_TIME], H5T_NATIVE_DOUBLE, at, 0, 1, &s->time);
     free(buf); free(ib);
     o->frames++;
+    if (o->segmented) o->seg_frames++;
     return rc;
+}
+
+static void fsync_path(const char *path, int dir)
+{
+    int fd = open(path, dir ? O_RDONLY | O_DIRECTORY : O_RDONLY);
+    if (fd >= 0) { fsync(fd); close(fd); }
+}
+
+int output_segment_commit(Output *o)
+{
+    if (!o->segmented || o->seg_file < 0) return 0;
+    traj_close(o->seg);
+    const herr_t c = H5Fclose(o->seg_file);
+    o->seg_file = -1;
+    char part[1100], path[1100];
+    segment_path(o, o->nseg, 1, part, sizeof part);
+    segment_path(o, o->nseg, 0, path, sizeof path);
+    if (c < 0) { unlink(part); return -1; }
+    fsync_path(part, 0);
+    if (rename(part, path)) return -1;
+    fsync_path(o->dir, 1);
+    o->nseg++;
+    o->seg_frames = 0;
+    return 0;
+}
+
+/* k of a file name trajectory-k.h5 (*part = 0) or .trajectory-k.h5.part (*part = 1), else -1 */
+static int segment_index(const char *name, int *part)
+{
+    *part = name[0] == '.';
+    const char *p = name + *part;
+    if (strncmp(p, "trajectory-", 11)) return -1;
+    p += 11;
+    if (*p < '0' || *p > '9') return -1;
+    char *end;
+    const long k = strtol(p, &end, 10);
+    if (strcmp(end, *part ? ".h5.part" : ".h5") || k > 1000000) return -1;
+    return (int)k;
+}
+
+/* Frames in a segment file, or -1 if it cannot be read. */
+static long long segment_frames(const char *path)
+{
+    hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (f < 0) return -1;
+    long long n = -1;
+    hid_t d = H5Dopen2(f, SET_PATH[TRAJ_STEP], H5P_DEFAULT);
+    if (d >= 0) {
+        hid_t sp = H5Dget_space(d);
+        hsize_t dims[1];
+        if (sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, dims, NULL) == 1)
+            n = (long long)dims[0];
+        if (sp >= 0) H5Sclose(sp);
+        H5Dclose(d);
+    }
+    H5Fclose(f);
+    return n;
+}
+
+int output_segments_resume(Output *o, int nseg, long long frames, char *err, size_t errlen)
+{
+    if (!o->segmented) return 0;
+    /* segments written after the checkpoint (and any partial one) are stale */
+    DIR *dp = opendir(o->dir);
+    if (dp) {
+        struct dirent *e;
+        while ((e = readdir(dp))) {
+            int part;
+            const int k = segment_index(e->d_name, &part);
+            if (k >= 0 && (part || k >= nseg)) {
+                char p[1400];
+                snprintf(p, sizeof p, "%s/%s", o->dir, e->d_name);
+                unlink(p);
+            }
+        }
+        closedir(dp);
+    }
+    long long total = 0;
+    for (int k = 0; k < nseg; k++) {
+        char path[1100];
+        segment_path(o, k, 0, path, sizeof path);
+        const long long n = segment_frames(path);
+        if (n < 0) {
+            snprintf(err, errlen, "trajectory segment %s of the checkpoint is missing or unreadable; "
+                     "delete %s/checkpoint.dpd to start afresh", path, o->dir);
+            return -1;
+        }
+        total += n;
+    }
+    if (total != frames) {
+        snprintf(err, errlen, "the trajectory segments in %s hold %lld frames, the checkpoint %lld; "
+                 "delete %s/checkpoint.dpd to start afresh", o->dir, total, frames, o->dir);
+        return -1;
+    }
+    o->nseg = nseg;
+    o->frames = frames;
+    return 0;
+}
+
+int output_segments_merge(Output *o, const System *s)
+{
+    if (!o->segmented) return 0;
+    if (output_segment_commit(o)) return -1;
+    const int n = s->n, dim = s->box.dim;
+    double *buf = malloc(3 * (size_t)n * sizeof(double) + 1);
+    int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
+    if (!buf || !ib) { free(buf); free(ib); return -1; }
+    static const int cols[TRAJ_SETS] = {1, 1, 1, 0, 0};
+    long long at = 0;
+    int rc = 0;
+    for (int k = 0; k < o->nseg && rc == 0; k++) {
+        char path[1100];
+        segment_path(o, k, 0, path, sizeof path);
+        const long long nf = segment_frames(path);
+        hid_t f = nf >= 0 ? H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT) : -1;
+        if (f < 0) { rc = -1; break; }
+        hid_t h[TRAJ_SETS];
+        for (int q = 0; q < TRAJ_SETS; q++) {
+            h[q] = H5Dopen2(f, SET_PATH[q], H5P_DEFAULT);
+            if (h[q] < 0) rc = -1;
+        }
+        for (long long fr = 0; fr < nf && rc == 0; fr++, at++)
+            for (int q = 0; q < TRAJ_SETS && rc == 0; q++) {
+                const hid_t type = q == TRAJ_IMG ? H5T_NATIVE_INT : q == TRAJ_STEP ? H5T_NATIVE_LLONG : H5T_NATIVE_DOUBLE;
+                void *b = q == TRAJ_IMG ? (void *)ib : (void *)buf;
+                rc |= read_frame(h[q], type, fr, cols[q] ? n : 0, cols[q] ? dim : 1, b);
+                rc |= append(o->traj[q], type, at, cols[q] ? n : 0, cols[q] ? dim : 1, b);
+            }
+        traj_close(h);
+        H5Fclose(f);
+    }
+    free(buf); free(ib);
+    return rc || at != o->frames ? -1 : 0;
+}
+
+void output_segments_remove(Output *o)
+{
+    for (int k = 0; o->segmented && k < o->nseg; k++) {
+        char path[1100];
+        segment_path(o, k, 0, path, sizeof path);
+        unlink(path);
+    }
 }
 
 int output_close(Output *o, int complete)
 {
-    if (o->traj_on) {
-        H5Dclose(o->pos); H5Dclose(o->vel); H5Dclose(o->step); H5Dclose(o->time); H5Dclose(o->img);
+    if (o->traj_on) traj_close(o->traj);
+    if (o->seg_file >= 0) { traj_close(o->seg); H5Fclose(o->seg_file); o->seg_file = -1; }
+    if (o->segmented) {   /* a failed run: its open segment is no part of any checkpoint */
+        char part[1100];
+        segment_path(o, o->nseg, 1, part, sizeof part);
+        unlink(part);
     }
     if (H5Fclose(o->file) < 0) return -1;
     if (!complete) return 0;   /* the .part file stays: never mistaken for a result */

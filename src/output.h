@@ -7,13 +7,25 @@
 #include <hdf5.h>
 #include "system.h"
 
+/* trajectory datasets: position, velocity, image (frames x n x dim), step, time (frames) */
+enum { TRAJ_POS, TRAJ_VEL, TRAJ_IMG, TRAJ_STEP, TRAJ_TIME, TRAJ_SETS };
+
+/* A run with a trajectory writes its frames into segment files
+ * DIR/trajectory-NNNN.h5 (each a valid H5MD file, written as
+ * .trajectory-NNNN.h5.part and renamed when a checkpoint closes it), so a
+ * killed run never leaves a half-written HDF5 file behind its checkpoint; the
+ * complete run copies them in order into run.h5 and removes them. */
 typedef struct {
     hid_t file;
-    char path[1024], tmp_path[1024];
+    char path[1024], tmp_path[1024], dir[1024];
     /* trajectory (H5MD /particles/all) */
-    hid_t pos, vel, step, time, img;
-    long long frames;
+    hid_t traj[TRAJ_SETS];
+    long long frames;         /* frames written (all segments included) */
     int traj_on;
+    int segmented;
+    hid_t seg_file, seg[TRAJ_SETS];
+    int nseg;                 /* complete segment files */
+    long long seg_frames;     /* frames in the open segment */
 } Output;
 
 typedef struct {
@@ -23,6 +35,16 @@ typedef struct {
 
 int  output_open(Output *o, const char *dir, const System *s, int trajectory);
 int  output_frame(Output *o, const System *s);
+/* Close the open trajectory segment and rename it complete (before a checkpoint). */
+int  output_segment_commit(Output *o);
+/* At the start of a segmented run: keep the nseg complete segments of the
+ * checkpoint (which must hold `frames` frames; 0, 0 for a fresh run), delete
+ * later or partial ones. -1 with err set if a segment is missing or short. */
+int  output_segments_resume(Output *o, int nseg, long long frames, char *err, size_t errlen);
+/* At the end of a complete run: every segment's frames into run.h5, in order. */
+int  output_segments_merge(Output *o, const System *s);
+/* After run.h5 is in place: delete the segment files. */
+void output_segments_remove(Output *o);
 /* Text attribute on a group path (created if needed). */
 int  output_attr_text(Output *o, const char *group, const char *name, const char *value);
 int  output_attr_double(Output *o, const char *group, const char *name, double value);

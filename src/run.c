@@ -266,9 +266,17 @@ static volatile sig_atomic_t stop_signal = 0;
 static void on_stop_signal(int sig) { stop_signal = sig; }
 
 static int save_checkpoint(const RunOptions *opt, uint64_t hash, const System *s, const NeighborList *nl,
-                           const Measure *m, CheckpointExtra *cx, const RunStats *st, long long equilibration)
+                           const Measure *m, CheckpointExtra *cx, const RunStats *st, long long equilibration,
+                           Output *out)
 {
     char err[1400];
+    /* the frames so far are closed in complete segment files first */
+    if (output_segment_commit(out)) {
+        fprintf(stderr, "dpd: closing the trajectory segment in '%s' failed (disk full?)\n", opt->outdir);
+        return -1;
+    }
+    cx->trajectory_segments = out->nseg;
+    cx->trajectory_frames = out->frames;
     cx->cpu_used = cpu_now() - st->cpu0;
     cx->wall_used = wall_now() - st->wall0;
     cx->prod_wall_used = (long long)s->step > equilibration ? wall_now() - st->prod_wall0 : 0.0;
@@ -296,12 +304,6 @@ int run_scene(const RunOptions *opt)
         scene_free(&sc);
         return 2;
     }
-    /* the state of tcaf time origins, rigid colloid bodies and particle spins
-     * is not in the checkpoint yet: such runs write none (an interrupted one restarts) */
-    const int can_checkpoint = !(m.tcaf.on || rc.colloids || s.rotation);
-    if (!can_checkpoint && opt->checkpoint_every > 0)
-        fprintf(stderr, "dpd: note: %s: no checkpoints for scenes with %s yet; an interrupted run restarts\n",
-                opt->scene, rc.colloids ? "'colloids'" : s.rotation ? "'rotation'" : "'measure.tcaf'");
 #ifdef _OPENMP
     /* the m = 0 solvers are serial: extra threads would only spin between the
      * short parallel loops (doubling the CPU time, and far worse on a busy
@@ -356,15 +358,15 @@ int run_scene(const RunOptions *opt)
     free(scene_txt);
     CheckpointExtra cx = {.timers = st.timers, .ntimers = T_COUNT, .nsolver = 4,
                           .solver = {&ss.iterations, &ss.residual, &ss.seconds, &ss.true_error},
-                          .unconverged = &ss.unconverged, .bonds = rc.bonds};
+                          .unconverged = &ss.unconverged, .bonds = rc.bonds, .colloids = rc.colloids,
+                          .threads = st.threads, .trajectory = rc.trajectory_every > 0};
     int resumed = 0;
     if (opt->resume) {
         char err[1400];
         const int r = checkpoint_read(opt->outdir, scene_hash, &s, &nl, &m, &cx, err, sizeof err);
         if (r < 0) { fprintf(stderr, "dpd: %s\n", err); status = 2; }
-        else if (r == 0 && rc.trajectory_every > 0) {
-            fprintf(stderr, "dpd: --resume with output.trajectory_every > 0 is not supported (the frames "
-                    "before the checkpoint are not kept); rerun from the start\n");
+        else if (r == 0 && output_segments_resume(&out, cx.trajectory_segments, cx.trajectory_frames, err, sizeof err)) {
+            fprintf(stderr, "dpd: %s\n", err);
             status = 2;
         } else if (r == 0) {
             resumed = 1;
@@ -373,7 +375,16 @@ int run_scene(const RunOptions *opt)
             st.prod_wall0 = wall_now() - cx.prod_wall_used;
             st.steps_done = cx.steps_done;
             if (!opt->quiet) fprintf(stderr, "dpd: resuming %s at step %llu\n", opt->outdir, (unsigned long long)s.step);
+            if (m.tcaf.on && cx.threads != st.threads)   /* J(k) is summed in per-thread parts */
+                fprintf(stderr, "dpd: note: %s ran on %d threads before, %d now: the TCAF is summed per thread, "
+                        "so it will differ from an uninterrupted run in the last digits\n",
+                        opt->outdir, cx.threads, st.threads);
+            cx.threads = st.threads;
         }
+    }
+    if (!resumed && status == 0) {   /* a fresh run: trajectory segments of an earlier one go */
+        char err[1400];
+        if (output_segments_resume(&out, 0, 0, err, sizeof err)) { fprintf(stderr, "dpd: %s\n", err); status = 2; }
     }
     /* walls that start with the production run: still at rest before it */
     if (walls_later) set_walls_moving(&s, (const double (*)[3])vwall, resumed && s.step > (uint64_t)rc.equilibration);
@@ -461,14 +472,8 @@ int run_scene(const RunOptions *opt)
         st.timers[T_OUTPUT] += t6 - t5;
         st.steps_done++;
         if (show) progress(k + 1, total, st.wall0, k + 1 == total);
-        if (stop_signal && !can_checkpoint) {
-            fprintf(stderr, "dpd: stopped by signal %d at step %llu; no checkpoint for this scene, the run is "
-                    "incomplete\n", (int)stop_signal, (unsigned long long)s.step);
-            status = 128 + stop_signal;
-            break;
-        }
-        if (can_checkpoint && (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total))) {
-            if (save_checkpoint(opt, scene_hash, &s, &nl, &m, &cx, &st, rc.equilibration)) { status = 4; break; }
+        if (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total)) {
+            if (save_checkpoint(opt, scene_hash, &s, &nl, &m, &cx, &st, rc.equilibration, &out)) { status = 4; break; }
             if (stop_signal) {
                 if (show) fputc('\n', stderr);
                 fprintf(stderr, "dpd: stopped by signal %d at step %llu; checkpoint written, the run is incomplete "
@@ -544,6 +549,7 @@ int run_scene(const RunOptions *opt)
         wrote_summary = status == 0;
         if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
         if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
+        if (status == 0 && output_segments_merge(&out, &s)) status = 4;   /* the trajectory */
         if (status == 0 && write_h5(&out, opt, &sc, &s, &m, &st, prov, sum)) status = 4;
         free(sum);
         free(prov);
@@ -566,6 +572,7 @@ int run_scene(const RunOptions *opt)
         char ck[1100];
         snprintf(ck, sizeof ck, "%s/%s", opt->outdir, CHECKPOINT_FILE);
         unlink(ck);   /* the run is complete: nothing to resume */
+        output_segments_remove(&out);   /* their frames are in run.h5 */
     }
     free(wbin);
     od_free(&od);

@@ -1,18 +1,29 @@
 #!/bin/bash
 # checkpoint.sh - checkpoint/restart and interrupted runs, end to end:
 # for each scene (tests/checkpoint-shear.cfg: Lees-Edwards shear, profile, RDF,
-# MSD; tests/checkpoint-overdamped.cfg: m = 0 with a warm-started PCG solve)
-#   ref   uninterrupted run, 1 thread, no checkpoints
-#   kill  run with --checkpoint-every, SIGKILLed as soon as its first
-#         checkpoint exists (wherever it is then: mid-step or mid-write), must
-#         leave INCOMPLETE and no summary.tsv; then --resume on 2 threads
+# MSD; tests/checkpoint-overdamped.cfg: m = 0 with a warm-started PCG solve;
+# tests/checkpoint-colloids2d.cfg: 2D spring colloids; tests/checkpoint-
+# rotation.cfg: spinning particles; tests/checkpoint-colloids3d.cfg: 3D rigid
+# colloid bodies; tests/checkpoint-tcaf.cfg: TCAF time origins)
+#   ref   uninterrupted run, no checkpoints
+#   kill  run with --checkpoint-every, SIGKILLed at a random moment after its
+#         first checkpoint exists (mid-step, mid-write or between checkpoints),
+#         must leave INCOMPLETE and no summary.tsv; then --resume
 #   term  SIGTERM: status 143, a checkpoint, INCOMPLETE; then --resume
-# and every resumed run must equal ref bit for bit: /results/final_state
+# Threads (ref kill resume): 1 1 2 for scenes whose results do not depend on
+# the thread count; 2 2 2 for the TCAF scene (J(k) is summed per thread).
+# Every resumed run must equal ref bit for bit: /results/final_state
 # (positions, images, velocities by particle id) and /observables of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
-# timing rows. Controls with power: another seed must differ (h5diff sees it);
-# a truncated checkpoint, one of another scene, and --resume with nothing to
-# resume are handled. DPD selects the binary. Prints "N passed, M failed".
+# timing rows. Trajectory output (H5MD) across a SIGKILL and a SIGTERM: the
+# resumed /particles equal the uninterrupted ones (no frame lost or doubled).
+# The harness (tools/lib/exp.sh dpd_run) with the real simulator killed in the
+# middle of a rotation, a 3D colloid and a TCAF run: no result for make check,
+# then a resume that equals the uninterrupted runs. Controls with power:
+# another seed must differ (h5diff sees it); a truncated checkpoint, one of
+# another scene, one of a future format, a missing trajectory segment, and
+# --resume with nothing to resume are handled. DPD selects the binary.
+# Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
 DPD=${DPD:-bin/dpd}
@@ -29,7 +40,7 @@ same_run() {   # same_run REF DIR: bit-identical results
     [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] || { echo "  $d: no complete result"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /results/final_state || { echo "  final_state differs"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /observables || { echo "  observables differ"; return 1; }
-    for t in profile rdf msd around density_map colloid_msd colloid_around colloid_rdf; do
+    for t in profile rdf msd around density_map colloid_msd colloid_around colloid_rdf tcaf tcaf_eta tcaf_extrapolation; do
         [ -e "$r/$t.tsv" ] || continue
         cmp -s "$r/$t.tsv" "$d/$t.tsv" || { echo "  $t.tsv differs"; return 1; }
     done
@@ -37,26 +48,32 @@ same_run() {   # same_run REF DIR: bit-identical results
 }
 incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1/run.h5" ]; }
 
-for scene in tests/checkpoint-shear.cfg tests/checkpoint-overdamped.cfg tests/checkpoint-colloids2d.cfg; do
-    s=$(basename "$scene" .cfg)
-    "$DPD" run "$scene" --out "$tmp/$s-ref" --threads 1 --quiet 2>"$tmp/err"
-    check "$s: reference run" test $? -eq 0
+# wait_for FILE PID: until FILE exists or the process ended (at most 60 s)
+wait_for() { for _ in $(seq 6000); do [ -e "$1" ] && return; kill -0 "$2" 2>/dev/null || return; sleep 0.01; done; }
+# kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-30 ms more
+kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 4))"; kill -"$3" "$2" 2>/dev/null; }
 
-    # SIGKILL after the first checkpoint, resume on 2 threads
-    "$DPD" run "$scene" --out "$tmp/$s-kill" --threads 1 --quiet --checkpoint-every 20 2>"$tmp/err" &
+for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2" "colloids3d 1 1 2" "tcaf 2 2 2"; do
+    read -r s tref tkill tres <<< "$spec"
+    scene=tests/checkpoint-$s.cfg s=checkpoint-$s
+    "$DPD" run "$scene" --out "$tmp/$s-ref" --threads "$tref" --quiet 2>"$tmp/err"
+    check "$s: reference run ($tref threads)" test $? -eq 0
+
+    # SIGKILL at a random moment after the first checkpoint, resume on $tres threads
+    "$DPD" run "$scene" --out "$tmp/$s-kill" --threads "$tkill" --quiet --checkpoint-every 20 2>"$tmp/err" &
     pid=$!
-    for _ in $(seq 6000); do [ -e "$tmp/$s-kill/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
-    kill -KILL $pid 2>/dev/null
+    kill_later "$tmp/$s-kill" $pid KILL
     wait $pid 2>/dev/null; st=$?
     check "$s: SIGKILL (status $st) leaves INCOMPLETE, no result" test $st -eq 137 -a -e "$tmp/$s-kill/INCOMPLETE" -a ! -e "$tmp/$s-kill/summary.tsv"
-    "$DPD" run "$scene" --out "$tmp/$s-kill" --threads 2 --quiet --checkpoint-every 20 --resume 2>"$tmp/err"
+    "$DPD" run "$scene" --out "$tmp/$s-kill" --threads "$tres" --checkpoint-every 20 --resume 2>"$tmp/err"
     st=$?
     check "$s: resume after SIGKILL (status $st)" test $st -eq 0
-    check "$s: killed + resumed = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-kill"
+    check "$s: the resume started from a checkpoint" grep -q 'dpd: resuming .* at step [1-9]' "$tmp/err"
+    check "$s: killed ($tkill threads) + resumed ($tres threads) = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-kill"
     check "$s: no checkpoint left after completion" test ! -e "$tmp/$s-kill/checkpoint.dpd"
 
     # SIGTERM: checkpoint written at the end of the current step
-    "$DPD" run "$scene" --out "$tmp/$s-term" --threads 1 --quiet --checkpoint-every 20 2>"$tmp/err" &
+    "$DPD" run "$scene" --out "$tmp/$s-term" --threads "$tkill" --quiet --checkpoint-every 20 2>"$tmp/err" &
     pid=$!
     for _ in $(seq 6000); do [ -e "$tmp/$s-term/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
     kill -TERM $pid
@@ -65,7 +82,7 @@ for scene in tests/checkpoint-shear.cfg tests/checkpoint-overdamped.cfg tests/ch
         test $st -eq 143 -a -s "$tmp/$s-term/checkpoint.dpd" -a -e "$tmp/$s-term/INCOMPLETE" -a ! -e "$tmp/$s-term/summary.tsv"
     grep -q 'stopped by signal 15 at step' "$tmp/err"
     check "$s: SIGTERM message" test $? -eq 0
-    "$DPD" run "$scene" --out "$tmp/$s-term" --threads 1 --quiet --resume 2>"$tmp/err"
+    "$DPD" run "$scene" --out "$tmp/$s-term" --threads "$tres" --quiet --resume 2>"$tmp/err"
     check "$s: resume after SIGTERM" test $? -eq 0
     check "$s: SIGTERM + resumed = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-term"
 done
@@ -90,12 +107,147 @@ check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/
 "$DPD" run "$scene" --set pairs.[0].a=26.0 --out "$tmp/foreign" --quiet --resume 2>"$tmp/err"; st=$?
 check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/foreign/summary.tsv"
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
-# resuming a run with trajectory frames is refused (the frames before the checkpoint are gone)
-"$DPD" run "$scene" --set 'output={trajectory_every=100;}' --out "$tmp/traj" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
-pid=$!; for _ in $(seq 6000); do [ -e "$tmp/traj/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
-kill -TERM $pid; wait $pid
-"$DPD" run "$scene" --set 'output={trajectory_every=100;}' --out "$tmp/traj" --quiet --resume 2>"$tmp/err"; st=$?
-check "resume with trajectory output: status 2, no result" test $st -eq 2 -a ! -e "$tmp/traj/summary.tsv"
-check "resume with trajectory output: message" grep -q 'trajectory_every > 0 is not supported' "$tmp/err"
+
+# checkpoint format versions: a version 1 file (the layout of version 2 for a
+# scene without spins, rigid bodies, TCAF or trajectory) still resumes; one of
+# a rotation scene cannot (version 1 had no spins), nor one of a future format
+# reseal FILE VERSION: set the format version and recompute the FNV-1a checksum
+reseal() {
+    perl -e '
+        local $/; open my $f, "<:raw", $ARGV[0] or die; my $b = <$f>; close $f;
+        $b = substr($b, 0, length($b) - 8);
+        substr($b, 8, 4) = pack("V", $ARGV[1]);
+        my ($hi, $lo) = (0x14650fb0, 0x739d0383);            # basis 1469598103934665603 of checkpoint.c
+        for my $c (unpack("C*", $b)) {                       # h = (h ^ c) * (2^40 + 435)
+            $lo ^= $c;
+            my $l = $lo * 435; my $carry = int($l / 4294967296);
+            $hi = ($hi * 435 + $carry + (($lo * 256) % 4294967296)) % 4294967296;
+            $lo = $l % 4294967296;
+        }
+        open $f, ">:raw", $ARGV[0] or die; print $f $b, pack("VV", $lo, $hi); close $f;' "$1" "$2"
+}
+rm -rf "$tmp/v1"; cp -r "$tmp/foreign" "$tmp/v1"
+reseal "$tmp/v1/checkpoint.dpd" 2
+"$DPD" run "$scene" --out "$tmp/v1" --threads 1 --quiet --resume 2>"$tmp/err"
+check "reseal control: the rewritten version 2 checkpoint resumes (checksum right)" same_run "$tmp/$s-ref" "$tmp/v1"
+rm -rf "$tmp/v1"; cp -r "$tmp/foreign" "$tmp/v1"
+reseal "$tmp/v1/checkpoint.dpd" 1
+"$DPD" run "$scene" --out "$tmp/v1" --threads 1 --quiet --resume 2>"$tmp/err"
+check "version 1 checkpoint of a plain scene: resumes, bit for bit" same_run "$tmp/$s-ref" "$tmp/v1"
+rm -rf "$tmp/v1r" "$tmp/v3"
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
+cp -r "$tmp/v1r" "$tmp/v3"
+reseal "$tmp/v1r/checkpoint.dpd" 1
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --quiet --resume 2>"$tmp/err"; st=$?
+check "version 1 checkpoint of a rotation scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v1r/summary.tsv"
+check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 2) cannot resume' "$tmp/err"
+reseal "$tmp/v3/checkpoint.dpd" 3
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v3" --quiet --resume 2>"$tmp/err"; st=$?
+check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v3/summary.tsv"
+check "future checkpoint format: message" grep -q 'format version 3' "$tmp/err"
+
+# trajectory output (H5MD) across interruptions: frames go to segment files
+# closed at each checkpoint and are copied into run.h5 when the run completes
+frames() { h5ls -d "$1/run.h5/particles/all/position/step" | tail -n +3 | tr -d ' \n'; }
+segments_gone() { ! ls -a "$1" | grep -q 'trajectory-'; }
+traj=(--set 'output={trajectory_every=30;}')
+"$DPD" run "$scene" "${traj[@]}" --out "$tmp/traj-ref" --threads 1 --quiet 2>"$tmp/err"
+check "trajectory: uninterrupted run" test $? -eq 0
+check "trajectory: frames at steps 30, 60, ..., 450" test "$(frames "$tmp/traj-ref")" = "$(seq -s, 30 30 450)"
+check "trajectory: same physics as without it" same_run "$tmp/$s-ref" "$tmp/traj-ref"
+check "trajectory: no segment files left" segments_gone "$tmp/traj-ref"
+for sig in KILL TERM; do
+    d=$tmp/traj-$sig
+    "$DPD" run "$scene" "${traj[@]}" --out "$d" --threads 1 --quiet --checkpoint-every 20 2>"$tmp/err" &
+    pid=$!
+    kill_later "$d" $pid $sig
+    wait $pid 2>/dev/null; st=$?
+    check "trajectory: SIG$sig (status $st) leaves no run.h5, no result" test $st -gt 128 -a ! -e "$d/run.h5" -a ! -e "$d/summary.tsv"
+    : > "$d/trajectory-0099.h5"; : > "$d/.trajectory-0098.h5.part"   # stale leftovers
+    "$DPD" run "$scene" "${traj[@]}" --out "$d" --threads 1 --checkpoint-every 20 --resume 2>"$tmp/err"
+    check "trajectory: resume after SIG$sig" test $? -eq 0
+    grep -q 'resuming .* at step [1-9]' "$tmp/err"
+    check "trajectory: SIG$sig resume started from a checkpoint" test $? -eq 0
+    check "trajectory: SIG$sig + resumed frames = uninterrupted (none lost or doubled)" test "$(frames "$d")" = "$(frames "$tmp/traj-ref")"
+    check "trajectory: SIG$sig + resumed /particles = uninterrupted, bit for bit" h5diff -q "$tmp/traj-ref/run.h5" "$d/run.h5" /particles
+    check "trajectory: SIG$sig + resumed results = uninterrupted" same_run "$tmp/traj-ref" "$d"
+    check "trajectory: SIG$sig segments (stale ones too) removed" segments_gone "$d"
+done
+# a segment of the checkpoint that went missing: refused, nothing accepted
+d=$tmp/traj-lost
+"$DPD" run "$scene" "${traj[@]}" --out "$d" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$d/trajectory-0000.h5" $pid; wait_for "$d/trajectory-0001.h5" $pid; kill -TERM $pid; wait $pid
+rm -f "$d/trajectory-0000.h5"
+"$DPD" run "$scene" "${traj[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+check "trajectory: missing segment: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: missing segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 of the checkpoint is missing' "$tmp/err"
+
+# the harness with the real simulator: tools/run-experiment of an experiment
+# with a rotation, a 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run,
+# --checkpoint-every --resume), each in turn SIGKILLed in the middle by a
+# wrapper (a crash): the experiment leaves no result and make check (tools/
+# check) reports it MISSING; the last attempt completes, resuming the killed
+# run, and every run equals its uninterrupted reference.
+rx=$tmp/rx
+mkdir -p "$rx/experiments/t/e"
+cp -r tools "$rx/tools"
+cp tests/checkpoint-rotation.cfg "$rx/experiments/t/e/rot.cfg"
+cp tests/checkpoint-colloids3d.cfg "$rx/experiments/t/e/c3d.cfg"
+cp tests/checkpoint-tcaf.cfg "$rx/experiments/t/e/tcaf.cfg"
+cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+dpd_run rot rot.cfg
+dpd_run c3d c3d.cfg
+dpd_run tcaf tcaf.cfg --threads 2   # as its reference: J(k) is summed per thread
+emit_from rot particles n_rot
+emit_from c3d colloids n_colloids
+emit_from tcaf tcaf_origins n_origins
+EOF2
+cat > "$rx/crashing-dpd" <<'EOF2'
+#!/usr/bin/env bash
+# the real simulator; the run named $CRASH_RUN is SIGKILLed after its first checkpoint
+out=; args=("$@")
+for ((i = 0; i < $#; i++)); do [ "${args[i]}" = --out ] && out=${args[i + 1]}; done
+echo "$(basename "$out")" >> "$CRASH_LOG"
+[ "$(basename "$out")" = "${CRASH_RUN:-}" ] || exec "$REAL_DPD" "$@"
+"$REAL_DPD" "$@" & pid=$!
+for _ in $(seq 6000); do [ -e "$out/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
+sleep "0.0$((RANDOM % 4))"; kill -KILL $pid; wait $pid
+EOF2
+chmod +x "$rx/experiments/t/e/run.sh" "$rx/crashing-dpd"
+printf 'quantity\ttier\tlo\thi\tk_sigma\tpaper\tsource\n%s\n%s\n%s\n' \
+    $'n_rot\tquick\t384\t384\t0\t-\tparticle count of the scene' \
+    $'n_colloids\tquick\t8\t8\t0\t-\tcolloid count of the scene' \
+    $'n_origins\tquick\t1\t1e9\t0\t-\tat least one origin' > "$rx/experiments/t/e/bands.tsv"
+RX() { env -u DPD_ROOT OMP_NUM_THREADS=1 DPD_BIN="$rx/crashing-dpd" REAL_DPD="$(cd "$(dirname "$DPD")" && pwd)/$(basename "$DPD")" \
+       CRASH_LOG="$tmp/crash.log" DPD_CHECKPOINT_EVERY=20 "$@"; }
+part=$rx/results/t/e/.quick.partial/runs
+prev=
+for run in rot c3d tcaf; do
+    : > "$tmp/crash.log"
+    RX CRASH_RUN=$run "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
+    check "harness: $run killed: run-experiment fails" test $? -ne 0
+    check "harness: $run killed: no experiment result" test ! -e "$rx/results/t/e/quick/summary.tsv"
+    env DPD_ROOT="$rx" "$rx/tools/check" t/e > "$tmp/out" 2>&1
+    check "harness: $run killed: make check fails" test $? -ne 0
+    check "harness: $run killed: make check says MISSING" grep -q 'MISSING' "$tmp/out"
+    check "harness: $run killed: INCOMPLETE, a checkpoint, no summary" \
+        test -e "$part/$run/INCOMPLETE" -a -e "$part/$run/checkpoint.dpd" -a ! -e "$part/$run/summary.tsv"
+    check "harness: $run killed: ran only ${prev:+the one killed before ($prev) and }$run" test "$(tr '\n' ' ' < "$tmp/crash.log")" = "${prev:+$prev }$run "
+    prev=$run
+done
+: > "$tmp/crash.log"
+RX "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
+check "harness: last attempt completes" test $? -eq 0
+check "harness: only the killed run was rerun (resumed)" test "$(tr '\n' ' ' < "$tmp/crash.log")" = "tcaf "
+env DPD_ROOT="$rx" "$rx/tools/check" t/e > "$tmp/out" 2>&1
+check "harness: make check passes after the resume" test $? -eq 0
+for pair in rot:checkpoint-rotation c3d:checkpoint-colloids3d tcaf:checkpoint-tcaf; do
+    run=${pair%%:*} ref=${pair#*:}
+    check "harness: $run killed + resumed = uninterrupted (summary)" \
+        diff <(physics "$rx/results/t/e/quick/runs/$run/summary.tsv") <(physics "$tmp/$ref-ref/summary.tsv")
+done
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -89,6 +89,43 @@ if [ $st -eq 4 ] && grep -q "cannot write the checkpoint" "$T/err" && [ ! -e "$m
    && [ ! -e "$mnt/ck/.checkpoint.dpd.part" ] && [ -e "$mnt/ck/INCOMPLETE" ]; then ok "checkpoint on a full disk: status 4, named, no result, no partial checkpoint"
 else bad "checkpoint on a full disk" "status $st: $(cat "$T/err") $(ls -a "$mnt/ck" | tr "\n" " ")"; fi
 umount "$mnt"
+# a trajectory (segment files closed at each checkpoint, copied into run.h5 at
+# the end) with checkpoints on a disk that fills at every stage
+mount -t tmpfs -o size=1m tmpfs "$mnt"
+targs=(--set steps=20 --set "output={trajectory_every=5;}" --checkpoint-every 10 --quiet)
+free_kb=$(df -k --output=avail "$mnt" | tail -1)
+"$DPD" run "$scene" "${targs[@]}" --out "$mnt/out" 2>"$T/err"; st=$?
+if [ $st -eq 0 ] && [ "$(h5ls "$mnt/out/run.h5/particles/all/position/step" | tr -s " ")" = "step Dataset {4/Inf}" ]; then
+    ok "trajectory disk-full control: 4 frames in run.h5"
+else bad "trajectory disk-full control" "status $st: $(head -3 "$T/err")"; fi
+rm -rf "$mnt/out"
+tstages="" sweep_ok=1
+for fill in $(seq $((free_kb - 320)) 20 "$free_kb"); do
+    rm -rf "$mnt"/*
+    head -c "${fill}k" /dev/zero > "$mnt/filler" 2>/dev/null
+    "$DPD" run "$scene" "${targs[@]}" --out "$mnt/out" 2>"$T/err"; st=$?
+    d=$mnt/out
+    if [ $st -eq 0 ]; then
+        [ -s "$d/summary.tsv" ] && [ -s "$d/run.h5" ] && [ ! -e "$d/INCOMPLETE" ] && ! ls -a "$d" | grep -q trajectory- \
+            || { bad "trajectory, disk full, ${fill} KiB filled" "status 0 but the result is not complete or segments left"; sweep_ok=0; }
+    elif [ $st -eq 4 ]; then
+        msg=$(grep -m1 "^dpd: " "$T/err" | sed "s|$mnt|MNT|g")
+        if [ -z "$msg" ] || [ -e "$d/summary.tsv" ] || [ -e "$d/run.h5" ] || ls "$d"/.*.part >/dev/null 2>&1 \
+           || grep -q "runtime error\|Sanitizer" "$T/err"; then
+            bad "trajectory, disk full, ${fill} KiB filled" "a result or *.part was left, or no message: $(ls -a "$d" 2>/dev/null | tr "\n" " ") $(head -3 "$T/err")"; sweep_ok=0
+        fi
+        tstages="$tstages${msg%%:*}|${msg#*: }
+"
+    else
+        bad "trajectory, disk full, ${fill} KiB filled" "status $st: $(head -5 "$T/err")"; sweep_ok=0
+    fi
+done
+nst=$(printf "%s" "$tstages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | wc -l)
+[ $sweep_ok = 1 ] && ok "trajectory, disk full at every stage: complete result or status 4 with no result"
+if printf "%s" "$tstages" | grep -q "trajectory segment"; then ok "trajectory disk-full sweep reached the segment commit ($nst stages)"
+else bad "trajectory disk-full sweep" "never failed at a segment commit: $tstages"; fi
+printf "%s" "$tstages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | sed "s/^/    stage: /"
+umount "$mnt"
 ' > "$tmp/ns.log" 2>&1
 cat "$tmp/ns.log"
 pass=$((pass + $(grep -c '^PASS' "$tmp/ns.log")))

@@ -1,7 +1,8 @@
 #!/bin/bash
 # valgrind.sh - memcheck on small scenes (`make valgrind`): a valid scene,
-# a bad scene (status 2), a run that writes checkpoints, and a resume from a
-# checkpoint left by a SIGKILLed run. Any memcheck error or definite leak
+# a bad scene (status 2), a run that writes checkpoints, and resumes from
+# checkpoints left by SIGKILLed runs (shear; rotation with a trajectory; 3D
+# colloids; TCAF). Any memcheck error or definite leak
 # fails (--error-exitcode=99). DPD selects the binary (default bin/dpd).
 # OpenMP runs on one thread (libgomp's pool is then not created).
 set -u
@@ -31,5 +32,15 @@ pid=$!
 for _ in $(seq 6000); do [ -e "$tmp/res/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
 kill -KILL $pid 2>/dev/null; wait $pid 2>/dev/null
 vg resume 0 run tests/checkpoint-shear.cfg --out "$tmp/res" --quiet --threads 1 --resume
+# the same for the state of checkpoint format 2: spins with trajectory segments,
+# rigid colloid bodies, TCAF origins
+for spec in "rotation --set output={trajectory_every=20;}" colloids3d tcaf; do
+    read -r s extra <<< "$spec"
+    "$DPD" run tests/checkpoint-$s.cfg $extra --out "$tmp/res-$s" --quiet --threads 1 --checkpoint-every 20 2>/dev/null &
+    pid=$!
+    for _ in $(seq 6000); do [ -e "$tmp/res-$s/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
+    sleep 0.05; kill -KILL $pid 2>/dev/null; wait $pid 2>/dev/null
+    vg resume-$s 0 run tests/checkpoint-$s.cfg $extra --out "$tmp/res-$s" --quiet --threads 1 --resume
+done
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
