@@ -375,10 +375,6 @@ int run_scene(const RunOptions *opt)
             st.prod_wall0 = wall_now() - cx.prod_wall_used;
             st.steps_done = cx.steps_done;
             if (!opt->quiet) fprintf(stderr, "dpd: resuming %s at step %llu\n", opt->outdir, (unsigned long long)s.step);
-            if (m.tcaf.on && cx.threads != st.threads)   /* J(k) is summed in per-thread parts */
-                fprintf(stderr, "dpd: note: %s ran on %d threads before, %d now: the TCAF is summed per thread, "
-                        "so it will differ from an uninterrupted run in the last digits\n",
-                        opt->outdir, cx.threads, st.threads);
             cx.threads = st.threads;
         }
     }

@@ -107,34 +107,29 @@ void tcaf_free(Tcaf *t)
     memset(t, 0, sizeof *t);
 }
 
+#define TCAF_CHUNKS 4   /* fixed partial sums of J(k): independent of the thread count */
+
 /* J(k) = sum_j v_j exp(i k.r_j) (eq. 23). The phases come from per-particle
  * tables exp(i 2 pi m x_d / L_d), m = -nmax..nmax, so each vector costs two
- * complex products per particle. Threads sum private copies, reduced in
- * thread order (the same result for a given thread count). */
+ * complex products per particle. The particles are cut into TCAF_CHUNKS
+ * fixed ranges summed apart and added in chunk order, so J does not depend
+ * on the thread count (as the forces, forces.h). */
 void tcaf_current(Tcaf *t, const System *s)
 {
     const int nv = t->nvec, n = s->n;
-    int nth = 1;
-#ifdef _OPENMP
-    nth = omp_get_max_threads();
-#endif
     const int M[3] = {t->nmax[0], t->nmax[1], t->nmax[2]};
     const int W = 2 * (M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2])) + 1;
-    double complex *part = calloc((size_t)nth * nv * 3 + 1, sizeof(double complex));
+    double complex *part = calloc((size_t)TCAF_CHUNKS * nv * 3 + 1, sizeof(double complex));
     if (!part) { memset(t->J, 0, (size_t)nv * 3 * sizeof(double complex)); return; }
-    #pragma omp parallel num_threads(nth)
-    {
-        int me = 0;
-#ifdef _OPENMP
-        me = omp_get_thread_num();
-#endif
-        double complex *Jp = part + (size_t)me * nv * 3;
+    #pragma omp parallel for schedule(static, 1)
+    for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
+        double complex *Jp = part + (size_t)chunk * nv * 3;
         /* phase tables as (re, im) pairs: plain real arithmetic (complex
          * products in C11 without -ffast-math go through a NaN-safe libcall) */
         double er[3][64], ei[3][64];
         const int off = (W - 1) / 2;
-        #pragma omp for schedule(static)
-        for (int i = 0; i < n; i++) {
+        const int i0 = (int)((long long)n * chunk / TCAF_CHUNKS), i1 = (int)((long long)n * (chunk + 1) / TCAF_CHUNKS);
+        for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
             for (int d = 0; d < 3; d++) {
                 const double ph = M[d] > 0 ? 2.0 * M_PI * s->x[3 * i + d] / s->box.L[d] : 0.0;
@@ -165,7 +160,7 @@ void tcaf_current(Tcaf *t, const System *s)
     }
     for (int q = 0; q < 3 * nv; q++) {
         double complex sum = 0.0;
-        for (int h = 0; h < nth; h++) sum += part[(size_t)h * nv * 3 + q];
+        for (int h = 0; h < TCAF_CHUNKS; h++) sum += part[(size_t)h * nv * 3 + q];
         t->J[q] = sum;
     }
     free(part);

@@ -10,8 +10,8 @@
 #         first checkpoint exists (mid-step, mid-write or between checkpoints),
 #         must leave INCOMPLETE and no summary.tsv; then --resume
 #   term  SIGTERM: status 143, a checkpoint, INCOMPLETE; then --resume
-# Threads (ref kill resume): 1 1 2 for scenes whose results do not depend on
-# the thread count; 2 2 2 for the TCAF scene (J(k) is summed per thread).
+# Threads (ref kill resume): 1 1 2 (results do not depend on the thread count;
+# 2 2 2 for the TCAF scene, which test_threads checks on 1 and 2 threads).
 # Every resumed run must equal ref bit for bit: /results/final_state
 # (positions, images, velocities by particle id) and /observables of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
@@ -200,7 +200,7 @@ cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
 . "$DPD_ROOT/tools/lib/exp.sh"
 dpd_run rot rot.cfg
 dpd_run c3d c3d.cfg
-dpd_run tcaf tcaf.cfg --threads 2   # as its reference: J(k) is summed per thread
+dpd_run tcaf tcaf.cfg --threads 2
 emit_from rot particles n_rot
 emit_from c3d colloids n_colloids
 emit_from tcaf tcaf_origins n_origins

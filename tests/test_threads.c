@@ -1,7 +1,8 @@
 /* test_threads.c - the trajectory does not depend on the number of OpenMP
  * threads: the pair noise depends only on (seed, step, ids), the neighbour
  * list is concatenated in particle order and the forces are summed over
- * FORCE_CHUNKS fixed chunks in a fixed order. So runs with 1, 2 and 3 threads
+ * FORCE_CHUNKS fixed chunks in a fixed order (the TCAF current over TCAF_CHUNKS).
+ * So runs with 1, 2 and 3 threads
  * must agree bit for bit (no tolerance). A small sheared system exercises the
  * Lees-Edwards boundaries and the binned stress; run.h5 stores frames in id
  * order, so rows are compared directly (equivalent to sorting by id). */
@@ -128,6 +129,43 @@ static void summaries_equal(void **state)
     CHECK_TRUE(system(p1) == 0 && system(p2) == 0, "profile.tsv (binned IK stress) differs between thread counts");
 }
 
+/* The TCAF current J(k) (eq. 23) is summed over fixed particle chunks in a
+ * fixed order: its tables do not depend on the thread count either. */
+static const char *TCAF_SCENE =
+    "dimension = 3;\n"
+    "box = [5.0, 5.0, 5.0];\n"
+    "dt = 0.01;\n"
+    "seed = 17;\n"
+    "equilibration = 20;\n"
+    "steps = 400;\n"
+    "types = ( { name = \"w\"; density = 3.0; } );\n"
+    "pairs = ( { types = [\"w\", \"w\"]; a = 25.0; gamma = 4.5; } );\n"
+    "measure = { every = 5; blocks = 4;\n"
+    "  tcaf = { every = 2; window = 80; origin_every = 10; n2max = 5; fit_min = 0.3; }; };\n";
+
+static void tcaf_tables_equal(void **state)
+{
+    (void)state;
+    char scene[600], out[2][600], cmd[2600];
+    snprintf(scene, sizeof scene, "%s/tcaf.cfg", dir);
+    write_text(scene, TCAF_SCENE);
+    for (int t = 1; t <= 2; t++) {
+        snprintf(out[t - 1], sizeof out[t - 1], "%s/tcaf%d", dir, t);
+        CHECK_TRUE(run_quiet(scene, out[t - 1], t) == 0, "TCAF run with %d threads failed", t);
+    }
+    /* the summary rows carry 10 digits (the tables fewer): a per-thread
+     * partial sum shows there, in eta(k) and its fits */
+    for (int t = 0; t < 2; t++) {
+        snprintf(cmd, sizeof cmd, "grep '^tcaf' %s/summary.tsv > %s/tcaf-rows.tsv", out[t], out[t]);
+        CHECK_TRUE(system(cmd) == 0, "no tcaf rows in %s/summary.tsv", out[t]);
+    }
+    static const char *tables[] = {"tcaf-rows.tsv", "tcaf.tsv", "tcaf_eta.tsv", "tcaf_extrapolation.tsv"};
+    for (size_t k = 0; k < sizeof tables / sizeof tables[0]; k++) {
+        snprintf(cmd, sizeof cmd, "cmp -s %s/%s %s/%s", out[0], tables[k], out[1], tables[k]);
+        CHECK_TRUE(system(cmd) == 0, "%s differs between 1 and 2 threads", tables[k]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -136,6 +174,7 @@ int main(void)
         cmocka_unit_test(velocities_bitwise),
         cmocka_unit_test(images_equal),
         cmocka_unit_test(summaries_equal),
+        cmocka_unit_test(tcaf_tables_equal),
     };
     return cmocka_run_group_tests_name("threads", tests, setup, teardown);
 }
