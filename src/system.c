@@ -66,24 +66,48 @@ void system_permute(System *s, const int *perm, double *scratch)
     memcpy(s->type, tb, (size_t)n);
 }
 
-int system_dof(const System *s)
+/* Momentum is conserved only without walls and body forces. */
+static int momentum_conserved(const System *s)
 {
-    const int dim = s->box.dim;
-    int mobile = s->n - s->n_frozen;
-    /* Momentum is conserved only without walls and body forces. */
-    int conserved = (s->n_frozen == 0 && !s->has_body_force);
-    return dim * mobile - (conserved ? dim : 0);
+    return s->n_frozen == 0 && !s->has_body_force;
 }
 
+int system_dof(const System *s)
+{
+    const int mobile = s->n - s->n_frozen;
+    return mobile > 0 ? s->box.dim * (mobile - 1) : 0;
+}
+
+/* Kinetic temperature of the peculiar velocities: relative to the
+ * Lees-Edwards streaming profile and to the mobile particles' centre-of-mass
+ * velocity, so that a uniform flow (a body force past frozen particles) is
+ * not counted as heat. Where momentum is conserved the centre of mass does
+ * not move and is not subtracted (its d degrees of freedom are still left
+ * out). A non-uniform flow (Poiseuille) is still counted: use the profile's
+ * temperature there. */
 double system_kinetic_temperature(const System *s)
 {
+    double vcm[3] = {0.0, 0.0, 0.0};
+    if (!momentum_conserved(s)) {
+        double mtot = 0.0;
+        for (int i = 0; i < s->n; i++) {
+            const ParticleType *t = &s->types[s->type[i]];
+            if (t->frozen) continue;
+            vcm[0] += t->mass * (s->v[3 * i] - box_stream_vx(&s->box, s->x[3 * i + 1]));
+            vcm[1] += t->mass * s->v[3 * i + 1];
+            vcm[2] += t->mass * s->v[3 * i + 2];
+            mtot += t->mass;
+        }
+        for (int d = 0; d < 3; d++) vcm[d] = mtot > 0.0 ? vcm[d] / mtot : 0.0;
+    }
     double sum = 0.0;
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         if (t->frozen) continue;
         const double *v = s->v + 3 * i;
-        const double vx = v[0] - box_stream_vx(&s->box, s->x[3 * i + 1]);
-        sum += t->mass * (vx * vx + v[1] * v[1] + v[2] * v[2]);
+        const double vx = v[0] - box_stream_vx(&s->box, s->x[3 * i + 1]) - vcm[0];
+        const double vy = v[1] - vcm[1], vz = v[2] - vcm[2];
+        sum += t->mass * (vx * vx + vy * vy + vz * vz);
     }
     const int dof = system_dof(s);
     return dof > 0 ? sum / dof : 0.0;

@@ -208,6 +208,29 @@ static void newton_third_law(void **state)
     total_force_check(0.3, 2.345);   /* pairs through the sliding boundary too */
 }
 
+/* A uniform flow is not heat: with a body force (momentum not conserved) the
+ * kinetic temperature is that of the velocities relative to their centre of
+ * mass over d (N - 1) degrees of freedom, so adding a drift changes it only
+ * by rounding (relative 1e-12 allowed for sums of 648 terms of size ~30). */
+static void drift_is_not_heat(void **state)
+{
+    (void)state;
+    const double L[3] = {6.0, 6.0, 6.0};
+    System s;
+    make_system(&s, 3, 648, L, 0.0, 25.0, 4.5, 2.0, 1.0, 77);
+    s.has_body_force = 1;
+    double vcm[3] = {0, 0, 0}, sum = 0.0;
+    for (int i = 0; i < s.n; i++) for (int d = 0; d < 3; d++) vcm[d] += s.v[3 * i + d] / s.n;
+    for (int i = 0; i < s.n; i++)
+        for (int d = 0; d < 3; d++) sum += (s.v[3 * i + d] - vcm[d]) * (s.v[3 * i + d] - vcm[d]);
+    const double T0 = system_kinetic_temperature(&s);
+    CHECK_REL("T of the peculiar velocities over 3 (N - 1)", T0, sum / (3.0 * (s.n - 1)), 1e-12);
+    const double drift[3] = {5.0, -2.0, 1.0};
+    for (int i = 0; i < s.n; i++) for (int d = 0; d < 3; d++) s.v[3 * i + d] += drift[d];
+    CHECK_REL("T unchanged by a uniform drift of speed 5.5", system_kinetic_temperature(&s), T0, 1e-12);
+    system_free(&s);
+}
+
 /* 200 steps of the Groot-Warren integrator, periodic box: total momentum is
  * constant. Per step the momentum changes by dt sum f (rounding only, see
  * above); 200 such steps and the final sum of 648 velocities stay far below
@@ -558,6 +581,7 @@ int main(void)
         cmocka_unit_test(zero_force_beyond_rc),
         cmocka_unit_test(newton_third_law),
         cmocka_unit_test(momentum_conserved),
+        cmocka_unit_test(drift_is_not_heat),
         cmocka_unit_test(lees_edwards_min_image),
         cmocka_unit_test(lees_edwards_wrap),
         cmocka_unit_test(le_offset_increment),
