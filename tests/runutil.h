@@ -39,6 +39,18 @@ static inline int run_quiet(const char *scene, const char *outdir, int threads)
     return run_scene(&o);
 }
 
+/* Write scene text `text` into a fresh temporary directory `dir` and run it
+ * into `out` (= dir/out) on the default thread count; returns run_scene's status. */
+static inline int run_scene_text(const char *tag, const char *text, char *dir, size_t dlen, char *out, size_t olen)
+{
+    char scene[600];
+    make_tmpdir(dir, dlen, tag);
+    snprintf(scene, sizeof scene, "%s/scene.cfg", dir);
+    snprintf(out, olen, "%s/out", dir);
+    write_text(scene, text);
+    return run_quiet(scene, out, 0);
+}
+
 /* value and stderr of a quantity in summary.tsv; returns 0 if found. */
 static inline int summary_get(const char *dir, const char *key, double *value, double *se)
 {

@@ -21,13 +21,8 @@ static const char *CYLINDER =
 static void drag_equals_body_force(void **state)
 {
     (void)state;
-    char dir[256], scene[300];
-    make_tmpdir(dir, sizeof dir, "bodies");
-    snprintf(scene, sizeof scene, "%s/cyl.cfg", dir);
-    write_text(scene, CYLINDER);
-    char out[300];
-    snprintf(out, sizeof out, "%s/out", dir);
-    assert_int_equal(run_quiet(scene, out, 1), 0);
+    char dir[512], out[600];   /* an m = 0 scene: one thread by default */
+    assert_int_equal(run_scene_text("bodies", CYLINDER, dir, sizeof dir, out, sizeof out), 0);
     double fx = 0, fxe = 0, fy = 0, fye = 0, u = 0, ue = 0, a = 0, ae = 0;
     assert_int_equal(summary_get(out, "force_on_cyl_x", &fx, &fxe), 0);
     assert_int_equal(summary_get(out, "force_on_cyl_y", &fy, &fye), 0);

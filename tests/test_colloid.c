@@ -152,12 +152,8 @@ static const char *SCENE =
 static void spring_extension_equipartition(void **state)
 {
     (void)state;
-    char dir[512], scene[600], out[600];
-    make_tmpdir(dir, sizeof dir, "colloid");
-    snprintf(scene, sizeof scene, "%s/scene.cfg", dir);
-    snprintf(out, sizeof out, "%s/out", dir);
-    write_text(scene, SCENE);
-    const int rc = run_quiet(scene, out, 0);
+    char dir[512], out[600];
+    const int rc = run_scene_text("colloid", SCENE, dir, sizeof dir, out, sizeof out);
     double x = NAN, se = NAN, want = NAN, z;
     summary_get(out, "colloid_spring_extension_rms", &x, &se);
     summary_get(out, "colloid_spring_extension_rms_equipartition", &want, &z);

@@ -30,12 +30,8 @@ static const char *SCENE =
 static void groot_warren_temperature(void **state)
 {
     (void)state;
-    char dir[512], scene[600], out[600];
-    make_tmpdir(dir, sizeof dir, "thermostat");
-    snprintf(scene, sizeof scene, "%s/scene.cfg", dir);
-    snprintf(out, sizeof out, "%s/out", dir);
-    write_text(scene, SCENE);
-    const int rc = run_quiet(scene, out, 0);
+    char dir[512], out[600];
+    const int rc = run_scene_text("thermostat", SCENE, dir, sizeof dir, out, sizeof out);
     double T = NAN, se = NAN, np = 0, npse = 0;
     const int got = summary_get(out, "temperature", &T, &se);
     summary_get(out, "particles", &np, &npse);
