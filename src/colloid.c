@@ -3,6 +3,7 @@
 #include <string.h>
 #include <math.h>
 #include "colloid.h"
+#include "forces.h"
 
 /* v' = R(q) v for a unit quaternion q = (w, x, y, z) */
 static void rotate(const double q[4], const double v[3], double out[3])
@@ -20,7 +21,6 @@ int colloid_configure(Scene *sc, const config_setting_t *g, const System *s, con
 {
     *out = NULL;
     if (s->box.dim != 3) return scene_fail(sc, g, "spring-model colloids need dimension = 3");
-    if (s->box.shear_rate != 0.0) return scene_fail(sc, g, "colloids with Lees-Edwards shear are not supported yet");
     Colloids *c = calloc(1, sizeof *c);
     if (!c) return scene_fail(sc, g, "out of memory");
     const char *tn;
@@ -81,12 +81,10 @@ void colloid_free(Colloids *c)
 void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3])
 {
     double r[3];
+    int img[3] = {0, 0, 0};
     rotate(c->q + 4 * b, c->body[k], r);
-    for (int d = 0; d < 3; d++) {
-        out[d] = c->R[3 * b + d] + r[d];
-        if (out[d] >= box->L[d]) out[d] -= box->L[d];
-        else if (out[d] < 0.0) out[d] += box->L[d];
-    }
+    for (int d = 0; d < 3; d++) out[d] = c->R[3 * b + d] + r[d];
+    box_wrap(box, out, img, NULL, NULL);   /* a site across y: the Lees-Edwards shift in x */
 }
 
 int colloid_place(Colloids *c, System *s)
@@ -100,6 +98,10 @@ int colloid_place(Colloids *c, System *s)
         const int ia[3] = {ix, iy, iz};
         for (int d = 0; d < 3; d++) c->R[3 * b + d] = (ia[d] + 0.5) * s->box.L[d] / k;
         c->q[4 * b] = 1.0;
+        /* under shear the body starts with the flow: the streaming velocity at
+         * its centre and the flow's spin, omega_z = -rate / 2 */
+        c->V[3 * b] = box_stream_vx(&s->box, c->R[3 * b + 1]);
+        c->L[3 * b + 2] = -0.5 * s->box.shear_rate * c->inertia;
     }
     /* the particles of the colloid type, in array order at set-up, fill the sites */
     int j = 0;
@@ -107,7 +109,7 @@ int colloid_place(Colloids *c, System *s)
         if (s->type[i] != c->type) continue;
         const int b = j / COLLOID_P, site = j % COLLOID_P;
         c->ids[j] = s->id[i];
-        colloid_site(c, b, site, &s->box, s->x + 3 * i);
+        colloid_site(c, b, site, &s->box, s->x + 3 * i);   /* velocities (with the flow) are drawn after */
         j++;
     }
     return 0;
@@ -117,10 +119,10 @@ void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[
 {
     double *R = c->R + 3 * b, *V = c->V + 3 * b, *q = c->q + 4 * b, *L = c->L + 3 * b;
     /* Newton: symplectic Euler for the centre */
+    (void)box;
     for (int d = 0; d < 3; d++) {
         V[d] += dt * F[d] / c->mass;
-        R[d] += dt * V[d];
-        if (box->L[d] > 0) R[d] -= floor(R[d] / box->L[d]) * box->L[d];
+        R[d] += dt * V[d];   /* wrapped by colloid_step, with the offset of the time R belongs to */
     }
     /* Euler, isotropic inertia: dL/dt = T, omega = L / I; the orientation turns
      * by the exact rotation of angle |omega| dt about omega */
@@ -141,35 +143,69 @@ void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[
     }
 }
 
-void colloid_step(Colloids *c, System *s)
+void colloid_step(Colloids *c, System *s, PairVirial *pv)
 {
     for (int i = 0; i < s->n; i++) c->index[s->id[i]] = i;
+    /* the centres moved last step belong to this step: wrap them now, with this
+     * step's Lees-Edwards offset (the shift of x and of V_x across y) */
+    for (int b = 0; b < c->ncol; b++) {
+        int img[3] = {0, 0, 0};
+        box_wrap(&s->box, c->R + 3 * b, img, &c->V[3 * b], NULL);
+    }
     double ext2 = 0.0;
     for (int b = 0; b < c->ncol; b++) {
         double *F = c->F + 3 * b, *T = c->T + 3 * b;
+        const double *R = c->R + 3 * b;
         for (int d = 0; d < 3; d++) F[d] = T[d] = 0.0;
         for (int k = 0; k < COLLOID_P; k++) {
             const int i = c->index[c->ids[b * COLLOID_P + k]];
-            double site[3], arm[3], dr[3];
-            colloid_site(c, b, k, &s->box, site);
+            double arm[3], dr[3], fs[3];
             rotate(c->q + 4 * b, c->body[k], arm);
-            for (int d = 0; d < 3; d++) dr[d] = s->x[3 * i + d] - site[d];
+            /* r_i - r_bar_i, minimum image (Lees-Edwards aware): the site R + arm
+             * need not be wrapped */
+            for (int d = 0; d < 3; d++) dr[d] = s->x[3 * i + d] - (R[d] + arm[d]);
             box_min_image(&s->box, dr, NULL);
             for (int d = 0; d < 3; d++) {
-                const double fs = -c->H * dr[d];    /* eq. 30: F_S = -H (r_i - r_bar_i) */
-                s->f[3 * i + d] += fs;
-                F[d] -= fs;                          /* reaction on the reference body */
+                fs[d] = -c->H * dr[d];               /* eq. 30: F_S = -H (r_i - r_bar_i) */
+                s->f[3 * i + d] += fs[d];
+                F[d] -= fs[d];                       /* reaction on the reference body */
             }
             /* torque of the reaction about the centre: arm x (H dr) */
             T[0] += c->H * (arm[1] * dr[2] - arm[2] * dr[1]);
             T[1] += c->H * (arm[2] * dr[0] - arm[0] * dr[2]);
             T[2] += c->H * (arm[0] * dr[1] - arm[1] * dr[0]);
             ext2 += dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2];
+            if (!pv) continue;
+            /* Spring virial. The body carries its momentum at its centre R, so the
+             * momentum a spring passes from particle i to body b travels from R to
+             * r_i: the pair (i, b) adds (r_i - R) F_S = (dr + arm) F_S (the
+             * molecular virial of the body; the site form dr F_S alone misses the
+             * stresslet arm F_S). With sum_b M V'V' in the kinetic part, d/dt of
+             * sum m r v + sum M R V is exactly (kinetic + virial) V, so the mean
+             * stress is the momentum flux (tests/test_colloid.c). */
+            double t[9];
+            for (int a = 0; a < 3; a++)
+                for (int e = 0; e < 3; e++) t[3 * a + e] = (dr[a] + arm[a]) * fs[e];
+            for (int q = 0; q < 9; q++) pv->W[PART_CONSERVATIVE][q / 3][q % 3] += t[q];
+            pv->epot += 0.5 * c->H * (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
+            if (pv->nbins > 0)
+                ik_distribute(pv->Wbin + (size_t)PART_CONSERVATIVE * 9 * pv->nbins, pv->nbins, pv->bin_axis,
+                              s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], dr[pv->bin_axis] + arm[pv->bin_axis], t);
         }
     }
     if (c->record && c->nsteps++ % 10 == 0) series_push(&c->ext2, ext2 / (c->ncol * COLLOID_P));
     /* the sites of the next step, from this step's reactions */
     for (int b = 0; b < c->ncol; b++) colloid_body_advance(c, b, c->F + 3 * b, c->T + 3 * b, s->dt, &s->box);
+}
+
+void colloid_kinetic(const Colloids *c, const Box *box, double K[9])
+{
+    for (int b = 0; b < c->ncol; b++) {
+        const double *V = c->V + 3 * b;
+        const double u[3] = {V[0] - box_stream_vx(box, c->R[3 * b + 1]), V[1], V[2]};
+        for (int a = 0; a < 3; a++)
+            for (int e = 0; e < 3; e++) K[3 * a + e] += c->mass * u[a] * u[e];
+    }
 }
 
 void colloid_write(const Colloids *c, const System *s, FILE *summary, int nblocks)

@@ -12,6 +12,7 @@
 #include "system.h"
 #include "scene.h"
 #include "blockavg.h"
+#include "forces.h"
 
 enum { COLLOID_P = 6 };
 
@@ -45,9 +46,14 @@ int  colloid_place(Colloids *c, System *s);
 /* Reference site k of body b (eq. 30: r_bar). */
 void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3]);
 /* Add the spring forces -H (r_i - r_bar_i) to s->f, collect the reactions on
- * the bodies, then advance the bodies by one step with them (Newton-Euler). */
-void colloid_step(Colloids *c, System *s);
-/* Advance body b by dt under force F and torque T (public for tests). */
+ * the bodies, then advance the bodies by one step with them (Newton-Euler).
+ * pv != NULL: add the springs' virial sum (r_i - R_body) F_S (and their
+ * energy) to its conservative part, with the bodies at this step's place. */
+void colloid_step(Colloids *c, System *s, PairVirial *pv);
+/* K += sum_b M (V_b - u_stream)(V_b - u_stream): the bodies' momentum flux. */
+void colloid_kinetic(const Colloids *c, const Box *box, double K[9]);
+/* Advance body b by dt under force F and torque T (public for tests); the
+ * centre is left unwrapped (colloid_step wraps it at the next step). */
 void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[3], double dt, const Box *box);
 /* Summary rows: spring extension, its equipartition value sqrt(3 kBT / H). */
 void colloid_write(const Colloids *c, const System *s, FILE *summary, int nblocks);

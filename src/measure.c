@@ -4,6 +4,7 @@
 #include <math.h>
 #include "measure.h"
 #include "rotation.h"
+#include "colloid.h"
 
 static int block_of(const Measure *m, long long sample)
 {
@@ -95,6 +96,7 @@ static void sample_thermo(Measure *m, const System *s, const PairVirial *pv)
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) K[3 * a + b] += t->mass * c[a] * c[b];
     }
+    if (m->colloids) colloid_kinetic(m->colloids, &s->box, K);   /* the rigid bodies' momentum flux */
     const double V = volume(&s->box);
     for (int k = 0; k < 9; k++) {
         series_push(&m->P[STRESS_KINETIC][k], K[k] / V);

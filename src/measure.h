@@ -54,6 +54,7 @@ typedef struct {
     Series frozen_force[DPD_MAX_TYPES][3];
     FieldMeasure field;       /* about points, on grids, torques, mean velocities */
     Tcaf tcaf;                /* transverse current autocorrelation (tcaf.h) */
+    const struct Colloids *colloids;   /* rigid bodies whose momentum flux joins the stress, or NULL */
     Series frozen_torque[DPD_MAX_TYPES][3], rot_temperature;   /* rotation scenes */
     Series frozen_drag[DPD_MAX_TYPES][3], frozen_torque_random[DPD_MAX_TYPES][3];
     int n;

@@ -339,6 +339,7 @@ int run_scene(const RunOptions *opt)
     }
     if (rc.colloids && m.tcaf.on && m.tcaf.include_bodies)   /* the bodies' momentum joins the TCAF */
         tcaf_set_bodies(&m.tcaf, &s, rc.colloids->ncol, rc.colloids->R, rc.colloids->V, rc.colloids->mass);
+    if (rc.colloids) m.colloids = rc.colloids;   /* the bodies' momentum flux joins the stress */
     double *wbin = m.prof_on ? calloc((size_t)m.prof_bins * PAIR_PARTS * 9, sizeof(double)) : NULL;
     PairVirial pv = {.bin_axis = m.prof_axis, .nbins = m.prof_on ? m.prof_bins : 0, .Wbin = wbin};
     const long long total = rc.equilibration + rc.steps;
@@ -392,7 +393,7 @@ int run_scene(const RunOptions *opt)
     } else {
         forces_compute(&s, &nl, &fw, NULL);
         if (rc.bonds) bonds_forces(rc.bonds, &s, NULL);
-        if (rc.colloids) colloid_step(rc.colloids, &s);   /* particles start on their sites */
+        if (rc.colloids) colloid_step(rc.colloids, &s, NULL);   /* particles start on their sites */
     }
     if (!resumed) st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
     st.prod_cpu0 = resumed ? -1.0 : cpu_now();
@@ -436,7 +437,7 @@ int run_scene(const RunOptions *opt)
             want = prod >= 0 && measure_wants_virial(&m, prod);
             forces_compute(&s, &nl, &fw, want ? &pv : NULL);
             if (rc.bonds) { bonds_forces(rc.bonds, &s, want ? &pv : NULL); bonds_sample(rc.bonds, &s, prod); }
-            if (rc.colloids) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s); }   /* eq. 30 */
+            if (rc.colloids) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s, want ? &pv : NULL); }   /* eq. 30 */
             t3 = wall_now();
             integrate_correct(&s);
             t4 = wall_now();

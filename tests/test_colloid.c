@@ -9,6 +9,16 @@
  *   the harmonic bounds 2 / sqrt(H / m) (fixed site) and 2 / sqrt(H / mu)
  *   (mu the reduced mass with the body), widened by a factor 2 because the
  *   body lags by one step.
+ * - Stress (momentum flux): for one colloid without DPD forces, d/dt of
+ *   G = sum m r v + M R V is (K + W) with K = sum m v v + M V V and W the
+ *   spring virial sum (r_i - R) F_S that colloid_step adds; G stays bounded,
+ *   so the time mean of K + W is below 2 max|G| / T (+1 % of K for the
+ *   O(dt) lag of the body). The colloid spins about (1, 1, 0) so that K_xy
+ *   is not zero. Without W, or with the site form (r_i - r_bar_i) F_S alone,
+ *   the same mean is far outside that bound (checked: the test can fail).
+ * - Lees-Edwards: a colloid carried across y = L by its velocity (rate 0.5,
+ *   offset 3.3) keeps its spring extension small and its body's V_x jumps
+ *   by -rate L_y with its particles'.
  * - In a DPD solvent the rms spring extension equals sqrt(3 kBT / H) within
  *   3 standard errors plus 3 % (the body also fluctuates a little). */
 #include "runutil.h"
@@ -75,7 +85,7 @@ static void spring_reactions_balance(void **state)
     uint64_t rng = 3;
     for (int k = 0; k < 3 * s.n; k++) s.x[k] += 0.1 * (2 * tu_uniform(&rng) - 1);
     memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
-    colloid_step(c, &s);
+    colloid_step(c, &s, NULL);
     for (int d = 0; d < 3; d++) {
         double sum = c->F[d];
         for (int i = 0; i < s.n; i++) sum += s.f[3 * i + d];
@@ -111,7 +121,7 @@ static double energy_growth(double H, double dt, int steps)
         if (st == 0) e0 = e;
         if (!(e <= emax)) emax = e;
         if (!isfinite(e) || e > 1e6 * e0) break;
-        colloid_step(c, &s);
+        colloid_step(c, &s, NULL);
         if (st > 0) for (int k = 0; k < 3 * s.n; k++) s.v[k] += 0.5 * dt * s.f[k];
     }
     colloid_free(c);
@@ -135,6 +145,130 @@ static void stable_at_chosen_step(void **state)
     const double lo = 0.5 * 2.0 / sqrt(H / 1.0), hi = 2.0 * 2.0 / sqrt(H / (6.0 / 7.0));
     print_message("largest stable dt at H = %g: %.4f (harmonic bounds %.4f .. %.4f, widened x2)\n", H, dt_stable, lo, hi);
     CHECK_TRUE(dt_stable > lo && dt_stable < hi, "largest stable dt %g outside [%g, %g]", dt_stable, lo, hi);
+}
+
+static void spring_virial_balances_momentum_flux(void **state)
+{
+    (void)state;
+    System s;
+    const double dt = 0.002;
+    const int steps = 50000;
+    Colloids *c = one_colloid(&s, 400.0, dt);
+    uint64_t rng = 11;
+    /* spin about (1, 1, 0) / sqrt 2 at |omega| = 2, plus random velocities */
+    const double w[3] = {M_SQRT2, M_SQRT2, 0.0};
+    for (int d = 0; d < 3; d++) { c->L[d] = c->inertia * w[d]; c->V[d] = 0.1 * (2 * tu_uniform(&rng) - 1); }
+    double p[3] = {0, 0, 0};
+    for (int i = 0; i < s.n; i++) {
+        double a[3];
+        for (int d = 0; d < 3; d++) a[d] = s.x[3 * i + d] - c->R[d];
+        const double wxa[3] = {w[1] * a[2] - w[2] * a[1], w[2] * a[0] - w[0] * a[2], w[0] * a[1] - w[1] * a[0]};
+        for (int d = 0; d < 3; d++) { s.v[3 * i + d] = wxa[d] + 0.3 * (2 * tu_uniform(&rng) - 1); p[d] += s.v[3 * i + d]; }
+    }
+    for (int d = 0; d < 3; d++) p[d] += c->mass * c->V[d];
+    for (int d = 0; d < 3; d++) {   /* zero total momentum: G does not depend on the origin */
+        const double u = p[d] / (s.n + c->mass);
+        c->V[d] -= u;
+        for (int i = 0; i < s.n; i++) s.v[3 * i + d] -= u;
+    }
+    PairVirial pv;
+    memset(&pv, 0, sizeof pv);
+    double KW[9] = {0}, Km[9] = {0}, KWsite[9] = {0}, Gmax[9] = {0};
+    memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+    colloid_step(c, &s, NULL);
+    for (int st = 0; st < steps; st++) {
+        for (int k = 0; k < 3 * s.n; k++) { s.v[k] += 0.5 * dt * s.f[k]; s.x[k] += dt * s.v[k]; }
+        memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+        forces_zero_virial(&pv);
+        double R[3], Wsite[9] = {0};
+        memcpy(R, c->R, sizeof R);
+        /* the site form, for contrast: sum (r_i - r_bar_i) F_S */
+        for (int k = 0; k < COLLOID_P; k++) {
+            double site[3], dr[3];
+            colloid_site(c, 0, k, &s.box, site);
+            for (int d = 0; d < 3; d++) dr[d] = s.x[3 * k + d] - site[d];
+            for (int a = 0; a < 3; a++)
+                for (int e = 0; e < 3; e++) Wsite[3 * a + e] += dr[a] * (-c->H * dr[e]);
+        }
+        colloid_step(c, &s, &pv);
+        for (int k = 0; k < 3 * s.n; k++) s.v[k] += 0.5 * dt * s.f[k];
+        for (int a = 0; a < 3; a++)
+            for (int e = 0; e < 3; e++) {
+                double K = c->mass * c->V[a] * c->V[e], G = c->mass * R[a] * c->V[e];
+                for (int i = 0; i < s.n; i++) {
+                    K += s.v[3 * i + a] * s.v[3 * i + e];
+                    G += s.x[3 * i + a] * s.v[3 * i + e];
+                }
+                Km[3 * a + e] += K / steps;
+                KW[3 * a + e] += (K + pv.W[PART_CONSERVATIVE][a][e]) / steps;
+                KWsite[3 * a + e] += (K + Wsite[3 * a + e]) / steps;
+                if (fabs(G) > Gmax[3 * a + e]) Gmax[3 * a + e] = fabs(G);
+            }
+    }
+    const double T = steps * dt, Kscale = (Km[0] + Km[4] + Km[8]) / 3.0;
+    print_message("<K>: xx %.4f xy %.4f; <K + W>: xx %.2e xy %.2e; site form <K + W_site>: xx %.3f xy %.3f; "
+                  "2 max|G| / T: xx %.3f xy %.3f\n", Km[0], Km[1], KW[0], KW[1], KWsite[0], KWsite[1],
+                  2 * Gmax[0] / T, 2 * Gmax[1] / T);
+    for (int q = 0; q < 9; q++) {
+        const double tol = 2.0 * Gmax[q] / T + 0.01 * Kscale;
+        CHECK_ABS("time mean of kinetic + spring virial (momentum flux balance)", KW[q], 0.0, tol);
+    }
+    /* the test can fail: K alone, and K with the site form, break the balance */
+    CHECK_TRUE(fabs(Km[0]) > 5 * (2.0 * Gmax[0] / T + 0.01 * Kscale), "K_xx alone %g is not outside the bound", Km[0]);
+    CHECK_TRUE(fabs(Km[1]) > 5 * (2.0 * Gmax[1] / T + 0.01 * Kscale), "K_xy alone %g is not outside the bound", Km[1]);
+    CHECK_TRUE(fabs(KWsite[0]) > 5 * (2.0 * Gmax[0] / T + 0.01 * Kscale), "site form xx %g balances", KWsite[0]);
+    colloid_free(c);
+    system_free(&s);
+}
+
+static void lees_edwards_crossing(void **state)
+{
+    (void)state;
+    System s;
+    const double dt = 0.005, rate = 0.5;
+    Colloids *c = one_colloid(&s, 400.0, dt);
+    const double L[3] = {10.0, 10.0, 10.0};
+    box_init(&s.box, 3, L, rate);
+    s.box.le_offset = 3.3;
+    /* body and particles move up at v_y = 1 with v_x = 0.2 from y = 9 */
+    c->R[1] = 9.0;
+    for (int k = 0; k < COLLOID_P; k++) colloid_site(c, 0, k, &s.box, s.x + 3 * k);
+    c->V[0] = 0.2; c->V[1] = 1.0;
+    for (int i = 0; i < s.n; i++) { s.v[3 * i] = 0.2; s.v[3 * i + 1] = 1.0; }
+    memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+    colloid_step(c, &s, NULL);
+    double ext_max = 0.0;
+    const double y0 = c->R[1];
+    int crossed = 0;
+    for (int st = 0; st < 400; st++) {
+        box_advance(&s.box, dt);
+        for (int i = 0; i < s.n; i++) {
+            for (int d = 0; d < 3; d++) { s.v[3 * i + d] += 0.5 * dt * s.f[3 * i + d]; s.x[3 * i + d] += dt * s.v[3 * i + d]; }
+            box_wrap(&s.box, s.x + 3 * i, s.img + 3 * i, &s.v[3 * i], NULL);
+        }
+        /* particles and sites at the same time, before the body moves on */
+        for (int k = 0; k < COLLOID_P; k++) {
+            double site[3], dr[3];
+            colloid_site(c, 0, k, &s.box, site);
+            for (int d = 0; d < 3; d++) dr[d] = s.x[3 * k + d] - site[d];
+            box_min_image(&s.box, dr, NULL);
+            const double e = sqrt(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
+            if (e > ext_max) ext_max = e;
+        }
+        memset(s.f, 0, 3 * (size_t)s.n * sizeof(double));
+        const double ybefore = c->R[1];
+        colloid_step(c, &s, NULL);
+        if (c->R[1] < ybefore - 5.0) crossed = 1;
+        for (int k = 0; k < 3 * s.n; k++) s.v[k] += 0.5 * dt * s.f[k];
+    }
+    print_message("Lees-Edwards crossing: body y %.2f -> %.2f, V_x %.4f (before 0.2; jump -rate L = %.1f), "
+                  "largest spring extension %.2e\n", y0, c->R[1], c->V[0], -rate * L[1], ext_max);
+    CHECK_TRUE(crossed, "the body did not cross y = L");
+    CHECK_ABS("body V_x after crossing up: 0.2 - rate L_y", c->V[0], 0.2 - rate * L[1], 1e-9);
+    CHECK_ABS("particle V_x after crossing up: 0.2 - rate L_y", s.v[0], 0.2 - rate * L[1], 1e-9);
+    CHECK_TRUE(ext_max < 1e-6, "spring extension %g across the sheared boundary", ext_max);
+    colloid_free(c);
+    system_free(&s);
 }
 
 static const char *SCENE =
@@ -169,6 +303,8 @@ int main(void)
         cmocka_unit_test(free_body_keeps_angular_momentum),
         cmocka_unit_test(spring_reactions_balance),
         cmocka_unit_test(stable_at_chosen_step),
+        cmocka_unit_test(spring_virial_balances_momentum_flux),
+        cmocka_unit_test(lees_edwards_crossing),
         cmocka_unit_test(spring_extension_equipartition),
     };
     return cmocka_run_group_tests_name("colloid", tests, NULL, NULL);

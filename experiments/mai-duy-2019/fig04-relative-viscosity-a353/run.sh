@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Figs 4-5 of Mai-Duy et al. 2019: relative viscosity eta_r(phi) of the spring-model suspension
+# under simple shear, eta_susp / eta_solvent with four choices of the solvent viscosity:
+#   original: the solvent's shear viscosity (same box, rate, run length);
+#   TCAF:     eta_eff = the constrained system's eta(k -> 0) (Table 2, tab02-effective-viscosity);
+#   cube, sphere: the free system's eta(k) at k = 2 pi / lambda, lambda of eq. 31 / eq. 32.
+# fig05-relative-viscosity-a650 runs this script with A=6.50.
+. "$DPD_ROOT/tools/lib/exp.sh"
+A=${A:-3.53}
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+T02=$HERE/../tab02-effective-viscosity
+# "kp:kq": the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a box
+# 15 kq / kp (same lattice spacing, particles per colloid cell and phi as the paper's)
+case $TIER in
+    quick) PAIRS="8:4 13:7"; TCAF_PAIRS="8:4"; LSOLV=8
+           shear=(--set dt=0.01 --set equilibration=200 --set steps=800)
+           tcaf=(--set dt=0.01 --set equilibration=200 --set steps=1200 --set measure.tcaf.every=1
+                 --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10 --set measure.tcaf.n2max=9) ;;
+    # reduced: the paper's box, dt and TCAF settings at two phi, shorter runs (not the paper tier)
+    reduced) PAIRS="8:8 13:13"; TCAF_PAIRS="13:13"; LSOLV=15
+           shear=(--set equilibration=1000 --set steps=3000); tcaf=(--set equilibration=500 --set steps=3000) ;;
+    paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; TCAF_PAIRS=$PAIRS; LSOLV=15
+           shear=(); tcaf=() ;;
+esac
+rep=(--set "pairs.[0].a=$A")
+rep3=(--set "pairs.[0].a=$A" --set "pairs.[1].a=$A" --set "pairs.[2].a=$A")
+dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
+emit_from solvent viscosity eta_solvent
+emit_from solvent temperature temperature_solvent
+printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\n' > "$OUT/eta_r.tsv"
+i=0
+for pair in $PAIRS; do
+    kp=${pair%:*} kq=${pair#*:}
+    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.2f", 6 * k^3 / (13500 + 6 * k^3) }')
+    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
+    count=$((6 * kq * kq * kq))
+    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    dpd_run susp_$tag "$HERE/suspension-shear.cfg" "${shear[@]}" "${rep3[@]}" "${geo[@]}" \
+        --set "colloids.per_axis=$kq" --set "seed=$((40200 + i))"
+    np=$(get susp_$tag particles | cut -f1)
+    awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
+    emit_from susp_$tag viscosity eta_susp_$tag
+    emit_from susp_$tag temperature temperature_$tag
+    emit_from susp_$tag colloid_spring_extension_rms spring_extension_rms_$tag
+    emit_ratio eta_r_original_$tag susp_$tag viscosity solvent viscosity
+    if [[ " $TCAF_PAIRS " == *" $pair "* ]]; then
+        # the TCAF construction of tab02-effective-viscosity at this phi and repulsion
+        dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" --set "seed=$((40300 + 2 * i))"
+        dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
+            --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
+        emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
+        emit_from constrained_$tag tcaf_eta_k0 eta_eff_$tag
+        emit_ratio eta_r_tcaf_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
+        lc=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", L / k }')                          # eq. 31
+        ls=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", (3 / (4 * 3.14159265358979 * k^3 / L^3))^(1/3) }')  # eq. 32
+        awk -F'\t' -v lambda="$lc" -v name="eta_free_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+        awk -F'\t' -v lambda="$ls" -v name="eta_free_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+        # ratios and the TCAF - original difference (errors of the shared eta_susp counted once)
+        awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 }
+            function r(name, den) { if (!(den in v) || v[den] == "nan") { printf "%s\tnan\tnan\n", name; return }
+                x = v["eta_susp_" t] / v[den]; e = x * sqrt((s["eta_susp_" t] / v["eta_susp_" t])^2 + (s[den] / v[den])^2)
+                printf "%s\t%.10g\t%.4g\n", name, x, e }
+            END { r("eta_r_cube_" t, "eta_free_cube_" t); r("eta_r_sphere_" t, "eta_free_sphere_" t)
+                  es = v["eta_susp_" t]; a = v["eta_eff_" t]; b = v["eta_solvent"]
+                  d = es / a - es / b
+                  e = sqrt((s["eta_susp_" t] * (1 / a - 1 / b))^2 + (es * s["eta_eff_" t] / a^2)^2 + (es * s["eta_solvent"] / b^2)^2)
+                  printf "eta_r_tcaf_minus_original_%s\t%.10g\t%.4g\n", t, d, e }' "$OUT/summary.tsv" > "$OUT/.rows"
+        cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+        cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
+        cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
+    fi
+    awk -F'\t' -v t="$tag" '{ v[$1] = $2 "\t" $3 }
+        function g(q) { return (q in v) ? v[q] : "nan\tnan" }
+        END { split(v["phi_" t], p, "\t"); printf "%.6f\t%s\t%s\t%s\t%s\n", p[1], g("eta_r_original_" t), g("eta_r_tcaf_" t), g("eta_r_cube_" t), g("eta_r_sphere_" t) }' \
+        "$OUT/summary.tsv" >> "$OUT/eta_r.tsv"
+    i=$((i + 1))
+done

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Table 2 of Mai-Duy et al. 2019: at each phi, eta(k) of the free and of the spring-constrained
+# system by TCAF (as fig02-length-scale), the constrained eta(k -> 0) = eta_eff and the free
+# system's k at which eta_free(k) equals it = k_eff (keff.awk).
+. "$DPD_ROOT/tools/lib/exp.sh"
+# PAIRS: "kp:kq" = the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a box
+# 15 kq / kp: the same lattice spacing, particles per colloid cell and phi as the paper's.
+case $TIER in
+    quick) PAIRS="8:4"
+           tier=(--set dt=0.01 --set equilibration=300 --set steps=3000 --set measure.tcaf.every=1
+                 --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10 --set measure.tcaf.n2max=9) ;;
+    paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; tier=() ;;
+esac
+printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\n' > "$OUT/table2_data.tsv"
+i=0
+for pair in $PAIRS; do
+    kp=${pair%:*} kq=${pair#*:}
+    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')
+    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
+    count=$((6 * kq * kq * kq))
+    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    dpd_run free_$tag free.cfg "${tier[@]}" "${geo[@]}" --set "seed=$((50300 + 2 * i))"
+    dpd_run constrained_$tag constrained.cfg "${tier[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" --set "seed=$((50301 + 2 * i))"
+    np=$(get free_$tag particles | cut -f1)
+    awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
+    emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
+    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
+    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
+    emit_from constrained_$tag temperature temperature_constrained_$tag
+    ec=$(get constrained_$tag tcaf_eta_k0)
+    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
+    cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
+    awk -F'\t' -v t="$tag" -v kp="$kp" '
+        function g(q) { return (q in v) ? v[q] "\t" s[q] : "nan\tnan" }
+        { v[$1] = $2; s[$1] = $3 }
+        END { printf "%s\t%s\t%s\t%s\t%s\t%s\n", kp, v["phi_" t], g("k_eff_" t), g("lambda_eff_" t), g("eta_eff_" t), g("eta_k0_free_" t) }' \
+        "$OUT/summary.tsv" >> "$OUT/table2_data.tsv"
+    i=$((i + 1))
+done
+# Table 2 beside the paper's values (rows of the phi run; value +- stderr)
+awk -F'\t' 'NR == FNR { if ($1 !~ /^#/ && $1 != "k") { pk[$1] = $3; pl[$1] = $4; pe[$1] = $5 }; next }
+    FNR == 1 { print "k\tphi\tk_eff\tk_eff, paper\tlambda_eff\tlambda_eff, paper\teta_eff\teta_eff, paper\tfree eta(k -> 0)"; next }
+    function pm(v, e) { return v == "nan" ? "none" : sprintf("%.3f +- %.3f", v, e) }
+    { printf "%s\t%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, pm($3, $4), pk[$1], pm($5, $6), pl[$1], pm($7, $8), pe[$1], pm($9, $10) }' \
+    paper-table2.tsv "$OUT/table2_data.tsv" > "$OUT/table2.tsv"
+# Side check (not a reproduction): the paper's (k_eff, eta_eff) pairs against the eta(k) of the
+# pure solvent (n = 4) of fig01-viscosity-wavenumber's committed paper tier, read-only.
+F01=$DPD_ROOT/results/mai-duy-2019/fig01-viscosity-wavenumber/paper/tcaf_eta.tsv
+if [ -f "$F01" ]; then
+    printf 'phi\tk_eff, paper\teta_eff, paper\tsolvent eta(k_eff, paper) (fig01)\tse\n' > "$OUT/solvent_at_paper_keff.tsv"
+    awk -F'\t' '$1 !~ /^#/ && $1 != "k" { print $2 "\t" $3 "\t" $4 "\t" $5 }' paper-table2.tsv | \
+    while IFS=$'\t' read -r phi ke le ee; do
+        r=$(awk -F'\t' -v lambda="$le" -v name=x -f etak.awk "$F01")
+        printf '%s\t%s\t%s\t%s\n' "$phi" "$ke" "$ee" "$(echo "$r" | cut -f2-3)" >> "$OUT/solvent_at_paper_keff.tsv"
+    done
+fi
