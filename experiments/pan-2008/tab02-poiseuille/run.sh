@@ -30,7 +30,7 @@ for r in $ROWS; do
         F = 6*pi*m*$1*R * (1 - q^2/9) / (1 - 0.6526*q + 0.3160*q^3 - 0.242*q^4)
         T = 8/3*pi*m*$1*R^3/h * (1 + 0.0758*q + 0.049*q^2)
         printf "%.10g %.10g\n", F, T}')
-    F=$(get row$r force_on_colloid_x) T=$(get row$r torque_on_colloid_y)
+    F=$(get row$r drag_on_colloid_x) T=$(get row$r torque_on_colloid_y)   # both without the zero-mean random part
     emit "drag_row$r" $F
     emit "torque_row$r" $T
     emit "drag_theory_row$r" "$Fth" 0

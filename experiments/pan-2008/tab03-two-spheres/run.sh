@@ -39,7 +39,7 @@ for r in $ROWS; do
     # makes it the mean drag exactly, as the paper's nearly constant F_sim suggests); the measured
     # mean of the two drags is kept as a check (drag_measured_row*), its noise is 10x larger.
     # Torque: antisymmetric, (T_a - T_b) / 2 about z (sphere a at lower y).
-    Fm=$(paste <(get row$r force_on_colloid_a_x) <(get row$r force_on_colloid_b_x) | awk -F'\t' '{printf "%.10g\t%.4g", ($1+$3)/2, sqrt($2^2+$4^2)/2}')
+    Fm=$(paste <(get row$r drag_on_colloid_a_x) <(get row$r drag_on_colloid_b_x) | awk -F'\t' '{printf "%.10g\t%.4g", ($1+$3)/2, sqrt($2^2+$4^2)/2}')
     emit "drag_measured_row$r" $Fm
     F=$(awk -v n=$NF -v g=$G 'BEGIN{printf "%.10g\t0", n*g/2}')
     T=$(paste <(get row$r torque_on_colloid_a_z) <(get row$r torque_on_colloid_b_z) | awk -F'\t' '{printf "%.10g\t%.4g", ($1-$3)/2, sqrt($2^2+$4^2)/2}')
