@@ -225,6 +225,7 @@ static void equipartition_translation_and_rotation(void **state)
     write_text(scene, SCENE_ROT);
     assert_int_equal(run_quiet(scene, out, 1), 0);
     double T = NAN, Tse = NAN, R = NAN, Rse = NAN;
+    assert_int_equal(summary_get(out, "temperature", &T, &Tse), 0);
     assert_int_equal(summary_get(out, "rotational_temperature", &R, &Rse), 0);
     CHECK_ABS("translational temperature", T, 1.0, 0.01 + 3.0 * Tse);
     CHECK_ABS("rotational temperature I <omega^2> / 3", R, 1.0, 0.01 + 3.0 * Rse);
