@@ -7,7 +7,7 @@
 MU=3.6388 R=0.2737 NF=3000 G=0.001877 L=10   # paper mu and R; g per fluid particle
 case $TIER in
     quick) RUNS="3.5:2000:15000" ;;                                   # gammaC:equil:steps
-    paper) RUNS="3.5:5000:300000 0.0:20000:100000 7.0:20000:100000" ;;
+    paper) RUNS="3.5:5000:300000 0.0:10000:30000 7.0:10000:30000" ;;
 esac
 # eq. 19: F_ext = 6 pi mu u R with F_ext = N_f g; Hasimoto: F = 6 pi mu u R / K(phi)
 read -r U19 UH PHI < <(awk -v m=$MU -v r=$R -v n=$NF -v g=$G -v L=$L 'BEGIN{pi = 3.141592653589793
