@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make bench: particle-steps per second of the standard DPD system on 1 and 2
-# threads, for 3e3, 2.4e4 and 1e6 particles, and peak memory per particle.
+# threads, for 3e3, 2.4e4 and 1e6 particles, and peak memory per particle; the
+# cost of the rotating-particle terms (Pan 2008); the overdamped solvers.
 # With PEER=1 (make bench-peer) LAMMPS runs the same system in the same session,
 # interleaved with ours, and the ratios are printed. Timing is of the production
 # steps only, after equilibration. Machines are noisy: compare ratios of runs
@@ -102,6 +103,26 @@ awk -v a="${rate[$first,1]}" -v b="${rate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, wall): %.2f\n", a/b}'
 awk -v a="${crate[$first,1]}" -v b="${crate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, process CPU time): %.2f\n", a/b}'
+
+# ---- rotating particles (issue 6): the Pan et al. 2008 fluid (3000 particles) with the shear and
+# rotational pair terms and particle spin, against the same system with rotation = false and
+# gamma_shear = 0 (standard DPD pairs), side by side, 1 thread, best of REPEAT (process CPU time).
+# Target (issue 6): the extra cost below 2x. ROTATION=0 skips it.
+if [ "${ROTATION:-1}" = 1 ]; then
+    rot_rate() {  # extra --set arguments -> best production particle-steps per CPU second
+        local best=0 c k
+        for k in $(seq "$REPEAT"); do
+            "$DPD" run bench/pan-fluid.cfg --out "$out/rotation" --threads 1 --quiet "$@" >/dev/null
+            c=$(awk -F'\t' '$1=="production_particle_steps_per_second_cpu"{print $2}' "$out/rotation/summary.tsv")
+            best=$(awk -v a="$best" -v b="$c" 'BEGIN{print (b > a) ? b : a}')
+        done
+        echo "$best"
+    }
+    with=$(rot_rate) without=$(rot_rate --set rotation=false --set 'pairs.[0].gamma_shear=0.0')
+    echo
+    echo "rotating particles (Pan 2008 fluid, 3000 particles, 1 thread, particle-steps per CPU second):"
+    awk -v a="$with" -v b="$without" 'BEGIN{printf "  with shear + rotational terms %.4g, without %.4g: cost ratio %.2f (target < 2)\n", a, b, b/a}'
+fi
 
 # ---- overdamped solvers (issue 3): the Fig. 2 system of Phan-Thien et al. 2016 at the paper
 # tier, every solver side by side in one run, compared at equal true relative error (1e-6);

@@ -240,6 +240,8 @@ static void initial_velocities(System *s)
         double *v = s->v + 3 * i;
         if (mtot > 0 && s->n_frozen == 0)
             for (int d = 0; d < s->box.dim; d++) v[d] -= p[d] / mtot;
+        /* a mobile type's velocity is its initial drift (a flow started near its steady state) */
+        for (int d = 0; d < s->box.dim; d++) v[d] += t->wall_velocity[d];
         v[0] += box_stream_vx(&s->box, s->x[3 * i + 1]);
     }
     memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));

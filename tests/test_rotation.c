@@ -304,6 +304,30 @@ static void rotation_without_shear_is_standard_run(void **state)
     compare_frames(fa, fb, "standard vs rotation with gamma^S = 0");
 }
 
+/* A mobile type's velocity is its initial drift (used to start the Pan 2008
+ * body-force flows near their steady state): the thermal velocities have zero
+ * mean, the drift is added, and the pair forces conserve momentum, so the mean
+ * velocity stays at the drift to round-off. */
+static void mobile_velocity_is_initial_drift(void **state)
+{
+    (void)state;
+    char scene[600], out[600];
+    snprintf(scene, sizeof scene, "%s/drift.cfg", dir);
+    snprintf(out, sizeof out, "%s/drift", dir);
+    write_text(scene,
+        "dimension = 3; box = [4.0, 4.0, 4.0]; dt = 0.01; seed = 7; equilibration = 0; steps = 50;\n"
+        "rotation = true;\n"
+        "types = ( { name = \"f\"; density = 3.0; velocity = [0.5, -0.25, 0.0]; } );\n"
+        "pairs = ( { types = [\"f\", \"f\"]; a = 25.0; gamma = 4.5; gamma_shear = 4.5; s = 0.5; } );\n"
+        "measure = { every = 1; blocks = 5; };\n");
+    assert_int_equal(run_quiet(scene, out, 1), 0);
+    double vx = NAN, sx = NAN, vy = NAN, sy = NAN;
+    assert_int_equal(summary_get(out, "mean_velocity_f_x", &vx, &sx), 0);
+    assert_int_equal(summary_get(out, "mean_velocity_f_y", &vy, &sy), 0);
+    CHECK_ABS("mean velocity x = drift 0.5 (momentum conserved)", vx, 0.5, 1e-9);
+    CHECK_ABS("mean velocity y = drift -0.25 (momentum conserved)", vy, -0.25, 1e-9);
+}
+
 static int setup(void **state) { (void)state; make_tmpdir(dir, sizeof dir, "rotation"); return 0; }
 static int teardown(void **state) { (void)state; rm_rf(dir); return 0; }
 
@@ -318,6 +342,7 @@ int main(void)
         cmocka_unit_test(equipartition_translation_and_rotation),
         cmocka_unit_test(rotation_threads_bitwise),
         cmocka_unit_test(rotation_without_shear_is_standard_run),
+        cmocka_unit_test(mobile_velocity_is_initial_drift),
     };
     return cmocka_run_group_tests_name("rotation", tests, setup, teardown);
 }

@@ -95,6 +95,7 @@ echo 'iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8
 touch -d '2001-01-01' "$root"/results/x/y/*/summary.tsv
 touch -d '2002-01-01' "$root/figures/x/y/fig.png"
 printf 'phi\teta_r\n0.0119\t1.0273\n0.4940\t5.1700\n' > "$root/data/t.tsv"
+printf 'row\tours\tverdict@\n1\t30.9 +- 0.3\teta\n2\t3.71\tratio\n3\t7\tunbanded\n' > "$root/results/x/y/paper/rows.tsv"
 cat > "$root/paper.md" <<'EOF2'
 ---
 title: Fixture paper
@@ -113,6 +114,8 @@ title: Fixture paper
 <!-- tsv: data/t.tsv -->
 
 Verdicts: y {{verdict:x/y}}; miss {{verdict:x/miss}}; out {{verdict:x/out}}.
+
+<!-- table: x/y/rows.tsv -->
 
 # Environment
 
@@ -162,7 +165,7 @@ M="$tools/mkpaper"; G="$root/build/paper.gen.md"
 T "mkpaper: builds the fixture paper" 0 "$M"
 if [ -f "$G" ]; then
     in_file "mkpaper: placeholders replaced" "$G" '^| experiment | verdict'
-    if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
+    if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
     in_file "mkpaper: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
     in_file "mkpaper: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 |$'
     in_file "mkpaper: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
@@ -178,6 +181,10 @@ if [ -f "$G" ]; then
     in_file "mkpaper: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
     in_file "mkpaper: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
     in_file "mkpaper: results cpu per tier" "$G" 'CPU time: paper 4321.5 s, quick 1.5 s'
+    in_file "mkpaper: table header drops the verdict marker" "$G" '^| row | ours | verdict |$'
+    in_file "mkpaper: table verdict of a banded quantity" "$G" '^| 1 | 30.9 +- 0.3 | pass |$'
+    in_file "mkpaper: table verdict of a one-sided band" "$G" '^| 2 | 3.71 | pass |$'
+    in_file "mkpaper: table quantity without a band" "$G" '^| 3 | 7 | no band |$'
     in_file "mkpaper: figure line" "$G" '^!\[.*\](figures/x/y/fig.png)$'
     in_file "mkpaper: tsv table header" "$G" '^| phi | eta_r |$'
     in_file "mkpaper: tsv table row" "$G" '^| 0.4940 | 5.1700 |$'

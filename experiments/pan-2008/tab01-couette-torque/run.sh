@@ -10,7 +10,7 @@ esac
 row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
 row_curl()  { case $1 in 1|3) echo 0.2;; 2|4) echo 0.4;; esac; }
 paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) echo 1.0659;; esac; }
-printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\n' > "$OUT/table1.tsv"
+printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
@@ -26,6 +26,6 @@ for r in $ROWS; do
     the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
     emit "theory_row$r" "$the" 0
     echo "$T" | awk -F'\t' -v t=$the -v r=$r '{printf "torque_ratio_row%s\t%.10g\t%.4g\n", r, $1/t, $2/t}' >> "$OUT/summary.tsv"
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" >> "$OUT/table1.tsv"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done

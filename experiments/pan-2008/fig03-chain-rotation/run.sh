@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Pan et al. 2008, Fig. 3: torque shape factor T_s = -T / (8 pi mu Omega N R^3)
+# (eq. 24) of a straight chain of N touching spheres spinning about its axis.
+. "$DPD_ROOT/tools/lib/exp.sh"
+MU=3.6388 R=0.2737 OMEGA=-2.0 C=5.0      # paper mu and R; chain along x through the box centre
+case $TIER in
+    quick) NS="1 8"; len=(--set steps=6000 --set measure.every=2) ;;
+    paper) NS="1 2 3 4 5 6 7 8"; len=() ;;
+esac
+printf 'N\tTs\tTs_se\ttorque\ttorque_se\n' > "$OUT/shape_factor.tsv"
+for N in $NS; do
+    pos=$(awk -v n=$N -v R=$R -v c=$C 'BEGIN{ s = "("; for (k = 0; k < n; k++)
+        s = s sprintf("%s[%.4f,%.4f,%.4f]", k ? "," : "", c + (k - (n - 1)/2) * 2*R, c, c); print s ")" }')
+    dpd_run N$N chain.cfg "${len[@]}" --set "types.[1].positions=$pos" --set "types.[1].spin=[$OMEGA,0.0,0.0]" \
+        --set "seed=$((2400 + N))"
+    Ts=$(get N$N torque_on_chain_x | awk -F'\t' -v m=$MU -v R=$R -v w=$OMEGA -v n=$N '{
+        d = -8*3.141592653589793*m*w*n*R^3; printf "%.10g\t%.4g", $1/d, $2/d }')
+    emit "Ts_N$N" $Ts
+    printf '%s\t%s\t%s\n' $N "$Ts" "$(get N$N torque_on_chain_x)" >> "$OUT/shape_factor.tsv"
+done
+# the fall with N: (T_s(1) - T_s(8)) in units of its standard error
+awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
+    END { se = sqrt(sa^2 + sb^2); printf "Ts_drop_N8\t%.10g\t%.4g\nTs_drop_N8_sigmas\t%.4g\t0\n", a - b, se, (a - b)/se }' \
+    "$OUT/summary.tsv" >> "$OUT/summary.tsv"

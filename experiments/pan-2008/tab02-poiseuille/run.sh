@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Pan et al. 2008, Table 2: drag and torque on a colloid held fixed at h = 2
+# from the lower wall of a body-force-driven Poiseuille channel, against eq. 22
+# with u_h measured in the same channel without the colloid.
+. "$DPD_ROOT/tools/lib/exp.sh"
+MU=3.6388 R=0.2737 H=2.0 ZH=3.0 GREF=0.20   # paper mu and R; sphere at z = 1 + h
+case $TIER in
+    quick) ROWS="3"; sph=(--set equilibration=2000 --set steps=10000); emp=(--set equilibration=2000 --set steps=4000) ;;
+    paper) ROWS="1 2 3"; sph=(); emp=() ;;
+esac
+row_g()     { case $1 in 1) echo 0.05;; 2) echo 0.10;; 3) echo 0.20;; esac; }
+paper_F()   { case $1 in 1) echo 4.4881;; 2) echo 9.689;; 3) echo 18.881;; esac; }
+paper_T()   { case $1 in 1) echo 0.0838;; 2) echo 0.163;; 3) echo 0.313;; esac; }
+# undisturbed channel at g = GREF: u at z = 3 (mean of the two 0.25-wide bins either side), scaled
+# linearly to each row's g (Stokes flow; the largest g gives the smallest relative error)
+dpd_run empty poiseuille-empty.cfg "${emp[@]}" --set "types.[0].body_force=[$GREF,0.0,0.0]" --set seed=2200
+cp "$OUT/runs/empty/profile.tsv" "$OUT/profile_empty.tsv"
+UREF=$(awk -F'\t' -v z=$ZH 'NR > 1 && $1 > z - 0.25 && $1 < z + 0.25 { s += $4; e2 += $5*$5; n++ }
+    END { if (n != 2) exit 1; printf "%.10g\t%.4g", s/n, sqrt(e2)/n }' "$OUT/runs/empty/profile.tsv")
+emit u_h_gref $UREF
+printf 'row\tg\tu_h\tu_h_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table2.data.tsv"
+printf 'row\tRe (paper)\tu_h\tF paper\tF ours\tF eq. 22\tF verdict@\tT paper\tT ours\tT eq. 22\tT verdict@\n' > "$OUT/table2.tsv"
+for r in $ROWS; do
+    g=$(row_g $r)
+    dpd_run row$r poiseuille-sphere.cfg "${sph[@]}" --set "types.[0].body_force=[$g,0.0,0.0]" --set "seed=$((2200 + r))"
+    uh=$(echo "$UREF" | awk -F'\t' -v g=$g -v g0=$GREF '{printf "%.10g\t%.4g", $1*g/g0, $2*g/g0}')
+    emit "u_h_row$r" $uh
+    # eq. 22 (paper mu and R, h = 2 from the reflection plane z = 1)
+    read -r Fth Tth < <(echo "$uh" | awk -F'\t' -v m=$MU -v R=$R -v h=$H '{pi = 3.141592653589793; q = R/h
+        F = 6*pi*m*$1*R * (1 - q^2/9) / (1 - 0.6526*q + 0.3160*q^3 - 0.242*q^4)
+        T = 8/3*pi*m*$1*R^3/h * (1 + 0.0758*q + 0.049*q^2)
+        printf "%.10g %.10g\n", F, T}')
+    F=$(get row$r drag_on_colloid_x) T=$(get row$r torque_on_colloid_y)   # both without the zero-mean random part
+    emit "drag_row$r" $F
+    emit "torque_row$r" $T
+    emit "drag_theory_row$r" "$Fth" 0
+    emit "torque_theory_row$r" "$Tth" 0
+    # ratios: errors of the simulated value and of u_h in quadrature
+    for q in drag torque; do
+        [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
+        printf '%s\t%s\n' "$v" "$uh" | awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{ x = $1/t
+            printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
+    done
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $g "$uh" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table2.data.tsv"
+    printf '%s\t%s\t%s\t%s\t%s\t%s\n' $r "$uh" "$F" "$T" $Fth $Tth | awk -F'\t' -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
+        re = ($1 == 1 ? "0.0491" : $1 == 2 ? "0.0993" : "0.201")
+        printf "%s\t%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
+               $1, re, $2, $3, pF, $4, $5, $8, $1, pT, $6, $7, $9, $1 }' >> "$OUT/table2.tsv"
+done
