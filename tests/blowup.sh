@@ -8,7 +8,7 @@
 # colloid with far too stiff springs (displacement per step). Controls: the same
 # scenes at a small dt complete (so each check has power). Pairs at r -> 0: two
 # particles at the same position, and 1e-12 apart, give finite results (inertial
-# and m = 0). DPD selects the binary. Prints "N passed, M failed".
+# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
 DPD=${DPD:-bin/dpd}
@@ -83,12 +83,18 @@ control() {
 }
 
 control fluid-ok "$tmp/fluid.cfg"
-blowup fluid "$tmp/fluid.cfg" "kinetic temperature" --set dt=0.5 --checkpoint-every 1
+blowup fluid "$tmp/fluid.cfg" "kinetic temperature" --set dt=0.15 --set max_temperature_ratio=10.0 --checkpoint-every 1
 # earlier output kept: the trajectory written so far stays as a .part file, and the checkpoint
 if [ -s "$tmp/fluid/run.h5.part" ] || ls "$tmp/fluid"/*.part >/dev/null 2>&1; then ok "fluid: the trajectory written so far is kept (.part)"
 else bad "fluid: trajectory" "$(ls -a "$tmp/fluid")"; fi
 if [ -s "$tmp/fluid/checkpoint.dpd" ]; then ok "fluid: the last checkpoint before the blow-up is kept"
 else bad "fluid: checkpoint" "$(ls -a "$tmp/fluid")"; fi
+# far past the limit (gamma = 45 at dt = 1): stopped at once, no hang while wrapping
+# coordinates that ran off to 1e100 (src/box.c, src/neighbor.c)
+t0=$(date +%s)
+blowup far "$tmp/fluid.cfg" "(kinetic temperature|largest displacement per step)" --set dt=1.0 --set 'pairs.[0].gamma=45.0' --set output.trajectory_every=0
+if [ $(( $(date +%s) - t0 )) -lt 30 ]; then ok "far: stopped within 30 s"; else bad "far" "took $(( $(date +%s) - t0 )) s"; fi
+blowup jump "$tmp/fluid.cfg" "largest displacement per step" --set dt=0.25 --set output.trajectory_every=0
 control spins-ok "$tmp/spins.cfg"
 blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
 control colloid-ok "$tmp/colloid.cfg"
