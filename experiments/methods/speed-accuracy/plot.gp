@@ -19,7 +19,7 @@ plot 0 lc rgb "gray" notitle, \
      f u 3:(sel("pan",0.5,4)-1):5 w yerrorlines pt 7 lc 3 t "pan fluid (rotating), lambda 0.5", \
      f u 3:(sel("pan",0.5,6)-1):7 w yerrorlines pt 4 lc 3 t "pan fluid, rotational T"
 set logscale xy; set format y "10^{%T}"
-set xlabel "CPU seconds per 1000 particles per time unit (one thread; per-step cost averaged over the ladder)"; set ylabel "|T / kBT - 1|"
+set xlabel "CPU s per 1000 particles per time unit (1 thread)"; set ylabel "|T / kBT - 1|"
 set key top right font ",8"
 plot f u (sel("gw",0.5,10)):(abs($4-1)) w lp pt 7 lc 1 t "GW fluid, lambda 0.5", \
      f u (sel("gw",0.65,10)):(abs($4-1)) w lp pt 6 dt 2 lc 1 t "GW fluid, lambda 0.65", \
