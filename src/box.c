@@ -1,5 +1,6 @@
 /* box.c - periodic and Lees-Edwards boundaries. */
 #include "box.h"
+#include <math.h>
 
 void box_init(Box *b, int dim, const double L[3], double shear_rate)
 {
@@ -23,6 +24,15 @@ void box_advance(Box *b, double dt)
 void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
 {
     const double jump = b->shear_rate * b->L[1];
+    if (!(x[1] > -b->L[1] && x[1] < 2.0 * b->L[1])) {
+        /* far outside (a blow-up the stability check will stop) or not finite: jump
+         * back in one go instead of one box length at a time */
+        const double n = floor(x[1] * b->inv[1]);
+        if (!isfinite(n) || fabs(n) > 1e9) return;   /* leave it: the run stops at the check */
+        x[1] -= n * b->L[1]; x[0] -= n * b->le_offset; img[1] += (int)n;
+        if (vx1) *vx1 -= n * jump;
+        if (vx2) *vx2 -= n * jump;
+    }
     while (x[1] >= b->L[1]) {
         x[1] -= b->L[1]; x[0] -= b->le_offset; img[1]++;
         if (vx1) *vx1 -= jump;
@@ -36,6 +46,7 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
     for (int d = 0; d < b->dim; d++) {
         if (d == 1) continue; /* y done above */
         double n = floor(x[d] * b->inv[d]);
+        if (!isfinite(n) || fabs(n) > 1e9) continue;   /* a blow-up: the run stops at the check */
         if (n != 0.0) { x[d] -= n * b->L[d]; img[d] += (int)n; }
         if (x[d] >= b->L[d]) x[d] -= b->L[d]; /* round-off at the upper edge */
     }

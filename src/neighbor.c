@@ -15,9 +15,8 @@ static int cell_index(const NeighborList *nl, const double *x)
     int c[3] = {0, 0, 0};
     for (int d = 0; d < 3; d++) {
         if (nl->nc[d] == 1) continue;
-        c[d] = (int)(x[d] / nl->cw[d]);
-        if (c[d] >= nl->nc[d]) c[d] = nl->nc[d] - 1;
-        if (c[d] < 0) c[d] = 0;
+        const double q = x[d] / nl->cw[d];   /* clamped before the cast: a blown-up x stays defined */
+        c[d] = !(q >= 0.0) ? 0 : q >= nl->nc[d] ? nl->nc[d] - 1 : (int)q;
     }
     /* y slowest, so that the half stencil crosses the sheared boundary only
      * in +y */

@@ -245,20 +245,38 @@ static void set_walls_moving(System *s, const double (*vwall)[3], int moving)
             for (int d = 0; d < 3; d++) s->v[3 * i + d] = s->v_pred[3 * i + d] = s->types[s->type[i]].wall_velocity[d];
 }
 
-static int check_stable(const System *s, const RunConfig *rc, double *T)
+/* Blow-up detection. Returns 1 if the state is sound; else names the quantity
+ * that ran away (*what), its value and the limit it broke. Checks: the kinetic
+ * (and rotational) temperature against max_temperature_ratio x kBT (inertial
+ * runs), and in every run the largest displacement per step of a mobile
+ * particle against half the smallest box side (beyond it the minimum image
+ * and the pair forces lose their meaning; m = 0 runs have no temperature). */
+static int check_stable(const System *s, const RunConfig *rc, const char **what, double *value, double *limit)
 {
-    *T = system_kinetic_temperature(s);
-    if (rc->overdamped) {   /* no kinetic temperature at m = 0: check the velocities */
-        double vmax = 0.0;
-        for (int k = 0; k < 3 * s->n; k++) vmax = fmax(vmax, fabs(s->v[k]));
-        *T = vmax;
-        return isfinite(vmax);
+    const double kT = s->kBT > 0 ? s->kBT : 1.0;
+    if (!rc->overdamped) {
+        *what = "kinetic temperature";
+        *value = system_kinetic_temperature(s);
+        *limit = rc->max_temperature_ratio * kT;
+        if (!isfinite(*value) || *value > *limit) return 0;
+        if (s->rotation) {   /* spins can blow up first (too small an inertia for the step) */
+            *what = "rotational temperature";
+            *value = rotation_temperature(s);
+            if (!isfinite(*value) || *value > *limit) return 0;
+        }
     }
-    if (s->rotation) {   /* spins can blow up first (too small an inertia for the step) */
-        const double Tr = rotation_temperature(s);
-        if (!isfinite(Tr) || Tr > rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0)) { *T = Tr; return 0; }
+    double v2max = 0.0, lmin = INFINITY;
+    for (int i = 0; i < s->n; i++) {
+        if (s->types[s->type[i]].frozen) continue;
+        const double *v = s->v + 3 * i;
+        const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        if (!(v2 <= v2max)) v2max = v2;   /* NaN propagates */
     }
-    return isfinite(*T) && *T <= rc->max_temperature_ratio * (s->kBT > 0 ? s->kBT : 1.0);
+    for (int d = 0; d < s->box.dim; d++) lmin = fmin(lmin, s->box.L[d]);
+    *what = "largest displacement per step";
+    *value = sqrt(v2max) * s->dt;
+    *limit = 0.5 * lmin;
+    return isfinite(*value) && *value <= *limit;
 }
 
 /* SIGINT and SIGTERM: finish the step, write a checkpoint, stop incomplete. */
@@ -443,14 +461,21 @@ int run_scene(const RunOptions *opt)
             t4 = wall_now();
         }
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
-        if (s.step % 10 == 0 || want || s.rotation) {   /* spins can run away within a few steps */
-            double T;
-            if (!check_stable(&s, &rc, &T)) {
+        /* every 10 steps; every step for spins (they can run away within a few steps) and at m = 0 (the
+         * check costs nothing beside the solve, and a runaway would otherwise first show as a failed solve) */
+        if (s.step % 10 == 0 || want || s.rotation || rc.overdamped) {
+            const char *what;
+            double val, lim;
+            if (!check_stable(&s, &rc, &what, &val, &lim)) {
                 if (show) fputc('\n', stderr);
-                fprintf(stderr, "dpd: unstable at step %llu (t = %g): kinetic temperature %g is %s "
-                        "(limit %g x kBT); reduce dt (now %g), e.g. to %g\n",
-                        (unsigned long long)s.step, s.time, T, isfinite(T) ? "too high" : "not finite",
-                        rc.max_temperature_ratio, s.dt, 0.5 * s.dt);
+                char why[512];
+                snprintf(why, sizeof why, "unstable at step %llu (t = %g): %s %g is %s (limit %g); reduce dt "
+                         "(now %g), e.g. to %g\n", (unsigned long long)s.step, s.time, what, val,
+                         isfinite(val) ? "too high" : "not finite", lim, s.dt, 0.5 * s.dt);
+                fprintf(stderr, "dpd: %s", why);
+                fprintf(stderr, "dpd: the output written so far is kept; '%s' is marked incomplete (INCOMPLETE)\n",
+                        opt->outdir);
+                write_file_atomic(opt->outdir, "INCOMPLETE", why, strlen(why));   /* the reason, for the record */
                 status = 3;
                 break;
             }

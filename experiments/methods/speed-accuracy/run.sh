@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# The speed-accuracy trade, measured (issue 7): ladders of cost settings with the
+# error of a result against theory or the paper-tier value, and the CPU seconds.
+#  1. Groot-Warren fluid (rho 3, a 25, sigma 3): kinetic temperature against dt for
+#     the modified velocity Verlet at lambda = 0.5 and 0.65 (theory: kBT = 1).
+#  2. mai-duy-2019 solvent (eq. 29): the same, near its stability edge.
+#  3. pan-2008 rotating fluid: translational and rotational temperature against dt.
+#  4. phan-thien-2016 Couette channel (Fig. 3 set-up, m = 0): the viscosity against
+#     the eq. 27 tolerance of PCG and of the consistent Scheme 2 (error against the
+#     fig03 paper-tier value).
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) GW_DTS="0.02 0.03 0.04 0.05 0.06"; GW_T=20; GW_BOX=8
+           MD_DTS="0.01 0.015 0.0175 0.02"; MD_T=8; MD_BOX=5
+           PAN_DTS="0.005 0.01 0.015 0.02"; PAN_T=10; PAN_BOX=6
+           OD_STEPS=500 OD_EQ=100
+           declare -A OD_TOLS=([pcg]="1e-1 1e-3 1e-7" [scheme2_consistent]="1e-1 1e-2 1e-3") ;;
+    paper) GW_DTS="0.01 0.02 0.03 0.04 0.05 0.06 0.07"; GW_T=100; GW_BOX=10
+           MD_DTS="0.005 0.01 0.0125 0.015 0.0175 0.02"; MD_T=40; MD_BOX=8
+           PAN_DTS="0.005 0.01 0.015 0.02"; PAN_T=40; PAN_BOX=8
+           OD_STEPS=3000 OD_EQ=200
+           declare -A OD_TOLS=([pcg]="1e-1 1e-2 1e-3 1e-4 1e-5 1e-7" [scheme2_consistent]="1e-1 1e-2 1e-3 1e-4 1e-5 1e-7") ;;
+esac
+# equilibration, time units: the heat of the random start (a = 25) is gone within about one
+case $TIER in quick) T_EQ=2 ;; paper) T_EQ=5 ;; esac
+nsteps() { awk -v t=$1 -v d=$2 'BEGIN{printf "%d", t/d + 0.5}'; }
+
+# ---- 1-3: temperature against dt -------------------------------------------
+printf 'fluid\tlambda\tdt\tT\tT_se\tT_rot\tT_rot_se\tcpu_seconds\tcost\n' > "$OUT/ladder-dt.tsv"
+# dt_ladder FLUID SCENE BOX T_RUN "LAMBDAS" "DTS": cost = CPU seconds per 1000 particles per time unit
+dt_ladder() {
+    local fluid=$1 scene=$2 box=$3 trun=$4 lambdas=$5 dts=$6 k=0 name l dt T Tr cpu np rot
+    for l in $lambdas; do for dt in $dts; do
+        name=${fluid}_l${l}_dt$dt
+        k=$((k + 1))
+        if ! dpd_run $name $scene --set "box=[$box.0,$box.0,$box.0]" --set lambda=$l --set dt=$dt \
+            --set equilibration=$(nsteps $T_EQ $dt) --set steps=$(nsteps $trun $dt) \
+            --set measure.every=$(awk -v d=$dt 'BEGIN{e=int(0.05/d+0.5); print e<1?1:e}') --set seed=$((7000 + k - 1)); then
+            echo "$name: unstable (dpd exited non-zero); a gap in the ladder" >&2
+            printf '%s\t%s\t%s\tnan\tnan\tnan\tnan\tnan\tnan\n' $fluid $l $dt >> "$OUT/ladder-dt.tsv"
+            continue
+        fi
+        T=$(get $name temperature) cpu=$(get $name cpu_seconds | cut -f1) np=$(get $name particles | cut -f1)
+        Tr=$(get $name rotational_temperature 2>/dev/null || printf 'nan\tnan')
+        emit_from $name temperature T_${name}
+        [ "${Tr%%	*}" = nan ] || emit_from $name rotational_temperature T_rot_${name}
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $fluid $l $dt "$T" "$Tr" $cpu \
+            $(awk -v c=$cpu -v n=$np -v t=$((trun + T_EQ)) 'BEGIN{printf "%.5g", c/(n/1000)/t}') >> "$OUT/ladder-dt.tsv"
+    done; done
+}
+dt_ladder gw gw-fluid.cfg $GW_BOX $GW_T "0.5 0.65" "$GW_DTS"
+dt_ladder maiduy maiduy-solvent.cfg $MD_BOX $MD_T "0.5 0.65" "$MD_DTS"
+dt_ladder pan pan-fluid.cfg $PAN_BOX $PAN_T "0.5" "$PAN_DTS"
+# cost_per_dt: the CPU cost per particle-step of each fluid averaged over its ladder (one run's
+# CPU time is noisy on a shared machine), times the steps per time unit 1/dt: CPU seconds per
+# 1000 particles per time unit
+awk -F'\t' -v teq=$T_EQ -v tg=$GW_T -v tm=$MD_T -v tp=$PAN_T 'BEGIN{T["gw"]=tg; T["maiduy"]=tm; T["pan"]=tp}
+    NR==FNR { if (FNR>1 && $8!="nan") { c[$1]+=$8; ps[$1]+=($8/$9)*1000/$3 } next }   # particle-steps = cpu/cost*1000*t/dt / t
+    FNR==1 { print $0 "\tcost_per_dt"; next }
+    { printf "%s\t%.5g\n", $0, (c[$1]/ps[$1])*1000/$3 }' "$OUT/ladder-dt.tsv" "$OUT/ladder-dt.tsv" > "$OUT/ladder-dt.tmp"
+mv "$OUT/ladder-dt.tmp" "$OUT/ladder-dt.tsv"
+
+# Groot-Warren fluid, lambda = 0.5: (a) weighted fit T = T0 + c1 dt + c2 dt^2 (FDT: T0 = kBT);
+# (b) the order p of the error, weighted straight line through log |T - 1| against log dt
+# (points whose error exceeds 2 stderr); (c) |T - 1| at lambda 0.65 over that at 0.5, largest dt.
+awk -F'\t' -v big=0.06 '$1=="gw" {
+        if ($4 == "nan") next
+        if ($2 == 0.5) { n++; x[n]=$3; y[n]=$4; s[n]=$5 }
+        if ($3 == big) { e[$2]=$4-1; es[$2]=$5 } }
+    function det3(a11,a12,a13,a21,a22,a23,a31,a32,a33) { return a11*(a22*a33-a23*a32)-a12*(a21*a33-a23*a31)+a13*(a21*a32-a22*a31) }
+    END {
+        # (a) weighted quadratic least squares; the covariance is the inverse of the normal matrix
+        for (i = 1; i <= n; i++) { w = 1/s[i]^2; for (p = 0; p <= 4; p++) S[p] += w*x[i]^p; for (p = 0; p <= 2; p++) B[p] += w*y[i]*x[i]^p }
+        D = det3(S[0],S[1],S[2], S[1],S[2],S[3], S[2],S[3],S[4])
+        T0 = det3(B[0],S[1],S[2], B[1],S[2],S[3], B[2],S[3],S[4]) / D
+        T0se = sqrt((S[2]*S[4] - S[3]*S[3]) / D)
+        printf "T0_extrapolated_gw_lambda0.5\t%.6g\t%.4g\n", T0, T0se
+        # (b) order: weighted line through (log dt, log |T - 1|), error of log|T-1| = s/|T-1|
+        m = 0; for (i = 1; i <= n; i++) { d = y[i]-1; d = d < 0 ? -d : d; if (d > 2*s[i]) { m++; X[m] = log(x[i]); Y[m] = log(d); W[m] = (d/s[i])^2 } }
+        if (m >= 2) { for (i = 1; i <= m; i++) { sw += W[i]; sx += W[i]*X[i]; sy += W[i]*Y[i]; sxx += W[i]*X[i]^2; sxy += W[i]*X[i]*Y[i] }
+                      dd = sw*sxx - sx*sx; pp = (sw*sxy - sx*sy)/dd; ps = sqrt(sw/dd)
+                      printf "T_error_order_gw_lambda0.5\t%.6g\t%.4g\n", pp, ps
+                      printf "T_error_order_points_gw_lambda0.5\t%d\t0\n", m }
+        # (c) lambda 0.65 against 0.5 at the largest dt of the ladder
+        a = e[0.65]; a = a < 0 ? -a : a; b = e[0.5]; b = b < 0 ? -b : b; r = a/b
+        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%.6g\t%.4g\n", big, r, sqrt(es[0.65]^2 + (r*es[0.5])^2)/b
+    }' "$OUT/ladder-dt.tsv" >> "$OUT/summary.tsv"
+# largest dt of each temperature ladder with |T - 1| <= 1 % (2 stderr allowed), and the next rung up
+awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -d : d
+        if (!(k in best)) { best[k] = 0; nxt[k] = "inf"; bad[k] = 0 }
+        if (d <= 0.01 + 2*$5 && !bad[k]) best[k] = $3; else if (!bad[k]) { bad[k] = 1; nxt[k] = $3 } }
+    END { for (k in best) printf "dt_T1pct_%s\t%s\t%s\n", k, best[k], (nxt[k] == "inf" ? "nan" : sprintf("%.3g", (nxt[k]-best[k])/sqrt(12))) }' \
+    "$OUT/ladder-dt.tsv" | sort >> "$OUT/summary.tsv"
+
+# ---- 4: the m = 0 Couette viscosity against the solver tolerance -------------
+couette=../../phan-thien-2016/fig03-couette-profile/couette.cfg
+ref=$DPD_ROOT/results/phan-thien-2016/fig03-couette-profile/paper/summary.tsv
+read -r eta_ref eta_ref_se < <(awk -F'\t' '$1=="eta"{print $2, $3}' "$ref")
+printf 'solver\ttolerance\teta\teta_se\terror\terror_se\titerations\tcpu_per_step\ttrue_rel_error\n' > "$OUT/ladder-tolerance.tsv"
+for solver in pcg scheme2_consistent; do
+    for tol in ${OD_TOLS[$solver]}; do
+        name=${solver}_$tol
+        dpd_run $name $couette --set equilibration=$OD_EQ --set steps=$OD_STEPS --set measure.blocks=10 \
+            --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
+        # viscosity from the wall shear stress over the bulk shear rate (as fig03)
+        "$DPD" fit-line "$OUT/runs/$name/profile.tsv" --x pos --y vx --se vx_se --range 2:10 > "$OUT/runs/$name/fit.tsv"
+        read -r g gse < <(awk -F'\t' '$1=="slope"{print $2, $3}' "$OUT/runs/$name/fit.tsv")
+        read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get $name force_on_${w}_x; done |
+            awk -F'\t' '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2^2} END{printf "%.10g %.4g\n", v/20, sqrt(e)/20}')
+        read -r eta etase < <(awk -v t=$tau -v ts=$tause -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g %.4g\n", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+        emit eta_${name} $eta $etase
+        printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $solver $tol $eta $etase \
+            "$(awk -v e=$eta -v es=$etase -v r=$eta_ref -v rs=$eta_ref_se 'BEGIN{printf "%.6g\t%.4g", (e-r)/r, sqrt(es^2 + (e/r*rs)^2)/r}')" \
+            "$(get $name solver_iterations | cut -f1)" "$(get $name solver_cpu_seconds_per_step | cut -f1)" \
+            "$(get $name solver_true_rel_error | cut -f1)" >> "$OUT/ladder-tolerance.tsv"
+    done
+done
+emit eta_fig03_paper_tier $eta_ref $eta_ref_se
+# the paper's tolerance (1e-7, PCG) against the fig03 paper tier: the same setting, shorter
+awk -F'\t' '$1=="pcg" && $2=="1e-7" {printf "eta_rel_error_pcg_1e-7\t%s\t%s\n", $5, $6}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
+# slope of log(true error) against log(tolerance), per solver (weighted equally)
+awk -F'\t' 'NR>1 && $9 > 0 { s=$1; n[s]++; x=log($2); y=log($9); sx[s]+=x; sy[s]+=y; sxx[s]+=x*x; sxy[s]+=x*y; X[s,n[s]]=x; Y[s,n[s]]=y }
+    END { for (s in n) { k=n[s]; d=k*sxx[s]-sx[s]^2; b=(k*sxy[s]-sx[s]*sy[s])/d; a=(sy[s]-b*sx[s])/k
+          for (i=1;i<=k;i++) r+= (Y[s,i]-a-b*X[s,i])^2; se=(k>2)?sqrt(r/(k-2)*k/d):0; r=0
+          printf "true_error_slope_%s\t%.6g\t%.4g\n", s, b, se } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
+# CPU of every run, the unstable ones included (run-experiment counts only completed runs)
+times > "$OUT/times.txt"
+emit cpu_seconds $(awk 'NR==2{split($1,a,"m"); split($2,b,"m"); printf "%.3f", a[1]*60+a[2]+b[1]*60+b[2]}' "$OUT/times.txt") 0

@@ -1,0 +1,132 @@
+#!/usr/bin/env bash
+# Stability at the extremes (issue 7): the largest stable dt, found by bisection in
+# log dt over short runs, against gamma and the weight exponent s, the repulsion a
+# (up to 500), the mass m down to 0 (velocity Verlet against the m = 0 solver) and
+# the spring stiffness H of a massless 2D colloid; plus pairs at r -> 0.
+# "Stable" = the simulator's blow-up detection (src/run.c: non-finite values, a
+# temperature above max_temperature_ratio = 2 x kBT, or a mobile particle moving
+# more than half the box in one step) does not fire within the run.
+. "$DPD_ROOT/tools/lib/exp.sh"
+case $TIER in
+    quick) ITER=8 NSTEPS=200 NSTEPS_M0=100 SEEDS="1 2"
+           GAMMAS_S2="4.5 450 4500" GAMMAS_S05="" GAS_GAMMAS="450 4500" AS="25 100 500"
+           MASSES="1 0.1 0.01" HS="1000 10000 100000" ;;
+    paper) ITER=9 NSTEPS=1000 NSTEPS_M0=500 SEEDS="1 2 3 4 5"
+           GAMMAS_S2="1 4.5 15 45 150 450 1500 4500" GAMMAS_S05="1 4.5 15 45 150 450 1500 4500" GAS_GAMMAS="150 450 1500 4500"
+           AS="10 25 50 100 200 500" MASSES="1 0.3 0.1 0.03 0.01 0.003" HS="100 1000 10000 100000 1000000" ;;
+esac
+printf 'family\tparameter\tvalue\tseed\tdt\tstable\tsteps\tmessage_ok\n' > "$OUT/trials.tsv"
+printf 'family\tparameter\tvalue\tdt_max\tdt_max_se\tdt_stable\tdt_unstable\n' > "$OUT/dt-max.tsv"
+ntrial=0
+
+# trial FAMILY PARAM VALUE SEED SCENE DT NSTEPS ARGS...: 0 if stable, 1 if the simulator stopped it as unstable.
+# A fixed number of steps for every dt: the limit of an explicit scheme is an amplification per
+# step, so a fixed step count detects the same amplification at every parameter value (a fixed
+# simulated time would give the small-dt trials more steps and bias the scaling exponents).
+# An unstable run must say so properly (step, quantity, suggested dt, INCOMPLETE with the reason, no summary).
+trial() {
+    local fam=$1 par=$2 val=$3 seed=$4 scene=$5 dt=$6 n=$7; shift 7
+    local dir=$OUT/runs/trial st msgok=-
+    rm -rf "$dir"
+    "$DPD" run $scene --out "$dir" --quiet --set dt=$dt --set steps=$n --set equilibration=0 --set seed=$((1000 * seed + 7)) "$@" \
+        2> "$OUT/trial.err" && st=0 || st=$?
+    ntrial=$((ntrial + 1))
+    case $st in
+        0) ;;
+        3) grep -Eq "unstable at step [0-9]+ .*: (kinetic temperature|rotational temperature|largest displacement per step) .* is (too high|not finite) \(limit .*\); reduce dt \(now .*\), e\.g\. to " "$OUT/trial.err" \
+               && grep -q "unstable at step" "$dir/INCOMPLETE" && [ ! -e "$dir/summary.tsv" ] && msgok=1 || msgok=0 ;;
+        *) echo "stability-map: $fam $par=$val dt=$dt: dpd exited $st:" >&2; cat "$OUT/trial.err" >&2; exit 1 ;;
+    esac
+    printf '%s\t%s\t%s\t%s\t%s\t%d\t%s\t%s\n' $fam $par $val $seed $dt $((st == 0)) $n $msgok >> "$OUT/trials.tsv"
+    rm -rf "$dir"
+    return $((st != 0))
+}
+# bisect FAMILY PARAM VALUE SCENE LO HI NSTEPS ARGS...: per seed, the largest stable dt in [LO, HI]
+# (log bisection, ITER halvings after checking the ends; the same seed for every trial of a
+# bisection); per seed dt_max = geometric mean of the final bracket. The limit varies from seed
+# to seed (a rare close configuration can trigger it), so dt_max = mean over the seeds, se = the
+# spread over seeds (sample sd / sqrt n) combined with the bracket resolution (width / sqrt 12).
+bisect() {
+    local fam=$1 par=$2 val=$3 scene=$4 lo0=$5 hi0=$6 nmax=$7; shift 7
+    local seed lo hi mid k res=""
+    for seed in $SEEDS; do
+        lo=$lo0 hi=$hi0
+        if trial $fam $par $val $seed "$scene" $hi $nmax "$@"; then lo=$hi hi=inf
+        elif ! trial $fam $par $val $seed "$scene" $lo $nmax "$@"; then hi=$lo lo=0
+        else
+            for ((k = 0; k < ITER; k++)); do
+                mid=$(awk -v a=$lo -v b=$hi 'BEGIN{printf "%.4g", sqrt(a*b)}')
+                if trial $fam $par $val $seed "$scene" $mid $nmax "$@"; then lo=$mid; else hi=$mid; fi
+            done
+        fi
+        res="$res $lo:$hi"
+    done
+    awk -v f=$fam -v p=$par -v v=$val -v r="$res" 'BEGIN{n=split(r,R," "); for(i=1;i<=n;i++){split(R[i],b,":"); lo[i]=b[1]; hi[i]=b[2]
+            if (hi[i]=="inf" || lo[i]==0) {bad=1; continue}
+            d[i]=sqrt(lo[i]*hi[i]); e[i]=(hi[i]-lo[i])/sqrt(12); s+=d[i]; L=(L==""||lo[i]<L)?lo[i]:L; H=(H==""||hi[i]>H)?hi[i]:H}
+        if (bad) { printf "%s\t%s\t%s\tnan\tnan\t%s\t%s\n", f, p, v, lo[1], hi[1]; exit }
+        m=s/n; if (n>1) {for(i=1;i<=n;i++) ss+=(d[i]-m)^2; se=sqrt(ss/(n-1)/n); be=0; for(i=1;i<=n;i++) be+=e[i]^2; be=sqrt(be)/n; se=sqrt(se^2+be^2)} else se=e[1]
+        printf "%s\t%s\t%s\t%.5g\t%.3g\t%s\t%s\n", f, p, v, m, se, L, H}' >> "$OUT/dt-max.tsv"
+}
+
+# 1. gamma and s (3D fluid, a = 25; s = 2 is Groot-Warren's weight, s = 0.5 Pan's and Phan-Thien's)
+for g in $GAMMAS_S2;  do bisect gamma_s2 gamma $g fluid3d.cfg 1e-5 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=2.0"; done
+for g in $GAMMAS_S05; do [ -n "$g" ] || continue; bisect gamma_s0.5 gamma $g fluid3d.cfg 1e-5 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=0.5"; done
+# 1b. the same without the conservative force (a = 0, random start = its equilibrium): the
+# dissipative limit alone, where theory gives dt_max ~ 1/gamma (the fluid's trials above start
+# from a lattice that melts within a trial, so they sample closer contacts the longer they run)
+for g in $GAS_GAMMAS; do
+    for sw in 2 0.5; do bisect gas_s$sw gamma $g gas3d.cfg 1e-6 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=$sw"; done
+done
+# 2. the repulsion a (gamma = 4.5, s = 2)
+for a in $AS; do bisect a_gamma4.5 a $a fluid3d.cfg 1e-4 1 $NSTEPS --set "pairs.[0].a=$a"; done
+# 3. the mass, inertial integrator, against the m = 0 solver (2D Phan-Thien fluid)
+for m in $MASSES; do bisect mass m $m fluid2d.cfg 1e-6 1 $NSTEPS --set "types.[0].mass=$m"; done
+bisect mass_m0 m 0 fluid2d-m0.cfg 1e-3 10 $NSTEPS_M0
+# 4. spring stiffness of the massless 2D colloid (m = 0)
+for H in $HS; do bisect spring_m0 H $H colloid2d-m0.cfg 1e-7 1 $NSTEPS_M0 --set colloids2d.H=$H; done
+# 5. pairs at r -> 0: two particles at the same position and 1e-12 apart, inertial and m = 0
+coincident_ok=0 coincident_n=0
+for sep in 0 1e-12; do for kind in inertial m0; do
+    x2=$(awk -v d=$sep 'BEGIN{printf "%.15f", 2.0 + d}')
+    sed "s/@X2@/$x2/" pair.cfg.in > "$OUT/pair.cfg"
+    [ $kind = m0 ] && printf 'overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };\n' >> "$OUT/pair.cfg"
+    coincident_n=$((coincident_n + 1))
+    if dpd_run pair_${kind}_$sep "$OUT/pair.cfg" && ! cut -f2 "$OUT/runs/pair_${kind}_$sep/summary.tsv" | grep -Eiq '^-?(nan|inf)'; then
+        coincident_ok=$((coincident_ok + 1))
+    else echo "pair at separation $sep ($kind): not finite" >&2; fi
+done; done
+emit coincident_pairs_finite_fraction $(awk -v a=$coincident_ok -v n=$coincident_n 'BEGIN{printf "%.6g", a/n}') 0
+
+# ---- summary quantities ----------------------------------------------------
+awk -F'\t' 'NR>1 {printf "dt_max_%s_%s%s\t%s\t%s\n", $1, $2, $3, $4, $5}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+# scaling exponents: weighted line through log dt_max against log(parameter) over the
+# values at and beyond the given threshold (the asymptotic regime of the theory)
+slope() {   # slope NAME FAMILY FROM TO: parameter values in [FROM, TO]
+    awk -F'\t' -v q=$1 -v f=$2 -v a=$3 -v b=$4 '$1==f && $3+0>=a && $3+0<=b && $4!="nan" {
+            n++; x=log($3); y=log($4); w=1/($5/$4)^2; sw+=w; sx+=w*x; sy+=w*y; sxx+=w*x*x; sxy+=w*x*y }
+        END { if (n < 2) { printf "%s\tnan\tnan\n", q; exit } d=sw*sxx-sx*sx; printf "%s\t%.5g\t%.3g\n", q, (sw*sxy-sx*sy)/d, sqrt(sw/d) }' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+}
+slope dt_max_exponent_gamma_s2 gas_s2 450 1e9
+slope dt_max_exponent_gamma_s0.5 gas_s0.5 450 1e9
+slope dt_max_exponent_a a_gamma4.5 100 1e9
+slope dt_max_exponent_m mass 0 0.1
+slope dt_max_exponent_H spring_m0 10000 1e9
+# s: in the dissipative limit dt gamma sum_j w_D(r_ij) ~ const: the ratio of dt_max at s = 2
+# and s = 0.5 (ideal gas, largest gamma) against the ratio of the mean sum_j w_D of an ideal
+# gas, 4 pi n int_0^1 r^2 (1 - r)^s dr = 8 pi n / ((s + 1)(s + 2)(s + 3))
+gmax=${GAS_GAMMAS##* }
+awk -F'\t' -v g=$gmax '$3==g && $1=="gas_s2"{a=$4; as=$5} $3==g && $1=="gas_s0.5"{b=$4; bs=$5}
+    END{r=a/b; printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%.5g\t%.3g\n", g, r, r*sqrt((as/a)^2+(bs/b)^2)
+        w2=2/(3*4*5); w05=2/(1.5*2.5*3.5); printf "sum_wD_ratio_s0.5_s2_ideal_gas\t%.5g\t0\n", w05/w2}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+# m = 0 solver against the inertial integrator at the smallest mass
+mmin=${MASSES##* }
+emit_ratio_rows() { awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '$1==f1&&$3==v1{a=$4;as=$5} $1==f2&&$3==v2{b=$4;bs=$5}
+    END{r=a/b; printf "%s\t%.5g\t%.3g\n", q, r, r*sqrt((as/a)^2+(bs/b)^2)}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
+emit_ratio_rows dt_max_ratio_m0_solver_to_m$mmin mass_m0 0 mass $mmin
+# every unstable trial stopped with a proper message, INCOMPLETE and no summary
+awk -F'\t' 'NR>1 && $8!="-" {n++; ok+=$8} END{printf "blowup_message_ok_fraction\t%.6g\t0\nunstable_trials\t%d\t0\n", ok/n, n}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"
+awk -F'\t' 'END{printf "trials\t%d\t0\n", NR-1}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"
+# CPU of all trials (stable and unstable; run-experiment counts only completed runs)
+times > "$OUT/times.txt"
+emit cpu_seconds $(awk 'NR==2{split($1,a,"m"); split($2,b,"m"); printf "%.3f", a[1]*60+a[2]+b[1]*60+b[2]}' "$OUT/times.txt") 0

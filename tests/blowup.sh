@@ -1,0 +1,125 @@
+#!/bin/bash
+# blowup.sh - a run that blows up stops within a few steps with a message naming
+# the step, the quantity that ran away and a suggested dt; it exits 3, leaves no
+# summary.tsv (nothing make check could accept), keeps what it wrote before (the
+# checkpoint, the trajectory's .part file) and an INCOMPLETE marker that records
+# the reason. Cases: inertial fluid at far too large a dt (kinetic temperature),
+# spins with far too small an inertia (rotational temperature), a massless (m = 0)
+# colloid with far too stiff springs (displacement per step). Controls: the same
+# scenes at a small dt complete (so each check has power). Pairs at r -> 0: two
+# particles at the same position, and 1e-12 apart, give finite results (inertial
+# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). DPD selects the binary. Prints "N passed, M failed".
+set -u
+cd "$(dirname "$0")/.."
+DPD=${DPD:-bin/dpd}
+case $DPD in /*) ;; *) DPD=$PWD/$DPD ;; esac
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-blowup-XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok()  { pass=$((pass + 1)); echo "PASS $1"; }
+bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+
+cat > "$tmp/fluid.cfg" <<'CFG'
+dimension = 3;
+box = [5.0, 5.0, 5.0];
+dt = 0.01;
+seed = 7;
+steps = 200;
+types = ( { name = "w"; density = 3.0; } );
+pairs = ( { types = ["w", "w"]; a = 25.0; gamma = 4.5; } );
+output = { trajectory_every = 1; };
+CFG
+cat > "$tmp/spins.cfg" <<'CFG'
+dimension = 3;
+box = [5.0, 5.0, 5.0];
+dt = 0.01;
+seed = 8;
+steps = 200;
+rotation = true;
+types = ( { name = "w"; density = 3.0; inertia = 0.1; } );
+pairs = ( { types = ["w", "w"]; a = 25.0; gamma = 4.5; gamma_shear = 4.5; s = 0.5; } );
+CFG
+cat > "$tmp/colloid.cfg" <<'CFG'
+dimension = 2;
+box = [6.0, 6.0];
+dt = 0.005;
+seed = 9;
+steps = 200;
+types = ( { name = "solvent"; count = 144; }, { name = "colloid"; count = 3; } );
+pairs = (
+  { types = ["solvent", "solvent"]; a = 18.5; gamma = 4.5; s = 0.5; },
+  { types = ["solvent", "colloid"]; a = 18.5; gamma = 4.5; s = 0.5; },
+  { types = ["colloid", "colloid"]; a = 18.5; gamma = 4.5; s = 0.5; }
+);
+colloids2d = { type = "colloid"; count = 1; side = 0.25; H = 1000.0; every = 5; msd_window = 40; };
+overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };
+CFG
+
+# blowup NAME SCENE QUANTITY ARGS...: the run must stop as unstable, naming things
+blowup() {
+    local name=$1 scene=$2 what=$3; shift 3
+    local out=$tmp/$name st
+    "$DPD" run "$scene" --out "$out" --quiet "$@" 2>"$tmp/$name.err"; st=$?
+    local msg; msg=$(cat "$tmp/$name.err")
+    if [ $st -ne 3 ]; then bad "$name: exit status" "expected 3 (unstable), got $st: $msg"; return; fi
+    ok "$name: exit status 3"
+    if grep -Eq "unstable at step [0-9]+ \(t = [0-9.e+-]+\): $what [^ ]+ is (too high|not finite) \(limit [^)]+\); reduce dt \(now [0-9.e-]+\), e\.g\. to [0-9.e-]+" <<<"$msg"
+    then ok "$name: message names the step, the $what and a suggested dt"
+    else bad "$name: message" "$msg"; fi
+    local step; step=$(sed -n 's/.*unstable at step \([0-9]*\).*/\1/p' <<<"$msg" | head -1)
+    if [ -n "$step" ] && [ "$step" -lt 200 ]; then ok "$name: stopped at step $step, before the end"; else bad "$name: step" "'$step'"; fi
+    if [ ! -e "$out/summary.tsv" ] && [ ! -e "$out/provenance.tsv" ]; then ok "$name: no summary.tsv or provenance.tsv"
+    else bad "$name: result files" "$(ls "$out")"; fi
+    if grep -q "unstable at step $step" "$out/INCOMPLETE" 2>/dev/null; then ok "$name: INCOMPLETE records the reason"
+    else bad "$name: INCOMPLETE" "$(cat "$out/INCOMPLETE" 2>&1)"; fi
+}
+# control NAME SCENE ARGS...: the same scene at a sound step completes
+control() {
+    local name=$1 scene=$2; shift 2
+    local out=$tmp/$name st
+    "$DPD" run "$scene" --out "$out" --quiet "$@" 2>"$tmp/$name.err"; st=$?
+    if [ $st -eq 0 ] && [ -s "$out/summary.tsv" ] && [ ! -e "$out/INCOMPLETE" ]; then ok "$name: control completes"
+    else bad "$name: control" "status $st: $(cat "$tmp/$name.err")"; fi
+}
+
+control fluid-ok "$tmp/fluid.cfg"
+blowup fluid "$tmp/fluid.cfg" "kinetic temperature" --set dt=0.15 --set max_temperature_ratio=10.0 --checkpoint-every 1
+# earlier output kept: the trajectory written so far stays as a .part file, and the checkpoint
+if [ -s "$tmp/fluid/run.h5.part" ] || ls "$tmp/fluid"/*.part >/dev/null 2>&1; then ok "fluid: the trajectory written so far is kept (.part)"
+else bad "fluid: trajectory" "$(ls -a "$tmp/fluid")"; fi
+if [ -s "$tmp/fluid/checkpoint.dpd" ]; then ok "fluid: the last checkpoint before the blow-up is kept"
+else bad "fluid: checkpoint" "$(ls -a "$tmp/fluid")"; fi
+# far past the limit (gamma = 45 at dt = 1): stopped at once, no hang while wrapping
+# coordinates that ran off to 1e100 (src/box.c, src/neighbor.c)
+t0=$(date +%s)
+blowup far "$tmp/fluid.cfg" "(kinetic temperature|largest displacement per step)" --set dt=1.0 --set 'pairs.[0].gamma=45.0' --set output.trajectory_every=0
+if [ $(( $(date +%s) - t0 )) -lt 30 ]; then ok "far: stopped within 30 s"; else bad "far" "took $(( $(date +%s) - t0 )) s"; fi
+blowup jump "$tmp/fluid.cfg" "largest displacement per step" --set dt=0.25 --set output.trajectory_every=0
+control spins-ok "$tmp/spins.cfg"
+blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
+control colloid-ok "$tmp/colloid.cfg"
+blowup colloid "$tmp/colloid.cfg" "largest displacement per step" --set colloids2d.H=1e6 --set dt=0.05
+
+# pairs at r -> 0: finite forces (the pair has no direction and is skipped)
+for sep in 0 1e-12; do
+    for kind in inertial m0; do
+        if [ $kind = inertial ]; then extra=""; else extra='overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };'; fi
+        cat > "$tmp/pair.cfg" <<CFG
+dimension = 3;
+box = [4.0, 4.0, 4.0];
+dt = 0.01;
+seed = 11;
+steps = 20;
+types = ( { name = "w"; positions = ( [2.0, 2.0, 2.0], [$(awk -v d=$sep 'BEGIN{printf "%.15f", 2.0 + d}'), 2.0, 2.0] ); } );
+pairs = ( { types = ["w", "w"]; a = 25.0; gamma = 4.5; } );
+$extra
+CFG
+        out=$tmp/pair-$kind-$sep
+        "$DPD" run "$tmp/pair.cfg" --out "$out" --quiet 2>"$tmp/pair.err"; st=$?
+        if [ $st -eq 0 ] && [ -s "$out/summary.tsv" ] && ! grep -Eiq '\b(nan|inf)\b' <(cut -f2 "$out/summary.tsv"); then
+            ok "pair $sep apart ($kind): finite"
+        else bad "pair $sep apart ($kind)" "status $st: $(cat "$tmp/pair.err"; grep -Ei 'nan|inf' "$out/summary.tsv" 2>/dev/null | head -3)"; fi
+    done
+done
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
