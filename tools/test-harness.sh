@@ -80,6 +80,14 @@ mkexp x/nores <<< "$(tab q quick 0 1 0 - fixture)"
 mkexp x/incomplete <<< "$(tab q quick 0 1 0 - fixture)"
 mkres x/incomplete quick 6 <<< "$(tab q 0.5 0)"
 touch "$root/results/x/incomplete/quick/INCOMPLETE"
+mkexp x/wide <<EOF2
+$(tab tight quick 0.9 1.1 2 1 'band 0.2 wide, error 0.5: unresolved')
+$(tab zero quick 0 0 3 0 'zero-width band: a test at any error')
+EOF2
+mkres x/wide quick 2 <<EOF2
+$(tab tight 1.0 0.5)
+$(tab zero 0.1 0.5)
+EOF2
 mkexp x/paperonly <<< "$(tab q paper 0 1 0 - fixture)"
 mkres x/paperonly paper 7 <<< "$(tab q 0.5 0)"
 cat > "$root/EXPERIMENTS.md" <<'EOF2'
@@ -153,10 +161,14 @@ has "check: INCOMPLETE -> MISSING" 'incomplete .*MISSING .*INCOMPLETE'
 T "check: no bands for tier does not fail" 0 "$C" --tier quick x/paperonly
 has "check: no-bands note" '(no bands for tier quick)'
 has "check: zero count" '^0 passed, 0 failed$'
+T "check: an unresolved row does not fail" 0 "$C" x/wide
+has "check: error wider than the band is UNRESOLVED" 'x/wide  *tight .*UNRESOLVED'
+has "check: zero-width band stays a test" 'x/wide  *zero .*PASS'
+has "check: unresolved counted apart" '^1 passed, 0 failed, 1 unresolved'
 T "check: unknown experiment fails" 1 "$C" x/nonesuch
 T "check: all experiments by default" 1 "$C"
 has "check: default run lists x/y" '^x/y '
-has "check: default run count" '^5 passed, 8 failed$'
+has "check: default run count" '^6 passed, 8 failed, 1 unresolved'
 lacks "check: no awk errors" 'awk:'
 T "check: bad option" 2 "$C" --bogus
 
@@ -175,6 +187,7 @@ if [ -f "$G" ]; then
     in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
     in_file "mkpaper: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
+    in_file "mkpaper: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'

@@ -5,7 +5,10 @@
 #   sfile empty or unreadable -> every row MISSING.
 # Output, one line per band row of the tier, tab-separated:
 #   eid quantity value stderr lo hi k paper verdict dist source note
-# verdict: PASS | FAIL | MISSING, or XFAIL | XPASS for a row whose optional 8th
+# verdict: PASS | FAIL | MISSING | UNRESOLVED (inside a two-sided band only
+#   because k*stderr is wider than the band lo < hi itself: no test (a zero-width
+#   band "equals X within k stderr" is a test and stays PASS/FAIL); not counted as a
+#   failure by tools/check, not as a pass by the verdicts), or XFAIL | XPASS for a row whose optional 8th
 #   column (expect) is "fail": a non-reproduction already established and
 #   reported in paper.md. tools/check does not count XFAIL as a failure; XPASS
 #   is one (the row must be reviewed).
@@ -92,5 +95,9 @@ FNR == 1 && trim($1) == "quantity" { next }
     # it is shown as XFAIL, and should it ever pass it is flagged XPASS (a failure)
     if (expect == "fail") emit(q, sval[q], sse_, slo, shi, sk, paper, ok ? "XPASS" : "XFAIL", d, src,
                                ok ? "known non-reproduction now passes: review bands.tsv" : "known non-reproduction")
+    else if (ok && !lofree && !hifree && shi + 0 > slo + 0 && w > shi - slo)
+        # the statistical allowance alone is wider than the band: inside, but no test
+        emit(q, sval[q], sse_, slo, shi, sk, paper, "UNRESOLVED", d, src,
+             "k x stderr exceeds the band width: the run cannot test this claim")
     else emit(q, sval[q], sse_, slo, shi, sk, paper, ok ? "PASS" : "FAIL", d, src, "")
 }
