@@ -14,7 +14,7 @@
 #   is one (the row must be reviewed).
 # dist: position relative to the band widened by k*stderr; <= 1 means inside.
 #   two-sided band: |value - mid| / (half-width + k*stderr)
-#   one-sided band: 0 inside, else 1 + excess / max(|bound|, 1e-300)
+#   one-sided band: 0 inside, else 1 + excess / |bound| (a bound of 0: / k*stderr, or stderr)
 #   "inf" for a non-finite value or a degenerate zero-width band missed,
 #   "-" when MISSING.
 # A bands row whose tier column is "*" or "any" applies to every tier.
@@ -85,10 +85,10 @@ FNR == 1 && trim($1) == "quantity" { next }
         h = (hi - lo) / 2
         if (h > 0) d = absf(v - (lo + hi) / 2) / h
         else d = ok ? 0 : "inf"
-    } else if (!lofree) {
-        d = (v >= lo) ? 0 : 1 + (lo - v) / ((absf(lo) > 1e-300) ? absf(lo) : 1e-300)
+    } else if (!lofree) {   # scale: the bound, or for a bound of 0 the allowance k stderr
+        d = (v >= lo) ? 0 : 1 + (lo - v) / ((absf(lo) > 1e-300) ? absf(lo) : (w > 0 ? w : (se > 0 ? se : 1)))
     } else {
-        d = (v <= hi) ? 0 : 1 + (v - hi) / ((absf(hi) > 1e-300) ? absf(hi) : 1e-300)
+        d = (v <= hi) ? 0 : 1 + (v - hi) / ((absf(hi) > 1e-300) ? absf(hi) : (w > 0 ? w : (se > 0 ? se : 1)))
     }
     if (d != "inf") d = sprintf("%.3g", d)
     # expect = fail: a non-reproduction already established and reported ([¬Re]);
