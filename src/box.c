@@ -1,4 +1,5 @@
 /* box.c - periodic and Lees-Edwards boundaries. */
+#include <limits.h>
 #include "box.h"
 #include <math.h>
 
@@ -21,6 +22,14 @@ void box_advance(Box *b, double dt)
     if (b->le_offset < 0.0) b->le_offset += b->L[0];
 }
 
+/* img += n, saturating: a runaway particle (which the stability check then
+ * stops) can pile up more box crossings than an int holds */
+static void add_images(int *img, double n)
+{
+    const double t = (double)*img + n;
+    *img = t > (double)INT_MAX ? INT_MAX : (t < (double)INT_MIN ? INT_MIN : (int)t);
+}
+
 void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
 {
     const double jump = b->shear_rate * b->L[1];
@@ -29,17 +38,17 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
          * back in one go instead of one box length at a time */
         const double n = floor(x[1] * b->inv[1]);
         if (!isfinite(n) || fabs(n) > 1e9) return;   /* leave it: the run stops at the check */
-        x[1] -= n * b->L[1]; x[0] -= n * b->le_offset; img[1] += (int)n;
+        x[1] -= n * b->L[1]; x[0] -= n * b->le_offset; add_images(&img[1], n);
         if (vx1) *vx1 -= n * jump;
         if (vx2) *vx2 -= n * jump;
     }
     while (x[1] >= b->L[1]) {
-        x[1] -= b->L[1]; x[0] -= b->le_offset; img[1]++;
+        x[1] -= b->L[1]; x[0] -= b->le_offset; add_images(&img[1], 1.0);
         if (vx1) *vx1 -= jump;
         if (vx2) *vx2 -= jump;
     }
     while (x[1] < 0.0) {
-        x[1] += b->L[1]; x[0] += b->le_offset; img[1]--;
+        x[1] += b->L[1]; x[0] += b->le_offset; add_images(&img[1], -1.0);
         if (vx1) *vx1 += jump;
         if (vx2) *vx2 += jump;
     }
@@ -47,7 +56,7 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
         if (d == 1) continue; /* y done above */
         double n = floor(x[d] * b->inv[d]);
         if (!isfinite(n) || fabs(n) > 1e9) continue;   /* a blow-up: the run stops at the check */
-        if (n != 0.0) { x[d] -= n * b->L[d]; img[d] += (int)n; }
+        if (n != 0.0) { x[d] -= n * b->L[d]; add_images(&img[d], n); }
         if (x[d] >= b->L[d]) x[d] -= b->L[d]; /* round-off at the upper edge */
     }
 }
