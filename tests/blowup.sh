@@ -11,13 +11,7 @@
 # and m = 0). A run far past its limit stops at once (no hang on huge coordinates). DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
-DPD=${DPD:-bin/dpd}
-case $DPD in /*) ;; *) DPD=$PWD/$DPD ;; esac
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-blowup-XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok()  { pass=$((pass + 1)); echo "PASS $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+. tests/shlib.sh blowup
 
 cat > "$tmp/fluid.cfg" <<'CFG'
 dimension = 3;

@@ -26,12 +26,7 @@
 # Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
-DPD=${DPD:-bin/dpd}
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-checkpoint-XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok()  { pass=$((pass + 1)); echo "PASS $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+. tests/shlib.sh checkpoint
 check() { local name=$1; shift; if "$@"; then ok "$name"; else bad "$name" "$*"; fi; }
 
 physics() { grep -Ev 'seconds|per_second|memory' "$1"; }

@@ -15,13 +15,7 @@
 # counted). DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
-DPD=${DPD:-bin/dpd}
-case $DPD in /*) ;; *) DPD=$PWD/$DPD ;; esac
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-io-errors-XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok()  { pass=$((pass + 1)); echo "PASS $1"; }
-bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+. tests/shlib.sh io-errors
 scene=$PWD/tests/good-scene.cfg
 
 # --out below a regular file

@@ -9,12 +9,8 @@
 # DPD selects the binary (default bin/dpd). Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
-DPD=${DPD:-bin/dpd}
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-scene-errors-XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
+. tests/shlib.sh scene-errors
 
-ok()  { pass=$((pass + 1)); echo "PASS $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; [ -s "$tmp/err" ] && sed 's/^/    stderr: /' "$tmp/err"; }
 
 if [ ! -x "$DPD" ]; then echo "FAIL: $DPD not found"; echo "0 passed, 1 failed"; exit 1; fi

@@ -51,6 +51,15 @@ static void make_system(System *s, int dim, int n, const double L[3], double rat
  * (python decimal) from eqs 2-7: fc = a (1 - r/rc), fd = -gamma (1-r/rc)^s e.v,
  * fr = sigma (1-r/rc)^(s/2) theta / sqrt(dt), a = 25, gamma = 4.5, rc = 1,
  * kBT = 1 (sigma = 3), e.v = -0.7, theta = 0.37, dt = 0.01. */
+/* neighbour list, force work space and the first forces of a system */
+static void first_forces(System *s, NeighborList *nl, ForceWork *fw)
+{
+    assert_int_equal(neighbor_init(nl, s, SKIN), 0);
+    assert_int_equal(neighbor_build(nl, s), 0);
+    assert_int_equal(forces_init(fw, s->n, 0), 0);
+    forces_compute(s, nl, fw, NULL);
+}
+
 static void pair_magnitudes_hand_values(void **state)
 {
     (void)state;
@@ -116,10 +125,7 @@ static size_t two_particle_force(double r, double gamma, double f0[3], double f1
     }
     NeighborList nl;
     ForceWork fw;
-    assert_int_equal(neighbor_init(&nl, &s, SKIN), 0);
-    assert_int_equal(neighbor_build(&nl, &s), 0);
-    assert_int_equal(forces_init(&fw, s.n, 0), 0);
-    forces_compute(&s, &nl, &fw, NULL);
+    first_forces(&s, &nl, &fw);
     const size_t np = neighbor_pairs(&nl);
     const int i0 = s.id[0] == 0 ? 0 : 1;
     memcpy(f0, s.f + 3 * i0, 3 * sizeof(double));
@@ -181,10 +187,7 @@ static void total_force_check(double rate, double offset)
     s.box.le_offset = offset;
     NeighborList nl;
     ForceWork fw;
-    assert_int_equal(neighbor_init(&nl, &s, SKIN), 0);
-    assert_int_equal(neighbor_build(&nl, &s), 0);
-    assert_int_equal(forces_init(&fw, s.n, 0), 0);
-    forces_compute(&s, &nl, &fw, NULL);
+    first_forces(&s, &nl, &fw);
     double sum[3] = {0, 0, 0}, abs_sum = 0.0;
     for (int i = 0; i < s.n; i++)
         for (int d = 0; d < 3; d++) { sum[d] += s.f[3 * i + d]; abs_sum += fabs(s.f[3 * i + d]); }
@@ -243,10 +246,7 @@ static void momentum_conserved(void **state)
     make_system(&s, 3, 648, L, 0.0, 25.0, 4.5, 2.0, 1.0, 21);
     NeighborList nl;
     ForceWork fw;
-    assert_int_equal(neighbor_init(&nl, &s, SKIN), 0);
-    assert_int_equal(neighbor_build(&nl, &s), 0);
-    assert_int_equal(forces_init(&fw, s.n, 0), 0);
-    forces_compute(&s, &nl, &fw, NULL);
+    first_forces(&s, &nl, &fw);
     double p0[3] = {0, 0, 0};
     for (int i = 0; i < s.n; i++) for (int d = 0; d < 3; d++) p0[d] += s.v[3 * i + d];
     long builds0 = nl.builds;
@@ -468,10 +468,7 @@ static void neighbor_list_shear_dynamics(void **state)
     make_system(&s, 3, 955, L, 0.3, 25.0, 4.5, 2.0, 1.0, 41);
     NeighborList nl;
     ForceWork fw;
-    assert_int_equal(neighbor_init(&nl, &s, SKIN), 0);
-    assert_int_equal(neighbor_build(&nl, &s), 0);
-    assert_int_equal(forces_init(&fw, s.n, 0), 0);
-    forces_compute(&s, &nl, &fw, NULL);
+    first_forces(&s, &nl, &fw);
     int reused = 0;
     for (int k = 0; k < 80; k++) {
         neighbor_note_shear(&nl, integrate_predict(&s));

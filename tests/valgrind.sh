@@ -7,13 +7,10 @@
 # OpenMP runs on one thread (libgomp's pool is then not created).
 set -u
 cd "$(dirname "$0")/.."
-DPD=${DPD:-bin/dpd}
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-valgrind-XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+. tests/shlib.sh valgrind
 export OMP_NUM_THREADS=1
 VG=(valgrind --tool=memcheck --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite
     --quiet)
-pass=0 fail=0
 vg() {   # vg NAME WANTED_STATUS ARGS...
     local name=$1 want=$2; shift 2
     "${VG[@]}" "$DPD" "$@" >/dev/null 2>"$tmp/$name.err"; local st=$?
