@@ -17,7 +17,7 @@ void box_init(Box *b, int dim, const double L[3], double shear_rate)
 
 void box_advance(Box *b, double dt)
 {
-    if (b->shear_rate == 0.0) return;
+    if (!MOD_SHEAR(b)) return;
     b->le_offset = fmod(b->le_offset + b->shear_rate * b->L[1] * dt, b->L[0]);
     if (b->le_offset < 0.0) b->le_offset += b->L[0];
 }
@@ -38,19 +38,20 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
          * back in one go instead of one box length at a time */
         const double n = floor(x[1] * b->inv[1]);
         if (!isfinite(n) || fabs(n) > 1e9) return;   /* leave it: the run stops at the check */
-        x[1] -= n * b->L[1]; x[0] -= n * b->le_offset; add_images(&img[1], n);
-        if (vx1) *vx1 -= n * jump;
-        if (vx2) *vx2 -= n * jump;
+        x[1] -= n * b->L[1]; add_images(&img[1], n);
+        if (DPD_MODULES) {
+            x[0] -= n * b->le_offset;
+            if (vx1) *vx1 -= n * jump;
+            if (vx2) *vx2 -= n * jump;
+        }
     }
     while (x[1] >= b->L[1]) {
-        x[1] -= b->L[1]; x[0] -= b->le_offset; add_images(&img[1], 1.0);
-        if (vx1) *vx1 -= jump;
-        if (vx2) *vx2 -= jump;
+        x[1] -= b->L[1]; add_images(&img[1], 1.0);
+        if (DPD_MODULES) { x[0] -= b->le_offset; if (vx1) *vx1 -= jump; if (vx2) *vx2 -= jump; }
     }
     while (x[1] < 0.0) {
-        x[1] += b->L[1]; x[0] += b->le_offset; add_images(&img[1], -1.0);
-        if (vx1) *vx1 += jump;
-        if (vx2) *vx2 += jump;
+        x[1] += b->L[1]; add_images(&img[1], -1.0);
+        if (DPD_MODULES) { x[0] += b->le_offset; if (vx1) *vx1 += jump; if (vx2) *vx2 += jump; }
     }
     for (int d = 0; d < b->dim; d++) {
         if (d == 1) continue; /* y done above */

@@ -5,6 +5,7 @@
 #define DPD_BOX_H
 
 #include <math.h>
+#include "modules.h"
 
 typedef struct {
     int dim;                  /* 2 or 3 */
@@ -24,11 +25,11 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
      * (two in x after a Lees-Edwards shift); no rint(), which is a libm call
      * on baseline x86-64 */
     if (d[1] > b->half[1]) {
-        d[1] -= b->L[1]; d[0] -= b->le_offset;
-        if (dvx) *dvx -= b->shear_rate * b->L[1];
+        d[1] -= b->L[1];
+        if (DPD_MODULES) { d[0] -= b->le_offset; if (dvx) *dvx -= b->shear_rate * b->L[1]; }
     } else if (d[1] < -b->half[1]) {
-        d[1] += b->L[1]; d[0] += b->le_offset;
-        if (dvx) *dvx += b->shear_rate * b->L[1];
+        d[1] += b->L[1];
+        if (DPD_MODULES) { d[0] += b->le_offset; if (dvx) *dvx += b->shear_rate * b->L[1]; }
     }
     if (d[0] > b->half[0]) { d[0] -= b->L[0]; if (d[0] > b->half[0]) d[0] -= b->L[0]; }
     else if (d[0] < -b->half[0]) { d[0] += b->L[0]; if (d[0] < -b->half[0]) d[0] += b->L[0]; }
@@ -41,7 +42,7 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
 /* Streaming velocity of the imposed shear at height y. */
 static inline double box_stream_vx(const Box *b, double y)
 {
-    return b->shear_rate * (y - b->half[1]);
+    return DPD_MODULES ? b->shear_rate * (y - b->half[1]) : 0.0;
 }
 
 /* Wrap one particle into the box; crossing y applies the Lees-Edwards shift

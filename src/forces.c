@@ -113,10 +113,10 @@ static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, con
     const double wc = 1.0 - r / p->rc;
     pv->epot += 0.5 * p->a * p->rc * wc * wc;
     const int ti = s->type[i], tj = s->type[j];
-    if (s->types[tj].frozen) {
+    if (MOD_FROZEN(&s->types[tj])) {
         pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
     }
-    if (s->types[ti].frozen) {
+    if (MOD_FROZEN(&s->types[ti])) {
         pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
     }
 }
@@ -144,7 +144,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
                 const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
                 double dvx = v[3 * i] - v[3 * j];
-                if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
+                if (MOD_SHEAR(b)) {   /* velocity of the Lees-Edwards image */
                     const double dy = x[3 * i + 1] - x[3 * j + 1];
                     if (dy > b->half[1]) dvx -= b->shear_rate * b->L[1];
                     else if (dy < -b->half[1]) dvx += b->shear_rate * b->L[1];
@@ -170,7 +170,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
 
 void forces_body(System *s)
 {
-    if (!s->has_body_force) return;
+    if (!MOD_BODY_FORCE(s)) return;
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         if (t->frozen) continue;
@@ -208,7 +208,7 @@ void forces_reduce_virial(PairVirial *pv, const ForceWork *w)
 
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
-    if (s->rotation) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
+    if (MOD_ROTATION(s)) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
     const int n = s->n;
     const size_t stride = 3 * (size_t)n;
     #pragma omp parallel for schedule(static, 1)

@@ -15,7 +15,7 @@ double integrate_predict(System *s)
         const ParticleType *t = &s->types[s->type[i]];
         double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
         const double *f = s->f + 3 * i;
-        if (t->frozen) {
+        if (MOD_FROZEN(t)) {
             for (int d = 0; d < 3; d++) { x[d] += dt * t->wall_velocity[d]; v[d] = vp[d] = t->wall_velocity[d]; }
         } else {
             const double im = 1.0 / t->mass;
@@ -27,7 +27,7 @@ double integrate_predict(System *s)
         }
         box_wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
-    if (s->rotation) rotation_predict(s);
+    if (MOD_ROTATION(s)) rotation_predict(s);
     s->step++;
     s->time += dt;
     return doff;
@@ -39,9 +39,9 @@ void integrate_correct(System *s)
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
-        if (t->frozen) continue;
+        if (MOD_FROZEN(t)) continue;
         const double h = 0.5 * dt / t->mass;
         for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
     }
-    if (s->rotation) rotation_correct(s);
+    if (MOD_ROTATION(s)) rotation_correct(s);
 }
