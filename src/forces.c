@@ -91,10 +91,10 @@ void forces_zero_virial(PairVirial *pv)
     if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
 }
 
-/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial. */
 /* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
- * energy and the force on frozen particles. Only on measurement steps. */
-static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
+ * energy and the force on frozen particles. Only on measurement steps, so kept
+ * out of line (the pair loop then compiles alike with and without -DDPD_BARE). */
+static __attribute__((noinline)) void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
                               double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
 {
     const Box *b = &s->box;
@@ -121,8 +121,12 @@ static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, con
     }
 }
 
-static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
-                      double *f, PairVirial *pv)
+/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial.
+ * le: the box has Lees-Edwards shear. A constant: the loop is compiled once per
+ * value (pair_loop below), so that a scene without shear runs no test for it. */
+static inline __attribute__((always_inline))
+void pair_loop_le(const System *s, const NeighborList *nl, int i0, int i1,
+                  double *f, PairVirial *pv, const int le)
 {
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
@@ -135,7 +139,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         double fi[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
             const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd);
+            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
             /* pass 2: the forces */
             for (int q = 0; q < m; q++) {
                 const int j = near[q];
@@ -144,7 +148,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
                 const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
                 double dvx = v[3 * i] - v[3 * j];
-                if (MOD_SHEAR(b)) {   /* velocity of the Lees-Edwards image */
+                if (le) {   /* velocity of the Lees-Edwards image */
                     const double dy = x[3 * i + 1] - x[3 * j + 1];
                     if (dy > b->half[1]) dvx -= b->shear_rate * b->L[1];
                     else if (dy < -b->half[1]) dvx += b->shear_rate * b->L[1];
@@ -166,6 +170,22 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         }
         f[3 * i] += fi[0]; f[3 * i + 1] += fi[1]; f[3 * i + 2] += fi[2];
     }
+}
+
+static void pair_loop_shear(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    pair_loop_le(s, nl, i0, i1, f, pv, 1);
+}
+
+static void pair_loop_plain(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    pair_loop_le(s, nl, i0, i1, f, pv, 0);
+}
+
+static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    if (MOD_SHEAR(&s->box)) pair_loop_shear(s, nl, i0, i1, f, pv);
+    else pair_loop_plain(s, nl, i0, i1, f, pv);
 }
 
 void forces_body(System *s)

@@ -1,21 +1,19 @@
-/* integrator.c - Groot-Warren velocity Verlet. */
+/* integrator.c - Groot-Warren velocity Verlet. The particle loops are compiled
+ * twice (a constant `walls`): a scene without frozen particles runs no test for
+ * them (src/modules.h). */
 #include "integrator.h"
 #include "rotation.h"
 
-double integrate_predict(System *s)
+static inline __attribute__((always_inline)) void predict_loop(System *s, const int walls)
 {
     const double dt = s->dt, lam = s->lambda;
-    const double old_offset = s->box.le_offset;
-    box_advance(&s->box, dt);
-    double doff = s->box.le_offset - old_offset;
-    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
-    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
+    BoxWrapFn *const wrap = MOD_SHEAR(&s->box) ? box_wrap_shear : box_wrap_plain;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
         const double *f = s->f + 3 * i;
-        if (MOD_FROZEN(t)) {
+        if (walls && t->frozen) {
             for (int d = 0; d < 3; d++) { x[d] += dt * t->wall_velocity[d]; v[d] = vp[d] = t->wall_velocity[d]; }
         } else {
             const double im = 1.0 / t->mass;
@@ -25,23 +23,45 @@ double integrate_predict(System *s)
                 v[d] += 0.5 * dt * f[d] * im;
             }
         }
-        box_wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
+}
+static void predict_walls(System *s) { predict_loop(s, 1); }
+static void predict_plain(System *s) { predict_loop(s, 0); }
+
+double integrate_predict(System *s)
+{
+    const double dt = s->dt;
+    const double old_offset = s->box.le_offset;
+    box_advance(&s->box, dt);
+    double doff = s->box.le_offset - old_offset;
+    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
+    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
+    if (MOD_ON(s->n_frozen > 0)) predict_walls(s);
+    else predict_plain(s);
     if (MOD_ROTATION(s)) rotation_predict(s);
     s->step++;
     s->time += dt;
     return doff;
 }
 
-void integrate_correct(System *s)
+static inline __attribute__((always_inline)) void correct_loop(System *s, const int walls)
 {
     const double dt = s->dt;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
-        if (MOD_FROZEN(t)) continue;
+        if (walls && t->frozen) continue;
         const double h = 0.5 * dt / t->mass;
         for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
     }
+}
+static void correct_walls(System *s) { correct_loop(s, 1); }
+static void correct_plain(System *s) { correct_loop(s, 0); }
+
+void integrate_correct(System *s)
+{
+    if (MOD_ON(s->n_frozen > 0)) correct_walls(s);
+    else correct_plain(s);
     if (MOD_ROTATION(s)) rotation_correct(s);
 }
