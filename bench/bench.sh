@@ -170,7 +170,7 @@ if [ "${MODULES:-1}" = 1 ]; then
             --set steps="$2" --set equilibration=50 2>&1 >/dev/null | awk '/I *refs:/ { gsub(",", "", $NF); print $NF }'
     }
     {
-        printf 'measure\tbin/dpd\tbare build\tdpd / bare\tnote\n'
+        printf 'measure\tbin/dpd\tbare build\tcost dpd / bare\tnote\n'
         if command -v valgrind >/dev/null; then
             declare -A ips
             for b in "$DPD" "$BARE"; do
@@ -182,17 +182,20 @@ if [ "${MODULES:-1}" = 1 ]; then
         fi
         for L in 20 10; do
             n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
-            bd=0; bb=0
+            bd=0; bb=0; pr=""
             for k in $(seq "$REPEAT"); do   # alternating, so slow spells of the machine hit both
                 for b in "$DPD" "$BARE"; do
                     d="$out/modules-$(basename "$b")-$L"
                     mod_run "$b" "$L" "$d" --set steps=$(steps_for "$L") --set equilibration=$(eq_for "$L")
                     c=$(val "$d" production_particle_steps_per_second_cpu)
-                    if [ "$b" = "$DPD" ]; then bd=$(max "$bd" "$c"); else bb=$(max "$bb" "$c"); fi
+                    if [ "$b" = "$DPD" ]; then bd=$(max "$bd" "$c"); cd=$c; else bb=$(max "$bb" "$c"); pr="$pr $(awk -v a="$cd" -v b="$c" 'BEGIN{print b/a}')"; fi
                 done
             done
-            printf 'particle-steps per CPU second, %d particles\t%.4g\t%.4g\t%s\t1 thread, best of %d, alternating\n' \
-                "$n" "$bd" "$bb" "$(awk -v a="$bd" -v b="$bb" 'BEGIN{printf "%.3f", b/a}')" "$REPEAT"
+            # the spread of the ratio over the REPEAT pairs of runs shows the machine's noise
+            printf 'particle-steps per CPU second, %d particles\t%.4g\t%.4g\t%s\t1 thread, best of %d, alternating; ratio of each pair %s\n' \
+                "$n" "$bd" "$bb" "$(awk -v a="$bd" -v b="$bb" 'BEGIN{printf "%.3f", b/a}')" "$REPEAT" \
+                "$(echo $pr | awk '{ lo = hi = $1; for (i = 2; i <= NF; i++) { if ($i < lo) lo = $i; if ($i > hi) hi = $i }
+                                     printf "%.3f to %.3f", lo, hi }')"
             dd="$out/modules-$(basename "$DPD")-$L" db="$out/modules-$(basename "$BARE")-$L"
             printf 'peak memory per particle [B], %d particles\t%.0f\t%.0f\t%s\tpeak RSS / particles\n' "$n" \
                 "$(val "$dd" peak_memory_bytes_per_particle)" "$(val "$db" peak_memory_bytes_per_particle)" \
