@@ -57,7 +57,7 @@ static inline double box_stream_vx(const Box *b, double y)
 void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 /* The same for a box with (shear) and without (plain) Lees-Edwards shear: the
  * integrator picks one per step, not per particle. */
-typedef void BoxWrapFn(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
-BoxWrapFn box_wrap_shear, box_wrap_plain;
+void box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+void box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 
 #endif

@@ -94,7 +94,7 @@ void forces_zero_virial(PairVirial *pv)
 /* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
  * energy and the force on frozen particles. Only on measurement steps, so kept
  * out of line (the pair loop then compiles alike with and without -DDPD_BARE). */
-static __attribute__((noinline)) void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
+static __attribute__((noinline, noclone)) void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
                               double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
 {
     const Box *b = &s->box;

@@ -1,13 +1,12 @@
 /* integrator.c - Groot-Warren velocity Verlet. The particle loops are compiled
- * twice (a constant `walls`): a scene without frozen particles runs no test for
- * them (src/modules.h). */
+ * once per module state (constants `walls` and `le`, Lees-Edwards): a scene
+ * without frozen particles or shear runs no test for them (src/modules.h). */
 #include "integrator.h"
 #include "rotation.h"
 
-static inline __attribute__((always_inline)) void predict_loop(System *s, const int walls)
+static inline __attribute__((always_inline)) void predict_loop(System *s, const int walls, const int le)
 {
     const double dt = s->dt, lam = s->lambda;
-    BoxWrapFn *const wrap = MOD_SHEAR(&s->box) ? box_wrap_shear : box_wrap_plain;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
@@ -23,11 +22,14 @@ static inline __attribute__((always_inline)) void predict_loop(System *s, const 
                 v[d] += 0.5 * dt * f[d] * im;
             }
         }
-        wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        if (le) box_wrap_shear(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        else box_wrap_plain(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
 }
-static void predict_walls(System *s) { predict_loop(s, 1); }
-static void predict_plain(System *s) { predict_loop(s, 0); }
+static void predict_plain(System *s) { predict_loop(s, 0, 0); }
+static void predict_walls(System *s) { predict_loop(s, 1, 0); }
+static void predict_shear(System *s) { predict_loop(s, 0, 1); }
+static void predict_walls_shear(System *s) { predict_loop(s, 1, 1); }
 
 double integrate_predict(System *s)
 {
@@ -37,7 +39,10 @@ double integrate_predict(System *s)
     double doff = s->box.le_offset - old_offset;
     if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
     else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
-    if (MOD_ON(s->n_frozen > 0)) predict_walls(s);
+    const int walls = MOD_ON(s->n_frozen > 0), le = MOD_SHEAR(&s->box);
+    if (walls && le) predict_walls_shear(s);
+    else if (walls) predict_walls(s);
+    else if (le) predict_shear(s);
     else predict_plain(s);
     if (MOD_ROTATION(s)) rotation_predict(s);
     s->step++;
