@@ -45,14 +45,33 @@ $(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
 	@mkdir -p bin
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
+# The bare build (src/modules.h): the same sources with every optional module
+# compiled out (-DDPD_BARE); it refuses scenes that switch one on. make bench
+# runs it beside bin/dpd (what unused modules cost); tests/bare.sh checks that
+# it gives bin/dpd's numbers bit for bit.
+# (SANITIZE=1: a sanitized one under build/asan, for make test)
+ifeq ($(SANITIZE),1)
+  BARE := $(BUILD)/dpd-bare
+else
+  BARE := build/dpd-bare
+endif
+BARE_OBJ := $(patsubst src/%.c,$(BUILD)/bare/%.o,$(SRC) src/main.c)
+$(BUILD)/bare/%.o: src/%.c src/*.h | $(DEPS_STAMP)
+	@mkdir -p $(BUILD)/bare
+	@echo "CC $< (bare)"
+	@$(CC) $(CFLAGS_ALL) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE"' -c $< -o $@
+
+$(BARE): $(BARE_OBJ)
+	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
+
 include tests/tests.mk
 include tests/reliability.mk
 include experiments/experiments.mk
 
-bench: $(BIN)
+bench: $(BIN) $(BARE)
 	@bench/bench.sh
 
-bench-peer: $(BIN)
+bench-peer: $(BIN) $(BARE)
 	@PEER=1 bench/bench.sh
 
 clean:

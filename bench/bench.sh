@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make bench: particle-steps per second of the standard DPD system on 1 and 2
 # threads, for 3e3, 2.4e4 and 1e6 particles, and peak memory per particle; the
-# cost of the rotating-particle terms (Pan 2008); the overdamped solvers.
+# cost of the rotating-particle terms (Pan 2008); the overdamped solvers; what
+# unused modules cost (bin/dpd against the bare build, build/dpd-bare).
 # With PEER=1 (make bench-peer) LAMMPS runs the same system in the same session,
 # interleaved with ours, and the ratios are printed. Timing is of the production
 # steps only, after equilibration. Machines are noisy: compare ratios of runs
@@ -59,6 +60,8 @@ pair_of_runs() {  # L -> best aggregate rate of two concurrent one-thread runs
     echo "$best"
 }
 
+# STANDARD=0 skips this section (the standard system: rates, speed-up, PASSIVE, ceiling, flatness)
+if [ "${STANDARD:-1}" = 1 ]; then
 if [ "${PEER:-0}" = 1 ]; then bash bench/peer/build-lammps.sh >/dev/null; fi
 printf '%-10s %-8s %14s %14s %12s %10s %8s %16s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle" "T" "dpd [ps/cpu-s]"
 declare -A rate crate
@@ -103,6 +106,7 @@ awk -v a="${rate[$first,1]}" -v b="${rate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, wall): %.2f\n", a/b}'
 awk -v a="${crate[$first,1]}" -v b="${crate[$last,1]}" \
     'BEGIN{printf "time per particle-step, largest / smallest system (1 thread, process CPU time): %.2f\n", a/b}'
+fi   # STANDARD
 
 # ---- rotating particles (issue 6): the Pan et al. 2008 fluid (3000 particles) with the shear and
 # rotational pair terms and particle spin, against the same system with rotation = false and
@@ -141,4 +145,71 @@ if [ "${SOLVERS:-1}" = 1 ]; then
     awk -F'\t' '$1 ~ /^(iteration_ratio_scheme2_best|time_ratio_scheme1_best|cpu_ratio_scheme1_scheme2_at_Estar)$/ {
         printf "%-36s %8.3f +- %.3f\n", $1, $2, $3 }' "$sout/summary.tsv"
     echo "targets (issue 3): iteration_ratio_scheme2_best >= 10, time_ratio_scheme1_best >= 15"
+fi
+
+# ---- unused modules (issue 7): bin/dpd against build/dpd-bare, the same sources with every
+# optional module's run-time test compiled out (-DDPD_BARE, src/modules.h; tests/bare.sh: the two
+# give the same numbers bit for bit on this scene). On the standard scene, which switches no module
+# on, the difference is what the unused modules cost. Three measures:
+#  - instructions per production particle-step (valgrind cachegrind, 3000 particles, 1 thread): the
+#    difference of a 300- and a 100-step run, so set-up and output cancel; deterministic, so it
+#    decides what the shared machine's timings cannot;
+#  - CPU time (24000 and 3000 particles, 1 thread, the two binaries alternating, best of REPEAT);
+#  - peak memory per particle, and the run's phase timers (measure, output) of bin/dpd.
+# Written to bench/modules.tsv (with date and commit), which paper.md shows. MODULES=0 skips it.
+if [ "${MODULES:-1}" = 1 ]; then
+    BARE=build/dpd-bare
+    [ -x "$BARE" ] || { echo "bench: $BARE missing (make $BARE)"; exit 1; }
+    mod_run() {  # BIN L DIR [--set ...]: the standard system of side L, 1 thread
+        local b=$1 L=$2 d=$3; shift 3
+        "$b" run bench/standard.cfg --out "$d" --threads 1 --quiet --set "box=[$L,$L,$L]" "$@" >/dev/null
+    }
+    irefs() {  # BIN STEPS -> instructions of the whole run (cachegrind)
+        OMP_NUM_THREADS=1 valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+            "$1" run bench/standard.cfg --out "$out/modules-cg" --threads 1 --quiet --set "box=[10,10,10]" \
+            --set steps="$2" --set equilibration=50 2>&1 >/dev/null | awk '/I *refs:/ { gsub(",", "", $NF); print $NF }'
+    }
+    {
+        printf 'measure\tbin/dpd\tbare build\tcost dpd / bare\tnote\n'
+        if command -v valgrind >/dev/null; then
+            declare -A ips
+            for b in "$DPD" "$BARE"; do
+                i1=$(irefs "$b" 100); i3=$(irefs "$b" 300)
+                ips[$b]=$(awk -v a="$i1" -v b="$i3" 'BEGIN{printf "%.1f", (b - a) / (200 * 3000)}')
+            done
+            printf 'instructions per particle-step, 3000 particles\t%s\t%s\t%s\tcachegrind, 1 thread, production steps 100 to 300\n' \
+                "${ips[$DPD]}" "${ips[$BARE]}" "$(awk -v a="${ips[$DPD]}" -v b="${ips[$BARE]}" 'BEGIN{printf "%.4f", a/b}')"
+        fi
+        for L in 20 10; do
+            n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
+            bd=0; bb=0; pr=""
+            for k in $(seq "$REPEAT"); do   # alternating, so slow spells of the machine hit both
+                for b in "$DPD" "$BARE"; do
+                    d="$out/modules-$(basename "$b")-$L"
+                    mod_run "$b" "$L" "$d" --set steps=$(steps_for "$L") --set equilibration=$(eq_for "$L")
+                    c=$(val "$d" production_particle_steps_per_second_cpu)
+                    if [ "$b" = "$DPD" ]; then bd=$(max "$bd" "$c"); cd=$c; else bb=$(max "$bb" "$c"); pr="$pr $(awk -v a="$cd" -v b="$c" 'BEGIN{print b/a}')"; fi
+                done
+            done
+            # the spread of the ratio over the REPEAT pairs of runs shows the machine's noise
+            printf 'particle-steps per CPU second, %d particles\t%.4g\t%.4g\t%s\t1 thread, best of %d, alternating; ratio of each pair %s\n' \
+                "$n" "$bd" "$bb" "$(awk -v a="$bd" -v b="$bb" 'BEGIN{printf "%.3f", b/a}')" "$REPEAT" \
+                "$(echo $pr | awk '{ lo = hi = $1; for (i = 2; i <= NF; i++) { if ($i < lo) lo = $i; if ($i > hi) hi = $i }
+                                     printf "%.3f to %.3f", lo, hi }')"
+            dd="$out/modules-$(basename "$DPD")-$L" db="$out/modules-$(basename "$BARE")-$L"
+            printf 'peak memory per particle [B], %d particles\t%.0f\t%.0f\t%s\tpeak RSS / particles\n' "$n" \
+                "$(val "$dd" peak_memory_bytes_per_particle)" "$(val "$db" peak_memory_bytes_per_particle)" \
+                "$(awk -v a="$(val "$dd" peak_memory_bytes_per_particle)" -v b="$(val "$db" peak_memory_bytes_per_particle)" 'BEGIN{printf "%.3f", a/b}')"
+            for ph in measure output; do
+                printf 'phase timer %s [s] / force [s], %d particles\t%s / %s\t%s / %s\t-\tthe last run'"'"'s summary.tsv\n' "$ph" "$n" \
+                    "$(val "$dd" time_${ph}_seconds)" "$(val "$dd" time_force_seconds)" \
+                    "$(val "$db" time_${ph}_seconds)" "$(val "$db" time_force_seconds)"
+            done
+        done
+        printf 'date, commit\t%s\t%s\t-\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" "$(uname -m), $(nproc --all) cores"
+    } > "$out/modules.tsv"
+    cp "$out/modules.tsv" bench/modules.tsv
+    echo
+    echo "unused modules: bin/dpd against the bare build (standard scene, no module on; bench/modules.tsv):"
+    column -t -s $'\t' bench/modules.tsv
 fi

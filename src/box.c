@@ -17,7 +17,7 @@ void box_init(Box *b, int dim, const double L[3], double shear_rate)
 
 void box_advance(Box *b, double dt)
 {
-    if (b->shear_rate == 0.0) return;
+    if (!MOD_SHEAR(b)) return;
     b->le_offset = fmod(b->le_offset + b->shear_rate * b->L[1] * dt, b->L[0]);
     if (b->le_offset < 0.0) b->le_offset += b->L[0];
 }
@@ -30,7 +30,9 @@ static void add_images(int *img, double n)
     *img = t > (double)INT_MAX ? INT_MAX : (t < (double)INT_MIN ? INT_MIN : (int)t);
 }
 
-void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
+/* le: the box has Lees-Edwards shear, a constant (compiled once per value). */
+static inline __attribute__((always_inline))
+void wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2, const int le)
 {
     const double jump = b->shear_rate * b->L[1];
     if (!(x[1] > -b->L[1] && x[1] < 2.0 * b->L[1])) {
@@ -38,19 +40,20 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
          * back in one go instead of one box length at a time */
         const double n = floor(x[1] * b->inv[1]);
         if (!isfinite(n) || fabs(n) > 1e9) return;   /* leave it: the run stops at the check */
-        x[1] -= n * b->L[1]; x[0] -= n * b->le_offset; add_images(&img[1], n);
-        if (vx1) *vx1 -= n * jump;
-        if (vx2) *vx2 -= n * jump;
+        x[1] -= n * b->L[1]; add_images(&img[1], n);
+        if (le) {
+            x[0] -= n * b->le_offset;
+            if (vx1) *vx1 -= n * jump;
+            if (vx2) *vx2 -= n * jump;
+        }
     }
     while (x[1] >= b->L[1]) {
-        x[1] -= b->L[1]; x[0] -= b->le_offset; add_images(&img[1], 1.0);
-        if (vx1) *vx1 -= jump;
-        if (vx2) *vx2 -= jump;
+        x[1] -= b->L[1]; add_images(&img[1], 1.0);
+        if (le) { x[0] -= b->le_offset; if (vx1) *vx1 -= jump; if (vx2) *vx2 -= jump; }
     }
     while (x[1] < 0.0) {
-        x[1] += b->L[1]; x[0] += b->le_offset; add_images(&img[1], -1.0);
-        if (vx1) *vx1 += jump;
-        if (vx2) *vx2 += jump;
+        x[1] += b->L[1]; add_images(&img[1], -1.0);
+        if (le) { x[0] += b->le_offset; if (vx1) *vx1 += jump; if (vx2) *vx2 += jump; }
     }
     for (int d = 0; d < b->dim; d++) {
         if (d == 1) continue; /* y done above */
@@ -59,4 +62,20 @@ void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
         if (n != 0.0) { x[d] -= n * b->L[d]; add_images(&img[d], n); }
         if (x[d] >= b->L[d]) x[d] -= b->L[d]; /* round-off at the upper edge */
     }
+}
+
+void box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
+{
+    wrap(b, x, img, vx1, vx2, 1);
+}
+
+void box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
+{
+    wrap(b, x, img, vx1, vx2, 0);
+}
+
+void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2)
+{
+    if (MOD_SHEAR(b)) wrap(b, x, img, vx1, vx2, 1);
+    else wrap(b, x, img, vx1, vx2, 0);
 }

@@ -5,6 +5,7 @@
 #define DPD_BOX_H
 
 #include <math.h>
+#include "modules.h"
 
 typedef struct {
     int dim;                  /* 2 or 3 */
@@ -17,18 +18,20 @@ void box_init(Box *b, int dim, const double L[3], double shear_rate);
 void box_advance(Box *b, double dt);
 
 /* Minimum-image separation r_i - r_j and, if dv != NULL, the velocity of i
- * relative to that image of j. */
-static inline void box_min_image(const Box *b, double d[3], double *dvx)
+ * relative to that image of j. le = 0 (a constant in the hot loops, which are
+ * compiled once per value) leaves out the Lees-Edwards shift: only for boxes
+ * without shear, whose offset is 0. */
+static inline void box_min_image_le(const Box *b, double d[3], double *dvx, const int le)
 {
     /* positions are wrapped into [0, L), so one fold per direction suffices
      * (two in x after a Lees-Edwards shift); no rint(), which is a libm call
      * on baseline x86-64 */
     if (d[1] > b->half[1]) {
-        d[1] -= b->L[1]; d[0] -= b->le_offset;
-        if (dvx) *dvx -= b->shear_rate * b->L[1];
+        d[1] -= b->L[1];
+        if (DPD_MODULES && le) { d[0] -= b->le_offset; if (dvx) *dvx -= b->shear_rate * b->L[1]; }
     } else if (d[1] < -b->half[1]) {
-        d[1] += b->L[1]; d[0] += b->le_offset;
-        if (dvx) *dvx += b->shear_rate * b->L[1];
+        d[1] += b->L[1];
+        if (DPD_MODULES && le) { d[0] += b->le_offset; if (dvx) *dvx += b->shear_rate * b->L[1]; }
     }
     if (d[0] > b->half[0]) { d[0] -= b->L[0]; if (d[0] > b->half[0]) d[0] -= b->L[0]; }
     else if (d[0] < -b->half[0]) { d[0] += b->L[0]; if (d[0] < -b->half[0]) d[0] += b->L[0]; }
@@ -38,14 +41,23 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
     }
 }
 
+static inline void box_min_image(const Box *b, double d[3], double *dvx)
+{
+    box_min_image_le(b, d, dvx, 1);
+}
+
 /* Streaming velocity of the imposed shear at height y. */
 static inline double box_stream_vx(const Box *b, double y)
 {
-    return b->shear_rate * (y - b->half[1]);
+    return DPD_MODULES ? b->shear_rate * (y - b->half[1]) : 0.0;
 }
 
 /* Wrap one particle into the box; crossing y applies the Lees-Edwards shift
  * to x and to every velocity given. img counts crossings. */
 void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+/* The same for a box with (shear) and without (plain) Lees-Edwards shear: the
+ * integrator picks one per step, not per particle. */
+void box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+void box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 
 #endif

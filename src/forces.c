@@ -91,10 +91,10 @@ void forces_zero_virial(PairVirial *pv)
     if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
 }
 
-/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial. */
 /* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
- * energy and the force on frozen particles. Only on measurement steps. */
-static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
+ * energy and the force on frozen particles. Only on measurement steps, so kept
+ * out of line (the pair loop then compiles alike with and without -DDPD_BARE). */
+static __attribute__((noinline, noclone)) void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
                               double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
 {
     const Box *b = &s->box;
@@ -113,16 +113,20 @@ static void accumulate_virial(PairVirial *pv, const System *s, int i, int j, con
     const double wc = 1.0 - r / p->rc;
     pv->epot += 0.5 * p->a * p->rc * wc * wc;
     const int ti = s->type[i], tj = s->type[j];
-    if (s->types[tj].frozen) {
+    if (MOD_FROZEN(&s->types[tj])) {
         pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
     }
-    if (s->types[ti].frozen) {
+    if (MOD_FROZEN(&s->types[ti])) {
         pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
     }
 }
 
-static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
-                      double *f, PairVirial *pv)
+/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial.
+ * le: the box has Lees-Edwards shear. A constant: the loop is compiled once per
+ * value (pair_loop below), so that a scene without shear runs no test for it. */
+static inline __attribute__((always_inline))
+void pair_loop_le(const System *s, const NeighborList *nl, int i0, int i1,
+                  double *f, PairVirial *pv, const int le)
 {
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
@@ -135,7 +139,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         double fi[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
             const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd);
+            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
             /* pass 2: the forces */
             for (int q = 0; q < m; q++) {
                 const int j = near[q];
@@ -144,7 +148,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
                 const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
                 double dvx = v[3 * i] - v[3 * j];
-                if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
+                if (le) {   /* velocity of the Lees-Edwards image */
                     const double dy = x[3 * i + 1] - x[3 * j + 1];
                     if (dy > b->half[1]) dvx -= b->shear_rate * b->L[1];
                     else if (dy < -b->half[1]) dvx += b->shear_rate * b->L[1];
@@ -168,9 +172,25 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     }
 }
 
+static void pair_loop_shear(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    pair_loop_le(s, nl, i0, i1, f, pv, 1);
+}
+
+static void pair_loop_plain(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    pair_loop_le(s, nl, i0, i1, f, pv, 0);
+}
+
+static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+{
+    if (MOD_SHEAR(&s->box)) pair_loop_shear(s, nl, i0, i1, f, pv);
+    else pair_loop_plain(s, nl, i0, i1, f, pv);
+}
+
 void forces_body(System *s)
 {
-    if (!s->has_body_force) return;
+    if (!MOD_BODY_FORCE(s)) return;
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         if (t->frozen) continue;
@@ -208,7 +228,7 @@ void forces_reduce_virial(PairVirial *pv, const ForceWork *w)
 
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
-    if (s->rotation) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
+    if (MOD_ROTATION(s)) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
     const int n = s->n;
     const size_t stride = 3 * (size_t)n;
     #pragma omp parallel for schedule(static, 1)

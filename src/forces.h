@@ -59,9 +59,9 @@ void forces_body(System *s);
 #define PAIR_BATCH 256
 /* Pass 1 of the pair kernels, branch free: the list entries k0..k1 of particle
  * i that lie inside the largest cutoff, with their minimum-image separation and
- * r^2 (dd[q] = dx, dy, dz, r2). Returns their number. */
-static inline int pairs_in_range(const System *s, const NeighborList *nl, int i, int k0, int k1,
-                                 int near[PAIR_BATCH], double dd[PAIR_BATCH][4])
+ * r^2 (dd[q] = dx, dy, dz, r2). Returns their number. le: as box_min_image_le. */
+static inline __attribute__((always_inline)) int pairs_in_range(const System *s, const NeighborList *nl, int i, int k0, int k1,
+                                 int near[PAIR_BATCH], double dd[PAIR_BATCH][4], const int le)
 {
     const double *x = s->x;
     const double rc2_max = s->rc_max * s->rc_max;
@@ -69,7 +69,7 @@ static inline int pairs_in_range(const System *s, const NeighborList *nl, int i,
     for (int k = k0; k < k1; k++) {
         const int j = nl->nbr[k];
         double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
-        box_min_image(&s->box, d, NULL);
+        box_min_image_le(&s->box, d, NULL, le);
         const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         near[m] = j;
         dd[m][0] = d[0]; dd[m][1] = d[1]; dd[m][2] = d[2]; dd[m][3] = r2;

@@ -1,21 +1,18 @@
-/* integrator.c - Groot-Warren velocity Verlet. */
+/* integrator.c - Groot-Warren velocity Verlet. The particle loops are compiled
+ * once per module state (constants `walls` and `le`, Lees-Edwards): a scene
+ * without frozen particles or shear runs no test for them (src/modules.h). */
 #include "integrator.h"
 #include "rotation.h"
 
-double integrate_predict(System *s)
+static inline __attribute__((always_inline)) void predict_loop(System *s, const int walls, const int le)
 {
     const double dt = s->dt, lam = s->lambda;
-    const double old_offset = s->box.le_offset;
-    box_advance(&s->box, dt);
-    double doff = s->box.le_offset - old_offset;
-    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
-    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
         const double *f = s->f + 3 * i;
-        if (t->frozen) {
+        if (walls && t->frozen) {
             for (int d = 0; d < 3; d++) { x[d] += dt * t->wall_velocity[d]; v[d] = vp[d] = t->wall_velocity[d]; }
         } else {
             const double im = 1.0 / t->mass;
@@ -25,23 +22,51 @@ double integrate_predict(System *s)
                 v[d] += 0.5 * dt * f[d] * im;
             }
         }
-        box_wrap(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        if (le) box_wrap_shear(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        else box_wrap_plain(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
-    if (s->rotation) rotation_predict(s);
+}
+static void predict_plain(System *s) { predict_loop(s, 0, 0); }
+static void predict_walls(System *s) { predict_loop(s, 1, 0); }
+static void predict_shear(System *s) { predict_loop(s, 0, 1); }
+static void predict_walls_shear(System *s) { predict_loop(s, 1, 1); }
+
+double integrate_predict(System *s)
+{
+    const double dt = s->dt;
+    const double old_offset = s->box.le_offset;
+    box_advance(&s->box, dt);
+    double doff = s->box.le_offset - old_offset;
+    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
+    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
+    const int walls = MOD_ON(s->n_frozen > 0), le = MOD_SHEAR(&s->box);
+    if (walls && le) predict_walls_shear(s);
+    else if (walls) predict_walls(s);
+    else if (le) predict_shear(s);
+    else predict_plain(s);
+    if (MOD_ROTATION(s)) rotation_predict(s);
     s->step++;
     s->time += dt;
     return doff;
 }
 
-void integrate_correct(System *s)
+static inline __attribute__((always_inline)) void correct_loop(System *s, const int walls)
 {
     const double dt = s->dt;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
-        if (t->frozen) continue;
+        if (walls && t->frozen) continue;
         const double h = 0.5 * dt / t->mass;
         for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
     }
-    if (s->rotation) rotation_correct(s);
+}
+static void correct_walls(System *s) { correct_loop(s, 1); }
+static void correct_plain(System *s) { correct_loop(s, 0); }
+
+void integrate_correct(System *s)
+{
+    if (MOD_ON(s->n_frozen > 0)) correct_walls(s);
+    else correct_plain(s);
+    if (MOD_ROTATION(s)) rotation_correct(s);
 }

@@ -91,12 +91,12 @@ static void sample_thermo(Measure *m, const System *s, const PairVirial *pv)
     double K[9] = {0};
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
-        if (t->frozen) continue;
+        if (MOD_FROZEN(t)) continue;
         const double c[3] = {s->v[3 * i] - box_stream_vx(&s->box, s->x[3 * i + 1]), s->v[3 * i + 1], s->v[3 * i + 2]};
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) K[3 * a + b] += t->mass * c[a] * c[b];
     }
-    if (m->colloids) colloid_kinetic(m->colloids, &s->box, K);   /* the rigid bodies' momentum flux */
+    if (MOD_ON(m->colloids)) colloid_kinetic(m->colloids, &s->box, K);   /* the rigid bodies' momentum flux */
     const double V = volume(&s->box);
     for (int k = 0; k < 9; k++) {
         series_push(&m->P[STRESS_KINETIC][k], K[k] / V);
@@ -112,9 +112,9 @@ static void sample_thermo(Measure *m, const System *s, const PairVirial *pv)
     series_push(&m->temperature, system_kinetic_temperature(s));
     series_push(&m->epot, pv->epot / s->n);
     for (int t = 0; t < s->ntypes; t++)
-        if (s->types[t].frozen)
+        if (MOD_FROZEN(&s->types[t]))
             for (int d = 0; d < 3; d++) series_push(&m->frozen_force[t][d], pv->frozen_force[t][d]);
-    if (s->rotation) {
+    if (MOD_ROTATION(s)) {
         series_push(&m->rot_temperature, rotation_temperature(s));
         for (int t = 0; t < s->ntypes; t++)
             if (s->types[t].frozen)
@@ -240,16 +240,16 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
                     long long prod_step)
 {
     if (prod_step < 0) return;
-    if (m->msd_on && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
-    if (m->tcaf.on && prod_step % m->tcaf.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
-    if (m->rdf_on && prod_step % m->rdf_every == 0)
+    if (MOD_ON(m->msd_on) && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
+    if (MOD_ON(m->tcaf.on) && prod_step % m->tcaf.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
+    if (MOD_ON(m->rdf_on) && prod_step % m->rdf_every == 0)
         sample_rdf(m, s, nl, block_of(m, prod_step / m->every));
     if (prod_step % m->every) return;
     const long long sample = prod_step / m->every;
     sample_thermo(m, s, pv);
     field_sample(&m->field, s, block_of(m, sample));
-    if (m->com_on) sample_com(m, s, sample);
-    if (m->prof_on) {
+    if (MOD_ON(m->com_on)) sample_com(m, s, sample);
+    if (MOD_ON(m->prof_on)) {
         sample_profile(m, s, pv, block_of(m, sample));
         m->prof_tsum[block_of(m, sample)] += prod_step * s->dt;
     }

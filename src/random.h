@@ -54,7 +54,7 @@ typedef struct {
 
 double rng_counter_normal(CounterRng *c);
 
-static inline void rng_counter_start(CounterRng *c, uint32_t seed, uint32_t stream,
+static inline __attribute__((always_inline)) void rng_counter_start(CounterRng *c, uint32_t seed, uint32_t stream,
                                      uint64_t a, uint32_t b, uint32_t d)
 {
     c->ctr.v[0] = (uint32_t)a; c->ctr.v[1] = (uint32_t)(a >> 32); c->ctr.v[2] = b; c->ctr.v[3] = d;
@@ -64,7 +64,7 @@ static inline void rng_counter_start(CounterRng *c, uint32_t seed, uint32_t stre
 }
 
 /* theta_ij = theta_ji ~ N(0,1) for the pair (i, j) at a step (eq. 5). */
-static inline double rng_pair_normal(uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
+static inline __attribute__((always_inline)) double rng_pair_normal(uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
 {
     CounterRng c;
     const uint32_t lo = id_i < id_j ? id_i : id_j, hi = id_i < id_j ? id_j : id_i;

@@ -147,7 +147,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
           const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-          const int m = pairs_in_range(s, nl, i, k0, k1, near, dd);
+          const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, 1);
           /* pass 2: forces and torques */
           for (int q = 0; q < m; q++) {
             const int j = near[q];

@@ -209,7 +209,7 @@ static int overdamped_step(System *s, NeighborList *nl, OdSystem *od, const RunC
 static void confine(System *s, const RunConfig *rc)
 {
     const int a = rc->confine_axis;
-    if (a < 0) return;
+    if (!MOD_ON(a >= 0)) return;
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         if (s->types[s->type[i]].frozen) continue;
@@ -259,7 +259,7 @@ static int check_stable(const System *s, const RunConfig *rc, const char **what,
         *value = system_kinetic_temperature(s);
         *limit = rc->max_temperature_ratio * kT;
         if (!isfinite(*value) || *value > *limit) return 0;
-        if (s->rotation) {   /* spins can blow up first (too small an inertia for the step) */
+        if (MOD_ROTATION(s)) {   /* spins can blow up first (too small an inertia for the step) */
             *what = "rotational temperature";
             *value = rotation_temperature(s);
             if (!isfinite(*value) || *value > *limit) return 0;
@@ -267,7 +267,7 @@ static int check_stable(const System *s, const RunConfig *rc, const char **what,
     }
     double v2max = 0.0, lmin = INFINITY;
     for (int i = 0; i < s->n; i++) {
-        if (s->types[s->type[i]].frozen) continue;
+        if (MOD_FROZEN(&s->types[s->type[i]])) continue;
         const double *v = s->v + 3 * i;
         const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
         if (!(v2 <= v2max)) v2max = v2;   /* NaN propagates */
@@ -370,7 +370,7 @@ int run_scene(const RunOptions *opt)
     if (!ss.sol || !ss.ref) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     double vwall[DPD_MAX_TYPES][3];
     for (int t = 0; t < s.ntypes; t++) memcpy(vwall[t], s.types[t].wall_velocity, sizeof vwall[t]);
-    const int walls_later = rc.walls_start_at_production && rc.equilibration > 0;
+    const int walls_later = MOD_ON(rc.walls_start_at_production && rc.equilibration > 0);
     /* checkpoints: the scene as run identifies them */
     char *scene_txt = scene_text(&sc);
     const uint64_t scene_hash = checkpoint_hash(scene_txt ? scene_txt : "", scene_txt ? strlen(scene_txt) : 0, 0);
@@ -405,13 +405,13 @@ int run_scene(const RunOptions *opt)
     if (walls_later) set_walls_moving(&s, (const double (*)[3])vwall, resumed && s.step > (uint64_t)rc.equilibration);
     if (resumed || status) {
         /* forces, v_pred and the m = 0 velocities of this step come from the checkpoint */
-    } else if (rc.overdamped) {
+    } else if (MOD_ON(rc.overdamped)) {
         int r = overdamped_step(&s, &nl, &od, &rc, &ss);
         if (r) { status = r == -2 ? 4 : 3; }
     } else {
         forces_compute(&s, &nl, &fw, NULL);
-        if (rc.bonds) bonds_forces(rc.bonds, &s, NULL);
-        if (rc.colloids) colloid_step(rc.colloids, &s, NULL);   /* particles start on their sites */
+        if (MOD_ON(rc.bonds)) bonds_forces(rc.bonds, &s, NULL);
+        if (MOD_ON(rc.colloids)) colloid_step(rc.colloids, &s, NULL);   /* particles start on their sites */
     }
     if (!resumed) st.prod_wall0 = rc.equilibration == 0 ? wall_now() : 0.0;
     st.prod_cpu0 = resumed ? -1.0 : cpu_now();
@@ -426,7 +426,7 @@ int run_scene(const RunOptions *opt)
         double t0 = wall_now(), t1, t2, t3, t4;
         long long prod;
         int want;
-        if (rc.overdamped) {
+        if (MOD_ON(rc.overdamped)) {
             /* the velocities of step k are known: sample them, then move (eq. 28) */
             prod = (long long)s.step - rc.equilibration;
             want = prod >= 0 && measure_wants_virial(&m, prod);
@@ -454,8 +454,8 @@ int run_scene(const RunOptions *opt)
             prod = (long long)s.step - rc.equilibration;
             want = prod >= 0 && measure_wants_virial(&m, prod);
             forces_compute(&s, &nl, &fw, want ? &pv : NULL);
-            if (rc.bonds) { bonds_forces(rc.bonds, &s, want ? &pv : NULL); bonds_sample(rc.bonds, &s, prod); }
-            if (rc.colloids) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s, want ? &pv : NULL); }   /* eq. 30 */
+            if (MOD_ON(rc.bonds)) { bonds_forces(rc.bonds, &s, want ? &pv : NULL); bonds_sample(rc.bonds, &s, prod); }
+            if (MOD_ON(rc.colloids)) { rc.colloids->record = prod >= 0; colloid_step(rc.colloids, &s, want ? &pv : NULL); }   /* eq. 30 */
             t3 = wall_now();
             integrate_correct(&s);
             t4 = wall_now();
@@ -463,7 +463,7 @@ int run_scene(const RunOptions *opt)
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
         /* every 10 steps; every step for spins (they can run away within a few steps) and at m = 0 (the
          * check costs nothing beside the solve, and a runaway would otherwise first show as a failed solve) */
-        if (s.step % 10 == 0 || want || s.rotation || rc.overdamped) {
+        if (s.step % 10 == 0 || want || MOD_ROTATION(&s) || MOD_ON(rc.overdamped)) {
             const char *what;
             double val, lim;
             if (!check_stable(&s, &rc, &what, &val, &lim)) {

@@ -69,7 +69,7 @@ void system_permute(System *s, const int *perm, double *scratch)
 /* Momentum is conserved only without walls and body forces. */
 static int momentum_conserved(const System *s)
 {
-    return s->n_frozen == 0 && !s->has_body_force;
+    return !MOD_ON(s->n_frozen != 0 || s->has_body_force);
 }
 
 int system_dof(const System *s)
@@ -92,7 +92,7 @@ double system_kinetic_temperature(const System *s)
         double mtot = 0.0;
         for (int i = 0; i < s->n; i++) {
             const ParticleType *t = &s->types[s->type[i]];
-            if (t->frozen) continue;
+            if (MOD_FROZEN(t)) continue;
             vcm[0] += t->mass * (s->v[3 * i] - box_stream_vx(&s->box, s->x[3 * i + 1]));
             vcm[1] += t->mass * s->v[3 * i + 1];
             vcm[2] += t->mass * s->v[3 * i + 2];
@@ -103,7 +103,7 @@ double system_kinetic_temperature(const System *s)
     double sum = 0.0;
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
-        if (t->frozen) continue;
+        if (MOD_FROZEN(t)) continue;
         const double *v = s->v + 3 * i;
         const double vx = v[0] - box_stream_vx(&s->box, s->x[3 * i + 1]) - vcm[0];
         const double vy = v[1] - vcm[1], vz = v[2] - vcm[2];

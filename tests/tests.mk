@@ -23,5 +23,5 @@ $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
 .PHONY: test
-test: $(TEST_BINS) $(TEST_DPD)
-	@DPD=$(TEST_DPD) SANITIZE=$(SANITIZE) tests/run-tests.sh $(TEST_BINS)
+test: $(TEST_BINS) $(TEST_DPD) $(BARE)
+	@DPD=$(TEST_DPD) BARE=$(BARE) SANITIZE=$(SANITIZE) tests/run-tests.sh $(TEST_BINS)

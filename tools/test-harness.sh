@@ -123,6 +123,8 @@ title: Fixture paper
 
 Verdicts: y {{verdict:x/y}}; miss {{verdict:x/miss}}; out {{verdict:x/out}}.
 
+CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
+
 <!-- table: x/y/rows.tsv -->
 
 # Environment
@@ -187,6 +189,7 @@ if [ -f "$G" ]; then
     in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
     in_file "mkpaper: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
+    in_file "mkpaper: inline CPU seconds from provenance, tier named unless paper" "$G" '^CPU: y 4322 s; out 2 (quick tier) s\.$'
     in_file "mkpaper: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
