@@ -26,7 +26,9 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
     t->nlags = t->window / t->every + 1;
     t->nslots = t->window / t->origin_every + 1;
     t->norig_expected = prod_steps >= t->window ? (prod_steps - t->window) / t->origin_every + 1 : 0;
-    const int nm = (int)floor(sqrt((double)t->n2max) + 1e-9);
+    const int ns2 = (int)floor(sqrt((double)t->n2max) + 1e-9);
+    const int nm = t->axis_nmax > ns2 ? t->axis_nmax : ns2;
+    if (nm > TCAF_NMAX) return -1;   /* phase tables of tcaf_current */
     for (int d = 0; d < 3; d++) t->nmax[d] = d < dim ? nm : 0;
     /* half space of integer vectors: i > 0, or i = 0 and j > 0, or i = j = 0 and l > 0 */
     int cap = (2 * nm + 1) * (2 * nm + 1) * (2 * nm + 1);
@@ -41,7 +43,9 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
             for (int l = -t->nmax[2]; l <= t->nmax[2]; l++) {
                 if (i == 0 && (j < 0 || (j == 0 && l <= 0))) continue;
                 const int n2 = i * i + j * j + l * l;
-                if (n2 > t->n2max) continue;
+                /* the sphere n^2 <= n2max, plus the axes up to axis_nmax */
+                const int on_axis = (i != 0) + (j != 0) + (l != 0) == 1;
+                if (n2 > t->n2max && !(on_axis && n2 <= t->axis_nmax * t->axis_nmax)) continue;
                 const int c[3] = {i, j, l};
                 for (int d = 0; d < 3; d++) {
                     t->vec[3 * nv + d] = c[d];
@@ -126,7 +130,7 @@ void tcaf_current(Tcaf *t, const System *s)
         double complex *Jp = part + (size_t)chunk * nv * 3;
         /* phase tables as (re, im) pairs: plain real arithmetic (complex
          * products in C11 without -ffast-math go through a NaN-safe libcall) */
-        double er[3][64], ei[3][64];
+        double er[3][2 * TCAF_NMAX + 1], ei[3][2 * TCAF_NMAX + 1];
         const int off = (W - 1) / 2;
         const int i0 = (int)((long long)n * chunk / TCAF_CHUNKS), i1 = (int)((long long)n * (chunk + 1) / TCAF_CHUNKS);
         for (int i = i0; i < i1; i++) {
@@ -513,6 +517,8 @@ int tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *
                           t->window / t->origin_every);
     if (scene_int(sc, g, "n2max", &v, 9, 1, 400, 0) < 0) return -1;
     t->n2max = (int)v;
+    if (scene_int(sc, g, "axis_nmax", &v, 0, 0, TCAF_NMAX, 0) < 0) return -1;
+    t->axis_nmax = (int)v;
     if (scene_bool(sc, g, "include_bodies", &t->include_bodies, 0) < 0) return -1;
     if (scene_double(sc, g, "fit_min", &t->fit_min, 0.3, 1e-6, 0.99, 0) < 0) return -1;
     if (scene_double(sc, g, "extrapolate_kmax", &t->extrap_kmax, 1e9, 0.0, 1e9, 0) < 0) return -1;

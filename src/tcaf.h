@@ -4,7 +4,9 @@
  *
  * Every wave vector k = 2 pi (i/Lx, j/Ly, l/Lz) with 0 < i^2 + j^2 + l^2 <= n2max
  * (one of each pair +-k: C(-k,t) is the complex conjugate of C(k,t)) is
- * sampled; J(k,t) = sum_j v_j exp(i k.r_j) (eq. 23) is projected on the plane
+ * sampled, and optionally the axis vectors (n,0,0), (0,n,0), (0,0,n) beyond
+ * that sphere up to n = axis_nmax (large |k| at a cost linear in n);
+ * J(k,t) = sum_j v_j exp(i k.r_j) (eq. 23) is projected on the plane
  * normal to k (both transverse polarisations), and
  *   C_perp(k,t) = (k^2 / N) <J_perp(-k,0) . J_perp(k,t)> / 2        (eq. 26)
  * is averaged over the vectors of one shell |k| and over time origins.
@@ -14,6 +16,8 @@
  * consecutive time origins. eta(k -> 0) from a weighted polynomial fit in k^2. */
 #ifndef DPD_TCAF_H
 #define DPD_TCAF_H
+
+#define TCAF_NMAX 31              /* largest |i|, |j|, |l| of a wave vector */
 
 #include <stdio.h>
 #include <complex.h>
@@ -26,6 +30,7 @@ typedef struct {
     int window;               /* correlation window (steps, multiple of every) */
     int origin_every;         /* steps between time origins (multiple of every) */
     int n2max;                /* largest i^2 + j^2 + l^2 */
+    int axis_nmax;            /* also (n,0,0), (0,n,0), (0,0,n) up to n = axis_nmax (0: none) */
     int type;                 /* -1: every mobile particle */
     double fit_min;           /* fit lags while <C/C0> >= fit_min */
     double extrap_kmax;       /* shells with |k| <= this enter the k -> 0 fit */
@@ -54,7 +59,7 @@ typedef struct {
     double body_mass;
 } Tcaf;
 
-/* measure.tcaf = { every; window; origin_every; n2max; type; fit_min;
+/* measure.tcaf = { every; window; origin_every; n2max; axis_nmax; type; fit_min;
  * extrapolate_kmax; extrapolate_order; } of the scene group g (validated). */
 int  tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
                     long long steps, int nblocks);

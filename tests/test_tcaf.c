@@ -81,6 +81,43 @@ static void wave_vectors_half_space(void **state)
     system_free(&s);
 }
 
+/* axis_nmax: beyond the sphere n^2 <= n2max only the axis vectors (n,0,0),
+ * (0,n,0), (0,0,n) are added, one shell of 3 vectors per n up to axis_nmax;
+ * the sphere is unchanged; a synthetic transverse mode on an axis shell gives
+ * the current N U / 2 as on a sphere shell. */
+static void axis_vectors_extend_k(void **state)
+{
+    (void)state;
+    System s; lattice(&s);
+    Tcaf t;
+    memset(&t, 0, sizeof t);
+    t.on = 1; t.every = 1; t.window = 10; t.origin_every = 5; t.n2max = 2; t.axis_nmax = 7;
+    t.type = -1; t.fit_min = 0.3; t.extrap_kmax = 1e9;
+    assert_int_equal(tcaf_init(&t, &s, 2, 100), 0);
+    /* sphere n^2 <= 2: 3 + 6 = 9 vectors; axes n = 2..7: 3 each */
+    CHECK_TRUE(t.nvec == 9 + 3 * 6, "%d vectors, want 9 of the sphere + 18 on the axes", t.nvec);
+    for (int n = 2; n <= 7; n++) {
+        CHECK_TRUE(find_vec(&t, n, 0, 0) >= 0 && find_vec(&t, 0, n, 0) >= 0 && find_vec(&t, 0, 0, n) >= 0,
+                   "axis vectors with n = %d missing", n);
+        CHECK_TRUE(find_vec(&t, n, 1, 0) < 0 && find_vec(&t, 1, 1, n) < 0, "off-axis vector with n = %d kept", n);
+    }
+    CHECK_TRUE(t.shell_n2[t.nshell - 1] == 49 && t.shell_nvec[t.nshell - 1] == 3,
+               "last shell n2 %d with %d vectors, want 49 and 3", t.shell_n2[t.nshell - 1], t.shell_nvec[t.nshell - 1]);
+    CHECK_REL("largest |k|", t.shell_k[t.nshell - 1], 2.0 * M_PI * 7 / LBOX, 1e-14);
+    for (int q = 1; q < t.nshell; q++)
+        CHECK_TRUE(t.shell_k[q] > t.shell_k[q - 1], "shells not sorted by |k| at %d", q);
+    /* v_z = U cos(k x), k = 2 pi 5 / L (|n_d| = 5 < M lattice sites: exact sums) */
+    const double k = 2.0 * M_PI * 5 / LBOX, U = 0.3;
+    memset(s.v, 0, 3 * (size_t)s.n * sizeof(double));
+    for (int i = 0; i < s.n; i++) s.v[3 * i + 2] = U * cos(k * s.x[3 * i]);
+    tcaf_current(&t, &s);
+    const int q = find_vec(&t, 5, 0, 0);
+    CHECK_ABS("|J_z(k)| of an axis mode", cabs(t.J[3 * q + 2]), s.n * U / 2, 1e-12 * s.n);
+    CHECK_ABS("J_x(k) of an axis mode", cabs(t.J[3 * q]), 0.0, 1e-12 * s.n);
+    tcaf_free(&t);
+    system_free(&s);
+}
+
 /* (1 - k k / k^2) J is orthogonal to k, idempotent, and leaves a transverse J alone. */
 static void transverse_projection_orthogonal(void **state)
 {
@@ -253,6 +290,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wave_vectors_half_space),
+        cmocka_unit_test(axis_vectors_extend_k),
         cmocka_unit_test(transverse_projection_orthogonal),
         cmocka_unit_test(synthetic_transverse_mode),
         cmocka_unit_test(fit_recovers_decay),

@@ -3,7 +3,10 @@
 # under simple shear, eta_susp / eta_solvent with four choices of the solvent viscosity:
 #   original: the solvent's shear viscosity (same box, rate, run length);
 #   TCAF:     eta_eff = the constrained system's eta(k -> 0) (Table 2, tab02-effective-viscosity);
-#   cube, sphere: the free system's eta(k) at k = 2 pi / lambda, lambda of eq. 31 / eq. 32.
+#   cube, sphere: the free system's eta(k) at k = 2 pi / lambda, lambda of eq. 31 / eq. 32, from
+#             a short run at dt = 0.001 sampling the axis wave vectors up to past the sphere's k
+#             (the main TCAF runs reach |k| ~ 2 and cannot resolve decays of a few steps);
+#             the same for the solvent alone (n = 4) in the same box (columns *_solvent).
 # fig05-relative-viscosity-a650 runs this script with A=6.50.
 . "$DPD_ROOT/tools/lib/exp.sh"
 A=${A:-3.53}
@@ -11,15 +14,19 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 T02=$HERE/../tab02-effective-viscosity
 # "kp:kq": the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a box
 # 15 kq / kp (same lattice spacing, particles per colloid cell and phi as the paper's)
+# hik: the high-k runs (every step at dt = 0.001: the decay time at the sphere's k is ~0.01)
+hik=(--set dt=0.001 --set measure.tcaf.every=1 --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10
+     --set measure.tcaf.n2max=1 --set measure.blocks=20)
 case $TIER in
-    quick) PAIRS="8:4 13:7"; TCAF_PAIRS="8:4"; LSOLV=8
+    quick) PAIRS="8:4 13:7"; TCAF_PAIRS="8:4"; LSOLV=8; hik+=(--set equilibration=300 --set steps=1000)
            shear=(--set dt=0.01 --set equilibration=200 --set steps=800)
            tcaf=(--set dt=0.01 --set equilibration=200 --set steps=1200 --set measure.tcaf.every=1
                  --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10 --set measure.tcaf.n2max=9) ;;
     # reduced: the paper's box, dt and TCAF settings at two phi, shorter runs (not the paper tier)
-    reduced) PAIRS="8:8 13:13"; TCAF_PAIRS="13:13"; LSOLV=15
+    reduced) PAIRS="8:8 13:13"; TCAF_PAIRS="13:13"; LSOLV=15; hik+=(--set equilibration=1000 --set steps=2000)
            shear=(--set equilibration=1000 --set steps=3000); tcaf=(--set equilibration=500 --set steps=3000) ;;
     paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; TCAF_PAIRS=$PAIRS; LSOLV=15
+           hik+=(--set equilibration=1000 --set steps=4000)
            shear=(); tcaf=() ;;
 esac
 rep=(--set "pairs.[0].a=$A")
@@ -27,7 +34,18 @@ rep3=(--set "pairs.[0].a=$A" --set "pairs.[1].a=$A" --set "pairs.[2].a=$A")
 dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent
-printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\n' > "$OUT/eta_r.tsv"
+# colloid size: one colloid at rest in a 5^3 box; r_half where the solvent-constituent RDF
+# reaches 1/2, from a weighted straight line through g(r) over 0.1 <= r <= 0.6 (where it rises
+# from ~0.2 to ~0.65; `dpd fit-line`): r_half = 0.35 + (1/2 - g(0.35)) / slope, error from
+# g(0.35)'s; the colloid radius d + r_half (d = 0.5, the site distance)
+dpd_run rdf "$HERE/colloid-rdf.cfg" "${rep3[@]}"
+cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
+"$DPD" fit-line "$OUT/colloid_rdf.tsv" --x r --y g --se g_se --range 0.1:0.6 |
+    awk -F'\t' -v d=0.5 '{ v[$1] = $2; s[$1] = $3 }
+        END { b = v["slope"]; x = 0.35 + (0.5 - v["value_at_centre"]) / b
+              e = sqrt(s["value_at_centre"]^2 + ((0.5 - v["value_at_centre"]) * s["slope"] / b)^2) / b
+              printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", x, e, d + x, e }' >> "$OUT/summary.tsv"
+printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 i=0
 for pair in $PAIRS; do
     kp=${pair%:*} kq=${pair#*:}
@@ -53,14 +71,27 @@ for pair in $PAIRS; do
         emit_ratio eta_r_tcaf_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
         lc=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", L / k }')                          # eq. 31
         ls=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", (3 / (4 * 3.14159265358979 * k^3 / L^3))^(1/3) }')  # eq. 32
-        awk -F'\t' -v lambda="$lc" -v name="eta_free_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
-        awk -F'\t' -v lambda="$ls" -v name="eta_free_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+        # eta(k) at the cube and sphere k: the axis shells n = 1 .. 1 + the sphere's n (k = 2 pi n / L;
+        # the cube's k is the shell n = kq), free system and solvent alone in the same box
+        nax=$(awk -v k="$kq" 'BEGIN { n = int(k * (4 * 3.14159265358979 / 3)^(1/3)) + 2; print (n > 31 ? 31 : n) }')
+        dpd_run freehk_$tag "$T02/free.cfg" "${hik[@]}" "${rep3[@]}" "${geo[@]}" --set "measure.tcaf.axis_nmax=$nax" \
+            --set "seed=$((40500 + 2 * i))"
+        dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
+            --set "box=[$L,$L,$L]" --set "measure.tcaf.axis_nmax=$nax" --set "seed=$((40501 + 2 * i))"
+        emit_from freehk_$tag temperature temperature_freehk_$tag
+        for sys in free solvent; do
+            awk -F'\t' -v lambda="$lc" -v name="eta_${sys}_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+            awk -F'\t' -v lambda="$ls" -v name="eta_${sys}_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+            cp "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_${sys}hk_$tag.tsv"
+        done
+        printf 'lambda_cube_%s\t%s\t0\nlambda_sphere_%s\t%s\t0\n' "$tag" "$lc" "$tag" "$ls" >> "$OUT/summary.tsv"
         # ratios and the TCAF - original difference (errors of the shared eta_susp counted once)
         awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 }
             function r(name, den) { if (!(den in v) || v[den] == "nan") { printf "%s\tnan\tnan\n", name; return }
                 x = v["eta_susp_" t] / v[den]; e = x * sqrt((s["eta_susp_" t] / v["eta_susp_" t])^2 + (s[den] / v[den])^2)
                 printf "%s\t%.10g\t%.4g\n", name, x, e }
             END { r("eta_r_cube_" t, "eta_free_cube_" t); r("eta_r_sphere_" t, "eta_free_sphere_" t)
+                  r("eta_r_cube_solvent_" t, "eta_solvent_cube_" t); r("eta_r_sphere_solvent_" t, "eta_solvent_sphere_" t)
                   es = v["eta_susp_" t]; a = v["eta_eff_" t]; b = v["eta_solvent"]
                   d = es / a - es / b
                   e = sqrt((s["eta_susp_" t] * (1 / a - 1 / b))^2 + (es * s["eta_eff_" t] / a^2)^2 + (es * s["eta_solvent"] / b^2)^2)
@@ -71,7 +102,8 @@ for pair in $PAIRS; do
     fi
     awk -F'\t' -v t="$tag" '{ v[$1] = $2 "\t" $3 }
         function g(q) { return (q in v) ? v[q] : "nan\tnan" }
-        END { split(v["phi_" t], p, "\t"); printf "%.6f\t%s\t%s\t%s\t%s\n", p[1], g("eta_r_original_" t), g("eta_r_tcaf_" t), g("eta_r_cube_" t), g("eta_r_sphere_" t) }' \
+        END { split(v["phi_" t], p, "\t"); printf "%.6f\t%s\t%s\t%s\t%s\t%s\t%s\n", p[1], g("eta_r_original_" t), g("eta_r_tcaf_" t),
+                  g("eta_r_cube_" t), g("eta_r_sphere_" t), g("eta_r_cube_solvent_" t), g("eta_r_sphere_solvent_" t) }' \
         "$OUT/summary.tsv" >> "$OUT/eta_r.tsv"
     i=$((i + 1))
 done

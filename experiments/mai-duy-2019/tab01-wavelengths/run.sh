@@ -1,15 +1,77 @@
 #!/usr/bin/env bash
 # Table 1 of Mai-Duy et al. 2019: the cube (eq. 31) and sphere (eq. 32) length
 # scales for the 11 volume fractions (k^3 octahedra of 6 particles among 13500
-# solvent particles in 15^3), computed by `dpd wavelengths`. Same for both tiers.
+# solvent particles in 15^3), computed by `dpd wavelengths` (every tier), and the
+# TCAF length scale (section 4.2.3): the free system's lambda = 2 pi / k at which
+# its eta(k) equals the constrained system's eta(k -> 0) (keff.awk of
+# tab02-effective-viscosity, error propagated), at the phi of the tier.
 . "$DPD_ROOT/tools/lib/exp.sh"
+T02=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/../tab02-effective-viscosity
 "$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
-# table beside the paper's columns (the TCAF column is the paper's only: not built here)
-awk -F'\t' 'NR==FNR { if ($1 ~ /^phi_k/) { k = substr($1, 6); phi[k] = $2 }
-                      if ($1 ~ /^lambda_cube_/) cube[$1] = $2; if ($1 ~ /^lambda_sphere_/) sph[$1] = $2; next }
+# TCAF pairs "kp:kq": the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a
+# box 15 kq / kp (same lattice spacing, particles per colloid cell and phi)
+case $TIER in
+    quick) PAIRS="8:4"
+           tcaf=(--set dt=0.01 --set equilibration=200 --set steps=1200 --set measure.tcaf.every=1
+                 --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10 --set measure.tcaf.n2max=9) ;;
+    # reduced: the paper's box, dt and TCAF settings at phi = 0.0119, 0.0526, 0.1854 and 0.3077, runs
+    # 2.7 times shorter (as fig04-relative-viscosity-a353 reduced, whose committed phi = 0.4940 pair is
+    # read too); the order keeps the seeds of the first two pairs run
+    reduced) PAIRS="3:3 8:8 5:5 10:10"; tcaf=(--set equilibration=500 --set steps=3000) ;;
+    paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; tcaf=() ;;
+esac
+i=0
+for pair in $PAIRS; do
+    kp=${pair%:*} kq=${pair#*:}
+    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')
+    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
+    count=$((6 * kq * kq * kq))
+    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${geo[@]}" --set "seed=$((60300 + 2 * i))"
+    dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
+        --set "seed=$((60301 + 2 * i))"
+    emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
+    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
+    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
+    ec=$(get constrained_$tag tcaf_eta_k0)
+    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
+        awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
+    cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
+    i=$((i + 1))
+done
+# reduced: phi = 0.4940 from the same construction in fig04-relative-viscosity-a353's committed
+# reduced tier (15^3, dt 0.005, equilibration 500 + 3000 steps; read-only)
+F04=$DPD_ROOT/results/mai-duy-2019/fig04-relative-viscosity-a353/reduced
+if [ "$TIER" = reduced ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
+    tag=phi0.4940
+    awk -F'\t' -v t="$tag" '$1 == "eta_k0_free_phi0.49" { print "eta_k0_free_" t "\t" $2 "\t" $3 }
+        $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"
+    awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 } END { a = "eta_k0_free_" t; b = "eta_k0_constrained_" t
+        printf "eta_k0_free_minus_constrained_%s\t%.10g\t%.4g\n", t, v[a] - v[b], sqrt(s[a]^2 + s[b]^2) }' "$OUT/summary.tsv" > "$OUT/.rows"
+    cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+    ec=$(awk -F'\t' '$1 == "eta_eff_phi0.49" { print $2 "\t" $3 }' "$F04/summary.tsv")
+    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
+        awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    cp "$F04/tcaf_eta_free_phi0.49.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
+    cp "$F04/tcaf_eta_constrained_phi0.49.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
+fi
+# table beside the paper's columns; TCAF: value +- se, "no crossing" when the free eta(k) never
+# reaches the constrained eta(k -> 0), "-" when the phi was not run at this tier
+awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 6)] = $2; next }
     /^#/ || $1 == "k" { next }
+    function tc(q, d) { if (!(q in v)) return "-"
+        if (v[q] == "nan") { d = v["eta_k0_free_minus_constrained_" substr(q, 13)]
+                             return sprintf("no crossing (free - constrained eta(k->0) = %.1f +- %.1f)", d, s["eta_k0_free_minus_constrained_" substr(q, 13)]) }
+        return sprintf("%.3f +- %.3f", v[q], s[q]) }
     { k = $1; tag = sprintf("phi%.4f", phi[k]);
-      printf "%s\t%.4f\t%.4f\t%s\t%.4f\t%s\t%s\n", k, phi[k], sph["lambda_sphere_" tag], $3, cube["lambda_cube_" tag], $4, $5 }' \
+      printf "%s\t%.4f\t%.4f\t%s\t%.4f\t%s\t%s\t%s\n", k, phi[k], v["lambda_sphere_" tag], $3, v["lambda_cube_" tag], $4,
+             tc("lambda_tcaf_" tag), $5 }' \
     "$OUT/summary.tsv" paper-table1.tsv > "$OUT/body.tsv"
-{ printf 'k\tphi\tsphere (eq. 32)\tsphere, paper\tcube (eq. 31)\tcube, paper\tTCAF, paper\n'; cat "$OUT/body.tsv"; } > "$OUT/table1.tsv"
+{ printf 'k\tphi\tsphere (eq. 32)\tsphere, paper\tcube (eq. 31)\tcube, paper\tTCAF (sec. 4.2.3)\tTCAF, paper\n'; cat "$OUT/body.tsv"; } > "$OUT/table1.tsv"
 rm "$OUT/body.tsv"
+# the same numbers for the plot (nan when not run or no crossing)
+awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 6)] = $2; next }
+    FNR == 1 { print "phi\tlambda_tcaf\tse"; next } /^#/ || $1 == "k" { next }
+    { q = sprintf("lambda_tcaf_phi%.4f", phi[$1]); printf "%.6f\t%s\t%s\n", phi[$1], (q in v) ? v[q] : "nan", (q in v) ? s[q] : "nan" }' \
+    "$OUT/summary.tsv" paper-table1.tsv > "$OUT/lambda_tcaf.tsv"
