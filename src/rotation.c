@@ -39,16 +39,19 @@ static inline void cross3(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3], const double dv[3],
-                              const double wsum[3], double theta, const double xi[3],
-                              double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+/* One pair, eqs 13-15 and eq. 1: the force F_ij on i (F_ji = -F_ij) in Ftot and
+ * the torque on each of i and j in tau; the parts (conservative, dissipative,
+ * random) in F[0..2] only when F != NULL (measurement steps, tests), so that the
+ * pair loop of the other steps computes the totals alone. r = |d| > 0. */
+static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3], double r,
+                              const double dv[3], const double wsum[3], double theta, const double xi[3],
+                              double inv_sqrt_dt, double (*F)[3], double Ftot[3], double tau[3])
 {
-    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), inv_r = 1.0 / r;
+    const double inv_r = 1.0 / r;
     const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
     const double wc = 1.0 - r / p->rc;
     /* Pan's f = (1 - r/rc)^(s/2) in the scene's convention (w_D = f^2 = (1 - r/rc)^s) */
     const double f = p->s == 0.5 ? sqrt(sqrt(wc)) : p->s == 1.0 ? sqrt(wc) : p->s == 2.0 ? wc : pow(wc, 0.5 * p->s);
-    const double f2 = f * f;
     const double edv = e[0] * dv[0] + e[1] * dv[1] + e[2] * dv[2];
     /* conservative, eq. 7 */
     const double fc = p->a * wc;
@@ -56,11 +59,10 @@ static inline __attribute__((always_inline)) void pair_force(const PairParams *p
     const double fdc = -p->gamma * f * f * edv;
     /* random, eq. 15 central part: (1/sqrt 3) sigma^C tr[dW] e = sigma^C theta e sqrt(dt) */
     const double frc = p->sigma * f * theta * inv_sqrt_dt;
-    const double ft = fc + fdc + frc;
-    for (int a = 0; a < 3; a++) {
-        F[0][a] = fc * e[a]; F[1][a] = fdc * e[a]; F[2][a] = frc * e[a];
-        Ftot[a] = ft * e[a];
-    }
+    const double ft = fc + fdc + frc;   /* summed as the standard kernel sums it */
+    for (int a = 0; a < 3; a++) Ftot[a] = ft * e[a];
+    if (F)
+        for (int a = 0; a < 3; a++) { F[0][a] = fc * e[a]; F[1][a] = fdc * e[a]; F[2][a] = frc * e[a]; }
     if (p->gamma_shear == 0.0) { tau[0] = tau[1] = tau[2] = 0.0; return; }  /* standard DPD, no torque */
     /* relative velocity at the midpoint: v_ij + (r_ij / 2) x (Omega_i + Omega_j) */
     const double h[3] = {0.5 * d[0], 0.5 * d[1], 0.5 * d[2]};
@@ -68,20 +70,18 @@ static inline __attribute__((always_inline)) void pair_force(const PairParams *p
     cross3(h, wsum, rot);
     /* translational, eq. 13 shear part: -gamma^S f^2 [v_ij - (v_ij . e) e];
      * rotational, eq. 14: -gamma^S f^2 (r_ij / 2) x (Omega_i + Omega_j) (normal to e) */
-    const double gs = p->gamma_shear * f2;
+    const double gs = p->gamma_shear * (f * f);
     /* random, eq. 15 antisymmetric part: sqrt 2 sigma^S dW^A . e = sigma^S (xi x e) sqrt(dt),
      * xi ~ N(0, 1) per component, shared by i and j so that F_ji = -F_ij */
     double xe[3];
     cross3(xi, e, xe);
     const double frs = p->sigma_shear * f * inv_sqrt_dt;
-    for (int a = 0; a < 3; a++) {
-        F[1][a] += -gs * (dv[a] - edv * e[a] + rot[a]);
-        F[2][a] += frs * xe[a];
-    }
     double Fs[3];   /* non-central part */
     for (int a = 0; a < 3; a++) {
-        Fs[a] = -gs * (dv[a] - edv * e[a] + rot[a]) + frs * xe[a];
+        const double fds = -gs * (dv[a] - edv * e[a] + rot[a]), frs_a = frs * xe[a];
+        Fs[a] = fds + frs_a;
         Ftot[a] += Fs[a];
+        if (F) { F[1][a] += fds; F[2][a] += frs_a; }
     }
     /* torque, eq. 1: T_i = T_j = -(r_ij / 2) x F_ij (central parts give none) */
     double c[3];
@@ -93,7 +93,8 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
                          const double wsum[3], double theta, const double xi[3],
                          double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
 {
-    pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
 }
 
 /* Virial by part (asymmetric, r_a F_b), its Irving-Kirkwood split, pair energy,
@@ -134,7 +135,7 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
 }
 
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
-                      double *f, double *tq, PairVirial *pv)
+                      double *restrict f, double *restrict tq, PairVirial *pv)
 {
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
@@ -144,6 +145,9 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     double dd[BATCH][4];
     for (int i = i0; i < i1; i++) {
         const int ti = s->type[i];
+        const uint32_t id_i = s->id[i];
+        const double vi[3] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        const double wi[3] = {w[3 * i], w[3 * i + 1], w[3 * i + 2]};
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
           const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
@@ -155,32 +159,35 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
             const double r2 = dd[q][3];
             if (!p->active || r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
             const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
-            double dv[3] = {v[3 * i] - v[3 * j], v[3 * i + 1] - v[3 * j + 1], v[3 * i + 2] - v[3 * j + 2]};
+            double dv[3] = {vi[0] - v[3 * j], vi[1] - v[3 * j + 1], vi[2] - v[3 * j + 2]};
             if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
                 const double dy = x[3 * i + 1] - x[3 * j + 1];
                 if (dy > b->half[1]) dv[0] -= b->shear_rate * b->L[1];
                 else if (dy < -b->half[1]) dv[0] += b->shear_rate * b->L[1];
             }
-            const double wsum[3] = {w[3 * i] + w[3 * j], w[3 * i + 1] + w[3 * j + 1], w[3 * i + 2] + w[3 * j + 2]};
-            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
+            const double wsum[3] = {wi[0] + w[3 * j], wi[1] + w[3 * j + 1], wi[2] + w[3 * j + 2]};
+            /* theta (eq. 15 central) then xi (eq. 15 antisymmetric): one pair sequence */
+            CounterRng c;
+            rng_pair_start(&c, s->seed, s->step, id_i, s->id[j]);
+            const double theta = rng_counter_normal(&c);
             double xi[3] = {0.0, 0.0, 0.0};
-            if (p->gamma_shear != 0.0) {   /* antisymmetric noise: its own stream, same counter */
-                CounterRng c;
-                const uint32_t lo = s->id[i] < s->id[j] ? s->id[i] : s->id[j];
-                const uint32_t hi = s->id[i] < s->id[j] ? s->id[j] : s->id[i];
-                rng_counter_start(&c, s->seed, STREAM_PAIR_NOISE_ROT, s->step, lo, hi);
+            if (p->gamma_shear != 0.0)
                 for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
+            const double r = sqrt(r2);
+            double Ft[3], tau[3];
+            if (pv) {
+                double F[3][3];
+                pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
+                accumulate(pv, s, i, j, d, r, F, tau);
+            } else {
+                pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, NULL, Ft, tau);
             }
-            double F[3][3], Ft[3], tau[3];
-            pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
             for (int a = 0; a < 3; a++) {
-                const double fa = Ft[a];
-                fi[a] += fa;
-                f[3 * j + a] -= fa;
+                fi[a] += Ft[a];
+                f[3 * j + a] -= Ft[a];
                 ti_[a] += tau[a];
                 tq[3 * j + a] += tau[a];
             }
-            if (pv) accumulate(pv, s, i, j, d, sqrt(r2), F, tau);
           }
         }
         for (int a = 0; a < 3; a++) { f[3 * i + a] += fi[a]; tq[3 * i + a] += ti_[a]; }
