@@ -39,19 +39,29 @@ static inline void cross3(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* One pair, eqs 13-15 and eq. 1: the force F_ij on i (F_ji = -F_ij) in Ftot and
- * the torque on each of i and j in tau; the parts (conservative, dissipative,
- * random) in F[0..2] only when F != NULL (measurement steps, tests), so that the
- * pair loop of the other steps computes the totals alone. r = |d| > 0. */
-static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3], double r,
+/* Geometry of one pair at distance r = |d| > 0: the unit vector e = r_ij / r,
+ * w_C = 1 - r/rc and Pan's f = (1 - r/rc)^(s/2) in the scene's convention
+ * (w_D = f^2 = (1 - r/rc)^s), computed as the standard kernel computes w_R. */
+static inline __attribute__((always_inline)) void pair_geometry(const PairParams *p, const double d[3], double r,
+                                                                double e[3], double *wc, double *f)
+{
+    const double inv_r = 1.0 / r;
+    e[0] = d[0] * inv_r; e[1] = d[1] * inv_r; e[2] = d[2] * inv_r;
+    const double w = 1.0 - r / p->rc;
+    *wc = w;
+    *f = p->s == 0.5 ? sqrt(sqrt(w)) : p->s == 1.0 ? sqrt(w) : p->s == 2.0 ? w : pow(w, 0.5 * p->s);
+}
+
+/* One pair, eqs 13-15 and eq. 1, from its geometry (pair_geometry): the force
+ * F_ij on i (F_ji = -F_ij) in Ftot and the torque on each of i and j in tau; the
+ * parts (conservative, dissipative, random) in F[0..2] only when F != NULL
+ * (measurement steps, tests), so that the pair loop of the other steps computes
+ * the totals alone. */
+static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3],
+                              const double e[3], double wc, double f,
                               const double dv[3], const double wsum[3], double theta, const double xi[3],
                               double inv_sqrt_dt, double (*F)[3], double Ftot[3], double tau[3])
 {
-    const double inv_r = 1.0 / r;
-    const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
-    const double wc = 1.0 - r / p->rc;
-    /* Pan's f = (1 - r/rc)^(s/2) in the scene's convention (w_D = f^2 = (1 - r/rc)^s) */
-    const double f = p->s == 0.5 ? sqrt(sqrt(wc)) : p->s == 1.0 ? sqrt(wc) : p->s == 2.0 ? wc : pow(wc, 0.5 * p->s);
     const double edv = e[0] * dv[0] + e[1] * dv[1] + e[2] * dv[2];
     /* conservative, eq. 7 */
     const double fc = p->a * wc;
@@ -94,12 +104,14 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
                          double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
 {
     const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
+    double e[3], wc, f;
+    pair_geometry(p, d, r, e, &wc, &f);
+    pair_force(p, d, e, wc, f, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
 }
 
 /* Virial by part (asymmetric, r_a F_b), its Irving-Kirkwood split, pair energy,
  * force and torque on frozen particles. Only on measurement steps. */
-static void accumulate(PairVirial *pv, const System *s, int i, int j, const double d[3], double r,
+static void accumulate(PairVirial *pv, const System *s, int i, int j, const double d[3], double wc,
                        const double F[3][3], const double tau[3])
 {
     const PairParams *p = &s->pair[s->type[i]][s->type[j]];
@@ -112,7 +124,6 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
             ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
                           s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
     }
-    const double wc = 1.0 - r / p->rc;
     pv->epot += 0.5 * p->a * p->rc * wc * wc;
     const int ti = s->type[i], tj = s->type[j];
     if (!s->types[ti].frozen && !s->types[tj].frozen) return;
@@ -134,6 +145,11 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
     }
 }
 
+/* The pair loop for the particles [i0, i1), a batch of list entries at a time
+ * in four passes, each a short loop whose iterations are independent (the
+ * latencies of sqrt, division and Philox of successive pairs then overlap):
+ * the pairs inside the largest cutoff; their geometry; their noise; their
+ * forces and torques. pv != NULL also sums the virial by part. */
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                       double *restrict f, double *restrict tq, PairVirial *pv)
 {
@@ -143,6 +159,9 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     enum { BATCH = PAIR_BATCH };
     int near[BATCH];
     double dd[BATCH][4];
+    double geo[BATCH][8];     /* d[3], e[3], w_C, f */
+    double noise[BATCH][4];   /* theta, xi[3] */
+    CounterRng rng[BATCH];
     for (int i = i0; i < i1; i++) {
         const int ti = s->type[i];
         const uint32_t id_i = s->id[i];
@@ -151,14 +170,34 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
           const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-          const int m = pairs_in_range(s, nl, i, k0, k1, near, dd);
-          /* pass 2: forces and torques */
-          for (int q = 0; q < m; q++) {
+          const int m0 = pairs_in_range(s, nl, i, k0, k1, near, dd);
+          /* pass 2: the pairs inside their own cutoff, and their geometry */
+          int m = 0;
+          for (int q = 0; q < m0; q++) {
             const int j = near[q];
             const PairParams *p = &s->pair[ti][s->type[j]];
             const double r2 = dd[q][3];
             if (!p->active || r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
-            const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
+            near[m] = j;
+            double *g = geo[m++];
+            g[0] = dd[q][0]; g[1] = dd[q][1]; g[2] = dd[q][2];
+            pair_geometry(p, g, sqrt(r2), g + 3, g + 6, g + 7);
+          }
+          /* pass 3: the pairs' Philox blocks, then from each theta (eq. 15 central)
+           * and xi (eq. 15 antisymmetric), one pair sequence */
+          for (int q = 0; q < m; q++) rng_pair_start(&rng[q], s->seed, s->step, id_i, s->id[near[q]]);
+          for (int q = 0; q < m; q++) {
+            noise[q][0] = rng_counter_normal(&rng[q]);
+            if (s->pair[ti][s->type[near[q]]].gamma_shear != 0.0)
+                for (int a = 1; a < 4; a++) noise[q][a] = rng_counter_normal(&rng[q]);
+            else
+                noise[q][1] = noise[q][2] = noise[q][3] = 0.0;
+          }
+          /* pass 4: forces and torques */
+          for (int q = 0; q < m; q++) {
+            const int j = near[q];
+            const PairParams *p = &s->pair[ti][s->type[j]];
+            const double *g = geo[q];
             double dv[3] = {vi[0] - v[3 * j], vi[1] - v[3 * j + 1], vi[2] - v[3 * j + 2]};
             if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
                 const double dy = x[3 * i + 1] - x[3 * j + 1];
@@ -166,21 +205,13 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                 else if (dy < -b->half[1]) dv[0] += b->shear_rate * b->L[1];
             }
             const double wsum[3] = {wi[0] + w[3 * j], wi[1] + w[3 * j + 1], wi[2] + w[3 * j + 2]};
-            /* theta (eq. 15 central) then xi (eq. 15 antisymmetric): one pair sequence */
-            CounterRng c;
-            rng_pair_start(&c, s->seed, s->step, id_i, s->id[j]);
-            const double theta = rng_counter_normal(&c);
-            double xi[3] = {0.0, 0.0, 0.0};
-            if (p->gamma_shear != 0.0)
-                for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
-            const double r = sqrt(r2);
             double Ft[3], tau[3];
             if (pv) {
                 double F[3][3];
-                pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
-                accumulate(pv, s, i, j, d, r, F, tau);
+                pair_force(p, g, g + 3, g[6], g[7], dv, wsum, noise[q][0], noise[q] + 1, inv_sqrt_dt, F, Ft, tau);
+                accumulate(pv, s, i, j, g, g[6], F, tau);
             } else {
-                pair_force(p, d, r, dv, wsum, theta, xi, inv_sqrt_dt, NULL, Ft, tau);
+                pair_force(p, g, g + 3, g[6], g[7], dv, wsum, noise[q][0], noise[q] + 1, inv_sqrt_dt, NULL, Ft, tau);
             }
             for (int a = 0; a < 3; a++) {
                 fi[a] += Ft[a];
