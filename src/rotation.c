@@ -146,10 +146,10 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
 }
 
 /* The pair loop for the particles [i0, i1), a batch of list entries at a time
- * in four passes, each a short loop whose iterations are independent (the
- * latencies of sqrt, division and Philox of successive pairs then overlap):
- * the pairs inside the largest cutoff; their geometry; their noise; their
- * forces and torques. pv != NULL also sums the virial by part. */
+ * in four passes, each a short loop with independent iterations: the pairs
+ * inside the largest cutoff; their geometry; their noise; their forces and
+ * torques (bench/RESULTS.md, issue 6: 3-7 % faster than one pass per pair by
+ * best of 5 on a noisy host, not resolved). pv != NULL also sums the virial by part. */
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
                       double *restrict f, double *restrict tq, PairVirial *pv)
 {
