@@ -11,10 +11,14 @@
 
 /* The one registry of stream ids. Never reuse or renumber a stream. */
 enum rng_stream {
-    STREAM_PAIR_NOISE     = 1,  /* theta_ij of eq. 4 */
+    STREAM_PAIR_NOISE     = 1,  /* theta_ij of eq. 4 (1st variate of the pair's sequence); in rotation
+                                   scenes also xi_ij of Pan 2008 eq. 15 (2nd-4th variates), see
+                                   rng_pair_start; counter = (step, min id, max id) */
     STREAM_INIT_POSITION  = 2,  /* initial placement, counter = (particle id, attempt) */
     STREAM_INIT_VELOCITY  = 3,  /* Maxwell-Boltzmann start, counter = (particle id) */
-    STREAM_PAIR_NOISE_ROT = 4,  /* antisymmetric noise of Pan 2008 eq. 15, counter = (step, min id, max id) */
+    STREAM_PAIR_NOISE_ROT = 4,  /* retired (never reuse): xi_ij of Pan 2008 eq. 15 until the kernel of
+                                   branch rot (issue 6) drew it from STREAM_PAIR_NOISE; the committed
+                                   pan-2008 results were made with it */
     STREAM_INIT_SPIN      = 5,  /* Maxwell-Boltzmann angular velocities, counter = (particle id) */
     STREAM_TEST           = 99
 };
@@ -63,12 +67,21 @@ static inline __attribute__((always_inline)) void rng_counter_start(CounterRng *
     c->used = 0;
 }
 
+/* The noise sequence of the pair (i, j) at a step, the same for (j, i): its
+ * successive rng_counter_normal variates are theta_ij (eq. 4), then, in rotation
+ * scenes, xi_ij[0..2] (Pan 2008 eq. 15). One Philox block serves all four unless
+ * the ziggurat needs more words (2.8 % of variates, 11 % of 4-variate pairs). */
+static inline void rng_pair_start(CounterRng *c, uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
+{
+    const uint32_t lo = id_i < id_j ? id_i : id_j, hi = id_i < id_j ? id_j : id_i;
+    rng_counter_start(c, seed, STREAM_PAIR_NOISE, step, lo, hi);
+}
+
 /* theta_ij = theta_ji ~ N(0,1) for the pair (i, j) at a step (eq. 5). */
 static inline __attribute__((always_inline)) double rng_pair_normal(uint32_t seed, uint64_t step, uint32_t id_i, uint32_t id_j)
 {
     CounterRng c;
-    const uint32_t lo = id_i < id_j ? id_i : id_j, hi = id_i < id_j ? id_j : id_i;
-    rng_counter_start(&c, seed, STREAM_PAIR_NOISE, step, lo, hi);
+    rng_pair_start(&c, seed, step, id_i, id_j);
     return rng_counter_normal(&c);
 }
 

@@ -39,16 +39,29 @@ static inline void cross3(const double a[3], const double b[3], double c[3])
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3], const double dv[3],
-                              const double wsum[3], double theta, const double xi[3],
-                              double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+/* Geometry of one pair at distance r = |d| > 0: the unit vector e = r_ij / r,
+ * w_C = 1 - r/rc and Pan's f = (1 - r/rc)^(s/2) in the scene's convention
+ * (w_D = f^2 = (1 - r/rc)^s), computed as the standard kernel computes w_R. */
+static inline __attribute__((always_inline)) void pair_geometry(const PairParams *p, const double d[3], double r,
+                                                                double e[3], double *wc, double *f)
 {
-    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), inv_r = 1.0 / r;
-    const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
-    const double wc = 1.0 - r / p->rc;
-    /* Pan's f = (1 - r/rc)^(s/2) in the scene's convention (w_D = f^2 = (1 - r/rc)^s) */
-    const double f = p->s == 0.5 ? sqrt(sqrt(wc)) : p->s == 1.0 ? sqrt(wc) : p->s == 2.0 ? wc : pow(wc, 0.5 * p->s);
-    const double f2 = f * f;
+    const double inv_r = 1.0 / r;
+    e[0] = d[0] * inv_r; e[1] = d[1] * inv_r; e[2] = d[2] * inv_r;
+    const double w = 1.0 - r / p->rc;
+    *wc = w;
+    *f = p->s == 0.5 ? sqrt(sqrt(w)) : p->s == 1.0 ? sqrt(w) : p->s == 2.0 ? w : pow(w, 0.5 * p->s);
+}
+
+/* One pair, eqs 13-15 and eq. 1, from its geometry (pair_geometry): the force
+ * F_ij on i (F_ji = -F_ij) in Ftot and the torque on each of i and j in tau; the
+ * parts (conservative, dissipative, random) in F[0..2] only when F != NULL
+ * (measurement steps, tests), so that the pair loop of the other steps computes
+ * the totals alone. */
+static inline __attribute__((always_inline)) void pair_force(const PairParams *p, const double d[3],
+                              const double e[3], double wc, double f,
+                              const double dv[3], const double wsum[3], double theta, const double xi[3],
+                              double inv_sqrt_dt, double (*F)[3], double Ftot[3], double tau[3])
+{
     const double edv = e[0] * dv[0] + e[1] * dv[1] + e[2] * dv[2];
     /* conservative, eq. 7 */
     const double fc = p->a * wc;
@@ -56,11 +69,10 @@ static inline __attribute__((always_inline)) void pair_force(const PairParams *p
     const double fdc = -p->gamma * f * f * edv;
     /* random, eq. 15 central part: (1/sqrt 3) sigma^C tr[dW] e = sigma^C theta e sqrt(dt) */
     const double frc = p->sigma * f * theta * inv_sqrt_dt;
-    const double ft = fc + fdc + frc;
-    for (int a = 0; a < 3; a++) {
-        F[0][a] = fc * e[a]; F[1][a] = fdc * e[a]; F[2][a] = frc * e[a];
-        Ftot[a] = ft * e[a];
-    }
+    const double ft = fc + fdc + frc;   /* summed as the standard kernel sums it */
+    for (int a = 0; a < 3; a++) Ftot[a] = ft * e[a];
+    if (F)
+        for (int a = 0; a < 3; a++) { F[0][a] = fc * e[a]; F[1][a] = fdc * e[a]; F[2][a] = frc * e[a]; }
     if (p->gamma_shear == 0.0) { tau[0] = tau[1] = tau[2] = 0.0; return; }  /* standard DPD, no torque */
     /* relative velocity at the midpoint: v_ij + (r_ij / 2) x (Omega_i + Omega_j) */
     const double h[3] = {0.5 * d[0], 0.5 * d[1], 0.5 * d[2]};
@@ -68,20 +80,18 @@ static inline __attribute__((always_inline)) void pair_force(const PairParams *p
     cross3(h, wsum, rot);
     /* translational, eq. 13 shear part: -gamma^S f^2 [v_ij - (v_ij . e) e];
      * rotational, eq. 14: -gamma^S f^2 (r_ij / 2) x (Omega_i + Omega_j) (normal to e) */
-    const double gs = p->gamma_shear * f2;
+    const double gs = p->gamma_shear * (f * f);
     /* random, eq. 15 antisymmetric part: sqrt 2 sigma^S dW^A . e = sigma^S (xi x e) sqrt(dt),
      * xi ~ N(0, 1) per component, shared by i and j so that F_ji = -F_ij */
     double xe[3];
     cross3(xi, e, xe);
     const double frs = p->sigma_shear * f * inv_sqrt_dt;
-    for (int a = 0; a < 3; a++) {
-        F[1][a] += -gs * (dv[a] - edv * e[a] + rot[a]);
-        F[2][a] += frs * xe[a];
-    }
     double Fs[3];   /* non-central part */
     for (int a = 0; a < 3; a++) {
-        Fs[a] = -gs * (dv[a] - edv * e[a] + rot[a]) + frs * xe[a];
+        const double fds = -gs * (dv[a] - edv * e[a] + rot[a]), frs_a = frs * xe[a];
+        Fs[a] = fds + frs_a;
         Ftot[a] += Fs[a];
+        if (F) { F[1][a] += fds; F[2][a] += frs_a; }
     }
     /* torque, eq. 1: T_i = T_j = -(r_ij / 2) x F_ij (central parts give none) */
     double c[3];
@@ -93,12 +103,15 @@ void rotation_pair_force(const PairParams *p, const double d[3], const double dv
                          const double wsum[3], double theta, const double xi[3],
                          double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
 {
-    pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double e[3], wc, f;
+    pair_geometry(p, d, r, e, &wc, &f);
+    pair_force(p, d, e, wc, f, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
 }
 
 /* Virial by part (asymmetric, r_a F_b), its Irving-Kirkwood split, pair energy,
  * force and torque on frozen particles. Only on measurement steps. */
-static void accumulate(PairVirial *pv, const System *s, int i, int j, const double d[3], double r,
+static void accumulate(PairVirial *pv, const System *s, int i, int j, const double d[3], double wc,
                        const double F[3][3], const double tau[3])
 {
     const PairParams *p = &s->pair[s->type[i]][s->type[j]];
@@ -111,7 +124,6 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
             ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
                           s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
     }
-    const double wc = 1.0 - r / p->rc;
     pv->epot += 0.5 * p->a * p->rc * wc * wc;
     const int ti = s->type[i], tj = s->type[j];
     if (!s->types[ti].frozen && !s->types[tj].frozen) return;
@@ -133,8 +145,13 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
     }
 }
 
+/* The pair loop for the particles [i0, i1), a batch of list entries at a time
+ * in four passes, each a short loop with independent iterations: the pairs
+ * inside the largest cutoff; their geometry; their noise; their forces and
+ * torques (bench/RESULTS.md, issue 6: 3-7 % faster than one pass per pair by
+ * best of 5 on a noisy host, not resolved). pv != NULL also sums the virial by part. */
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
-                      double *f, double *tq, PairVirial *pv)
+                      double *restrict f, double *restrict tq, PairVirial *pv)
 {
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
@@ -142,45 +159,66 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     enum { BATCH = PAIR_BATCH };
     int near[BATCH];
     double dd[BATCH][4];
+    double geo[BATCH][8];     /* d[3], e[3], w_C, f */
+    double noise[BATCH][4];   /* theta, xi[3] */
+    CounterRng rng[BATCH];
     for (int i = i0; i < i1; i++) {
         const int ti = s->type[i];
+        const uint32_t id_i = s->id[i];
+        const double vi[3] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        const double wi[3] = {w[3 * i], w[3 * i + 1], w[3 * i + 2]};
         double fi[3] = {0.0, 0.0, 0.0}, ti_[3] = {0.0, 0.0, 0.0};
         for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
           const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
-          const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, 1);
-          /* pass 2: forces and torques */
-          for (int q = 0; q < m; q++) {
+          const int m0 = pairs_in_range(s, nl, i, k0, k1, near, dd, 1);
+          /* pass 2: the pairs inside their own cutoff, and their geometry */
+          int m = 0;
+          for (int q = 0; q < m0; q++) {
             const int j = near[q];
             const PairParams *p = &s->pair[ti][s->type[j]];
             const double r2 = dd[q][3];
             if (!p->active || r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
-            const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
-            double dv[3] = {v[3 * i] - v[3 * j], v[3 * i + 1] - v[3 * j + 1], v[3 * i + 2] - v[3 * j + 2]};
+            near[m] = j;
+            double *g = geo[m++];
+            g[0] = dd[q][0]; g[1] = dd[q][1]; g[2] = dd[q][2];
+            pair_geometry(p, g, sqrt(r2), g + 3, g + 6, g + 7);
+          }
+          /* pass 3: the pairs' Philox blocks, then from each theta (eq. 15 central)
+           * and xi (eq. 15 antisymmetric), one pair sequence */
+          for (int q = 0; q < m; q++) rng_pair_start(&rng[q], s->seed, s->step, id_i, s->id[near[q]]);
+          for (int q = 0; q < m; q++) {
+            noise[q][0] = rng_counter_normal(&rng[q]);
+            if (s->pair[ti][s->type[near[q]]].gamma_shear != 0.0)
+                for (int a = 1; a < 4; a++) noise[q][a] = rng_counter_normal(&rng[q]);
+            else
+                noise[q][1] = noise[q][2] = noise[q][3] = 0.0;
+          }
+          /* pass 4: forces and torques */
+          for (int q = 0; q < m; q++) {
+            const int j = near[q];
+            const PairParams *p = &s->pair[ti][s->type[j]];
+            const double *g = geo[q];
+            double dv[3] = {vi[0] - v[3 * j], vi[1] - v[3 * j + 1], vi[2] - v[3 * j + 2]};
             if (b->shear_rate != 0.0) {   /* velocity of the Lees-Edwards image */
                 const double dy = x[3 * i + 1] - x[3 * j + 1];
                 if (dy > b->half[1]) dv[0] -= b->shear_rate * b->L[1];
                 else if (dy < -b->half[1]) dv[0] += b->shear_rate * b->L[1];
             }
-            const double wsum[3] = {w[3 * i] + w[3 * j], w[3 * i + 1] + w[3 * j + 1], w[3 * i + 2] + w[3 * j + 2]};
-            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
-            double xi[3] = {0.0, 0.0, 0.0};
-            if (p->gamma_shear != 0.0) {   /* antisymmetric noise: its own stream, same counter */
-                CounterRng c;
-                const uint32_t lo = s->id[i] < s->id[j] ? s->id[i] : s->id[j];
-                const uint32_t hi = s->id[i] < s->id[j] ? s->id[j] : s->id[i];
-                rng_counter_start(&c, s->seed, STREAM_PAIR_NOISE_ROT, s->step, lo, hi);
-                for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
+            const double wsum[3] = {wi[0] + w[3 * j], wi[1] + w[3 * j + 1], wi[2] + w[3 * j + 2]};
+            double Ft[3], tau[3];
+            if (pv) {
+                double F[3][3];
+                pair_force(p, g, g + 3, g[6], g[7], dv, wsum, noise[q][0], noise[q] + 1, inv_sqrt_dt, F, Ft, tau);
+                accumulate(pv, s, i, j, g, g[6], F, tau);
+            } else {
+                pair_force(p, g, g + 3, g[6], g[7], dv, wsum, noise[q][0], noise[q] + 1, inv_sqrt_dt, NULL, Ft, tau);
             }
-            double F[3][3], Ft[3], tau[3];
-            pair_force(p, d, dv, wsum, theta, xi, inv_sqrt_dt, F, Ft, tau);
             for (int a = 0; a < 3; a++) {
-                const double fa = Ft[a];
-                fi[a] += fa;
-                f[3 * j + a] -= fa;
+                fi[a] += Ft[a];
+                f[3 * j + a] -= Ft[a];
                 ti_[a] += tau[a];
                 tq[3 * j + a] += tau[a];
             }
-            if (pv) accumulate(pv, s, i, j, d, sqrt(r2), F, tau);
           }
         }
         for (int a = 0; a < 3; a++) { f[3 * i + a] += fi[a]; tq[3 * i + a] += ti_[a]; }

@@ -123,6 +123,50 @@ static void uncorrelated(void **state)
     CHECK_ABS("corr(pair (k,k+1), pair (k+1,k+2))", corr(c_ids_big, c_ids_big2), 0.0, tol);
 }
 
+/* Rotation scenes (Pan 2008 eq. 15) draw theta_ij then xi_ij[0..2] as the first
+ * four variates of the pair's STREAM_PAIR_NOISE sequence (rng_pair_start): theta
+ * is then bit-identical to rng_pair_normal (gamma^S = 0 stays standard DPD), the
+ * four are symmetric in i, j, each is N(0,1) and they are mutually uncorrelated
+ * (same bounds as above). The 4 variates need a second Philox block whenever the
+ * ziggurat needs more than one word for a variate (11 % of the pairs here). */
+static void pair4(long k, double z[4])
+{
+    CounterRng c;
+    rng_pair_start(&c, SEED, (uint64_t)k, 5, 9);
+    for (int a = 0; a < 4; a++) z[a] = rng_counter_normal(&c);
+}
+static double p4_0(long k) { double z[4]; pair4(k, z); return z[0]; }
+static double p4_1(long k) { double z[4]; pair4(k, z); return z[1]; }
+static double p4_2(long k) { double z[4]; pair4(k, z); return z[2]; }
+static double p4_3(long k) { double z[4]; pair4(k, z); return z[3]; }
+
+static void pair_sequence_theta_then_xi(void **state)
+{
+    (void)state;
+    uint64_t st = 6;
+    for (int k = 0; k < 100000; k++) {
+        const uint32_t i = (uint32_t)tu_next(&st), j = (uint32_t)tu_next(&st);
+        const uint64_t step = tu_next(&st) >> 10;
+        CounterRng a, b;
+        rng_pair_start(&a, SEED, step, i, j);
+        rng_pair_start(&b, SEED, step, j, i);
+        const double th = rng_pair_normal(SEED, step, i, j);
+        for (int q = 0; q < 4; q++) {
+            const double za = rng_counter_normal(&a), zb = rng_counter_normal(&b);
+            CHECK_TRUE(memcmp(&za, &zb, sizeof za) == 0, "variate %d of (%u, %u) != of (%u, %u)", q, i, j, j, i);
+            if (q == 0) CHECK_TRUE(memcmp(&za, &th, sizeof za) == 0, "theta of the sequence != rng_pair_normal");
+        }
+    }
+    check_gaussian("xi_0 (2nd variate)", p4_1);
+    check_gaussian("xi_1 (3rd variate)", p4_2);
+    check_gaussian("xi_2 (4th variate)", p4_3);
+    const double tol = 4.0 / sqrt(N);
+    CHECK_ABS("corr(theta, xi_0)", corr(p4_0, p4_1), 0.0, tol);
+    CHECK_ABS("corr(theta, xi_2)", corr(p4_0, p4_3), 0.0, tol);
+    CHECK_ABS("corr(xi_0, xi_1)", corr(p4_1, p4_2), 0.0, tol);
+    CHECK_ABS("corr(xi_1, xi_2)", corr(p4_2, p4_3), 0.0, tol);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -131,6 +175,7 @@ int main(void)
         cmocka_unit_test(moments_over_pairs),
         cmocka_unit_test(kurtosis_rejects_uniform),
         cmocka_unit_test(uncorrelated),
+        cmocka_unit_test(pair_sequence_theta_then_xi),
     };
     return cmocka_run_group_tests_name("random", tests, NULL, NULL);
 }
