@@ -136,6 +136,18 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
         snprintf(name, sizeof name, "pressure_yx_%s", parts[p]);
         rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, m->every, s->dt);
     }
+    /* torque and drag on frozen types, sample by sample: their correlation time checks the blocking */
+    if (s->rotation)
+        for (int t = 0; t < s->ntypes; t++) {
+            if (!s->types[t].frozen) continue;
+            for (int d = 0; d < 3; d++) {
+                char name[96];
+                snprintf(name, sizeof name, "torque_on_%s_%c", s->types[t].name, "xyz"[d]);
+                rc |= output_series(o, name, m->frozen_torque[t][d].v, m->frozen_torque[t][d].n, m->every, s->dt);
+                snprintf(name, sizeof name, "drag_on_%s_%c", s->types[t].name, "xyz"[d]);
+                rc |= output_series(o, name, m->frozen_drag[t][d].v, m->frozen_drag[t][d].n, m->every, s->dt);
+            }
+        }
     double *fin = checkpoint_final_state(s);
     rc |= fin ? output_table(o, "/results/final_state", fin, s->n, 10, FINAL_STATE_COLUMNS) : -1;
     free(fin);
