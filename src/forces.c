@@ -231,7 +231,10 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
     if (MOD_ROTATION(s)) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
     const int n = s->n;
     const size_t stride = 3 * (size_t)n;
-    #pragma omp parallel for schedule(static, 1)
+    /* contiguous chunks per thread (thread 0: the first half of the particles
+     * on 2 threads), as the particle loops of the integrator: each thread
+     * reads and writes mostly the particles it will move */
+    #pragma omp parallel for schedule(static)
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         /* chunk 0 accumulates straight into f: one buffer less to clear and read */
         double *buf = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;

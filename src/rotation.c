@@ -243,7 +243,10 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
         w->tbuf = malloc((size_t)(FORCE_CHUNKS - 1) * stride * sizeof(double) + 1);
         if (!w->tbuf) { fprintf(stderr, "dpd: out of memory for torque buffers\n"); exit(4); }
     }
-    #pragma omp parallel for schedule(static, 1)
+    /* contiguous chunks per thread (thread 0: the first half of the particles
+     * on 2 threads), as the particle loops of the integrator: each thread
+     * reads and writes mostly the particles it will move */
+    #pragma omp parallel for schedule(static)
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         double *fb = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
         double *tb = c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride;
