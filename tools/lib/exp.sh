@@ -68,3 +68,16 @@ emit_mean() {
         ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; se=(k>1)?sqrt(ss/(k-1)/k):0;
         printf "%s\t%.10g\t%.4g\n", q, m, se}' >> "$OUT/summary.tsv"
 }
+
+# lattice_pair KP:KQ DIGITS - the Mai-Duy et al. suspensions: the paper's KP^3
+# colloids among 13500 solvent particles in 15^3 run as KQ^3 colloids in a box of
+# side 15 KQ / KP (same lattice spacing, particles per colloid cell and phi).
+# Sets kp, kq, tag ("phi" and phi to DIGITS decimals), L, count (constituent
+# particles, 6 per colloid) and geo (the --set arguments of box and count).
+lattice_pair() {
+    kp=${1%:*} kq=${1#*:}
+    tag=$(awk -v k="$kp" -v d="$2" 'BEGIN { printf ("phi%." d "f"), 6 * k^3 / (13500 + 6 * k^3) }')
+    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
+    count=$((6 * kq * kq * kq))
+    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+}

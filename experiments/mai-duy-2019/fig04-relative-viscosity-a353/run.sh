@@ -48,11 +48,7 @@ cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 i=0
 for pair in $PAIRS; do
-    kp=${pair%:*} kq=${pair#*:}
-    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.2f", 6 * k^3 / (13500 + 6 * k^3) }')
-    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
-    count=$((6 * kq * kq * kq))
-    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    lattice_pair "$pair" 2
     dpd_run susp_$tag "$HERE/suspension-shear.cfg" "${shear[@]}" "${rep3[@]}" "${geo[@]}" \
         --set "colloids.per_axis=$kq" --set "seed=$((40200 + i))"
     np=$(get susp_$tag particles | cut -f1)

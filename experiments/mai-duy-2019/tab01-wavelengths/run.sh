@@ -22,11 +22,7 @@ case $TIER in
 esac
 i=0
 for pair in $PAIRS; do
-    kp=${pair%:*} kq=${pair#*:}
-    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')
-    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
-    count=$((6 * kq * kq * kq))
-    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    lattice_pair "$pair" 4
     dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${geo[@]}" --set "seed=$((60300 + 2 * i))"
     dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
         --set "seed=$((60301 + 2 * i))"

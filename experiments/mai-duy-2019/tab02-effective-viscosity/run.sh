@@ -14,11 +14,7 @@ esac
 printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\n' > "$OUT/table2_data.tsv"
 i=0
 for pair in $PAIRS; do
-    kp=${pair%:*} kq=${pair#*:}
-    tag=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')
-    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
-    count=$((6 * kq * kq * kq))
-    geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
+    lattice_pair "$pair" 4
     dpd_run free_$tag free.cfg "${tier[@]}" "${geo[@]}" --set "seed=$((50300 + 2 * i))"
     dpd_run constrained_$tag constrained.cfg "${tier[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" --set "seed=$((50301 + 2 * i))"
     np=$(get free_$tag particles | cut -f1)
