@@ -81,3 +81,20 @@ lattice_pair() {
     count=$((6 * kq * kq * kq))
     geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
 }
+
+# emit_drag_torque ROW "F se" "T se" F_THEORY T_THEORY "U se" - the Pan et al.
+# table rows: drag_rowROW, torque_rowROW, their theories (no error) and the
+# ratios simulated / theory, whose errors combine the simulated value's and that
+# of the velocity U the theory is linear in, in quadrature.
+emit_drag_torque() {
+    local r=$1 F=$2 T=$3 Fth=$4 Tth=$5 u=$6 q v th
+    emit "drag_row$r" $F
+    emit "torque_row$r" $T
+    emit "drag_theory_row$r" "$Fth" 0
+    emit "torque_theory_row$r" "$Tth" 0
+    for q in drag torque; do
+        [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
+        printf '%s\t%s\n' "$v" "$u" | awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{ x = $1/t
+            printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
+    done
+}

@@ -35,16 +35,7 @@ for r in $ROWS; do
         T = 8/3*pi*m*$1*R^3/h * (1 + 0.0758*q + 0.049*q^2)
         printf "%.10g %.10g\n", F, T}')
     F=$(get row$r drag_on_colloid_x) T=$(get row$r torque_on_colloid_y)   # both without the zero-mean random part
-    emit "drag_row$r" $F
-    emit "torque_row$r" $T
-    emit "drag_theory_row$r" "$Fth" 0
-    emit "torque_theory_row$r" "$Tth" 0
-    # ratios: errors of the simulated value and of u_h in quadrature
-    for q in drag torque; do
-        [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
-        printf '%s\t%s\n' "$v" "$uh" | awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{ x = $1/t
-            printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
-    done
+    emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$uh"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $g "$uh" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table2.data.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\n' $r "$uh" "$F" "$T" $Fth $Tth | awk -F'\t' -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
         re = ($1 == 1 ? "0.0491" : $1 == 2 ? "0.0993" : "0.201")

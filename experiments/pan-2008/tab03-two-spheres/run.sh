@@ -46,16 +46,8 @@ for r in $ROWS; do
     emit "drag_measured_row$r" $Fm
     F=$(awk -v n=$NF -v g=$G 'BEGIN{printf "%.10g\t0", n*g/2}')
     T=$(paste <(get row$r torque_on_colloid_a_z) <(get row$r torque_on_colloid_b_z) | awk -F'\t' '{printf "%.10g\t%.4g", ($1-$3)/2, sqrt($2^2+$4^2)/2}')
-    emit "drag_row$r" $F
-    emit "torque_row$r" $T
     read -r Fth Tth < <(eq23 $l "$(echo "$u" | cut -f1)")
-    emit "drag_theory_row$r" "$Fth" 0
-    emit "torque_theory_row$r" "$Tth" 0
-    for q in drag torque; do
-        [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
-        printf '%s\t%s\n' "$v" "$u" | awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{ x = $1/t
-            printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
-    done
+    emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$u"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $l "$u" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table3.data.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\n' $l "$u" "$F" "$T" $Fth $Tth | awk -F'\t' -v r=$r -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
         printf "%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
