@@ -36,6 +36,34 @@ set -u
 ok()  { echo "PASS $1"; }
 bad() { echo "FAIL $1: $2"; }
 mnt=$T/mnt; mkdir -p "$mnt"
+# sweep LABEL FROM STEP COMPLETE ARGS...: dpd run with ARGS on the tmpfs at $mnt
+# pre-filled by FROM, FROM + STEP, ... KiB up to $free_kb: each run either is
+# complete (COMPLETE DIR) or exits 4 with a "dpd: " message and leaves no
+# result and no *.part file. Sets sweep_ok and stages ("stage|message" lines).
+complete_plain() { [ -s "$1/summary.tsv" ] && [ -s "$1/provenance.tsv" ] && [ -s "$1/run.h5" ] && [ ! -e "$1/INCOMPLETE" ]; }
+complete_traj()  { [ -s "$1/summary.tsv" ] && [ -s "$1/run.h5" ] && [ ! -e "$1/INCOMPLETE" ] && ! ls -a "$1" | grep -q trajectory-; }
+sweep() {
+    local label=$1 from=$2 step=$3 complete=$4 fill st msg d=$mnt/out; shift 4
+    stages="" sweep_ok=1
+    for fill in $(seq "$from" "$step" "$free_kb"); do
+        rm -rf "$mnt"/*
+        head -c "${fill}k" /dev/zero > "$mnt/filler" 2>/dev/null
+        "$DPD" run "$scene" "$@" --out "$d" 2>"$T/err"; st=$?
+        if [ $st -eq 0 ]; then
+            $complete "$d" || { bad "${label}disk full, ${fill} KiB filled" "status 0 but the result is not complete (or segments left)"; sweep_ok=0; }
+        elif [ $st -eq 4 ]; then
+            msg=$(grep -m1 "^dpd: " "$T/err" | sed "s|$mnt|MNT|g")
+            if [ -z "$msg" ] || [ -e "$d/summary.tsv" ] || [ -e "$d/run.h5" ] || ls "$d"/.*.part >/dev/null 2>&1 \
+               || grep -q "runtime error\|Sanitizer" "$T/err"; then
+                bad "${label}disk full, ${fill} KiB filled" "a result or *.part was left, or no message: $(ls -a "$d" 2>/dev/null | tr "\n" " ") $(head -3 "$T/err")"; sweep_ok=0
+            fi
+            stages="$stages${msg%%:*}|${msg#*: }
+"
+        else
+            bad "${label}disk full, ${fill} KiB filled" "status $st: $(head -5 "$T/err")"; sweep_ok=0
+        fi
+    done
+}
 # read-only file system
 mount -t tmpfs -o size=1m,ro tmpfs "$mnt" || { bad mount "cannot mount tmpfs"; exit 0; }
 "$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err"; st=$?
@@ -49,28 +77,7 @@ free_kb=$(df -k --output=avail "$mnt" | tail -1)
 need_kb=$(du -sk "$mnt/out" | cut -f1)
 if [ $st -eq 0 ]; then ok "disk-full control: the run fits an empty tmpfs"; else bad "disk-full control" "status $st"; fi
 rm -rf "$mnt/out"
-stages=""
-sweep_ok=1
-for fill in $(seq $((free_kb - need_kb - 8)) 4 "$free_kb"); do
-    rm -rf "$mnt"/*
-    head -c "${fill}k" /dev/zero > "$mnt/filler" 2>/dev/null
-    "$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err"; st=$?
-    d=$mnt/out
-    if [ $st -eq 0 ]; then
-        [ -s "$d/summary.tsv" ] && [ -s "$d/provenance.tsv" ] && [ -s "$d/run.h5" ] && [ ! -e "$d/INCOMPLETE" ] \
-            || { bad "disk full, ${fill} KiB filled" "status 0 but the result is not complete"; sweep_ok=0; }
-    elif [ $st -eq 4 ]; then
-        msg=$(grep -m1 "^dpd: " "$T/err" | sed "s|$mnt|MNT|g")
-        if [ -z "$msg" ] || [ -e "$d/summary.tsv" ] || [ -e "$d/run.h5" ] || ls "$d"/.*.part >/dev/null 2>&1 \
-           || grep -q "runtime error\|Sanitizer" "$T/err"; then
-            bad "disk full, ${fill} KiB filled" "a result or *.part was left, or no message: $(ls -a "$d" 2>/dev/null | tr "\n" " ") $(head -3 "$T/err")"; sweep_ok=0
-        fi
-        stages="$stages${msg%%:*}|${msg#*: }
-"
-    else
-        bad "disk full, ${fill} KiB filled" "status $st: $(head -5 "$T/err")"; sweep_ok=0
-    fi
-done
+sweep "" $((free_kb - need_kb - 8)) 4 complete_plain --quiet
 nst=$(printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | wc -l)
 [ $sweep_ok = 1 ] && ok "disk full at every stage: complete result or status 4 with no result"
 if [ "$nst" -ge 3 ]; then ok "disk full sweep reached $nst distinct failure stages"
@@ -93,32 +100,12 @@ if [ $st -eq 0 ] && [ "$(h5ls "$mnt/out/run.h5/particles/all/position/step" | tr
     ok "trajectory disk-full control: 4 frames in run.h5"
 else bad "trajectory disk-full control" "status $st: $(head -3 "$T/err")"; fi
 rm -rf "$mnt/out"
-tstages="" sweep_ok=1
-for fill in $(seq $((free_kb - 320)) 20 "$free_kb"); do
-    rm -rf "$mnt"/*
-    head -c "${fill}k" /dev/zero > "$mnt/filler" 2>/dev/null
-    "$DPD" run "$scene" "${targs[@]}" --out "$mnt/out" 2>"$T/err"; st=$?
-    d=$mnt/out
-    if [ $st -eq 0 ]; then
-        [ -s "$d/summary.tsv" ] && [ -s "$d/run.h5" ] && [ ! -e "$d/INCOMPLETE" ] && ! ls -a "$d" | grep -q trajectory- \
-            || { bad "trajectory, disk full, ${fill} KiB filled" "status 0 but the result is not complete or segments left"; sweep_ok=0; }
-    elif [ $st -eq 4 ]; then
-        msg=$(grep -m1 "^dpd: " "$T/err" | sed "s|$mnt|MNT|g")
-        if [ -z "$msg" ] || [ -e "$d/summary.tsv" ] || [ -e "$d/run.h5" ] || ls "$d"/.*.part >/dev/null 2>&1 \
-           || grep -q "runtime error\|Sanitizer" "$T/err"; then
-            bad "trajectory, disk full, ${fill} KiB filled" "a result or *.part was left, or no message: $(ls -a "$d" 2>/dev/null | tr "\n" " ") $(head -3 "$T/err")"; sweep_ok=0
-        fi
-        tstages="$tstages${msg%%:*}|${msg#*: }
-"
-    else
-        bad "trajectory, disk full, ${fill} KiB filled" "status $st: $(head -5 "$T/err")"; sweep_ok=0
-    fi
-done
-nst=$(printf "%s" "$tstages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | wc -l)
+sweep "trajectory, " $((free_kb - 320)) 20 complete_traj "${targs[@]}"
+nst=$(printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | wc -l)
 [ $sweep_ok = 1 ] && ok "trajectory, disk full at every stage: complete result or status 4 with no result"
-if printf "%s" "$tstages" | grep -q "trajectory segment"; then ok "trajectory disk-full sweep reached the segment commit ($nst stages)"
-else bad "trajectory disk-full sweep" "never failed at a segment commit: $tstages"; fi
-printf "%s" "$tstages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | sed "s/^/    stage: /"
+if printf "%s" "$stages" | grep -q "trajectory segment"; then ok "trajectory disk-full sweep reached the segment commit ($nst stages)"
+else bad "trajectory disk-full sweep" "never failed at a segment commit: $stages"; fi
+printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | sed "s/^/    stage: /"
 umount "$mnt"
 ' > "$tmp/ns.log" 2>&1
 cat "$tmp/ns.log"
