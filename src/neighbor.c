@@ -69,7 +69,7 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
 void neighbor_free(NeighborList *nl)
 {
     free(nl->cell_start); free(nl->tcount); free(nl->cell_of); free(nl->perm);
-    for (int t = 0; t < NL_MAX_THREADS; t++) free(nl->tbuf[t]);
+    for (int c = 0; c < NL_MAX_CHUNKS; c++) free(nl->tbuf[c]);
     free(nl->start); free(nl->nbr); free(nl->x_ref); free(nl->img_ref); free(nl->scratch);
     memset(nl, 0, sizeof *nl);
 }
@@ -214,24 +214,29 @@ static int build_range(const NeighborList *nl, const System *s, int i0, int i1, 
     const double *x = s->x;
     Segment seg[MAX_SEGMENTS];
     int cur_cell = -1, m = 0;
+    size_t span = 0;   /* particles in the current cell's stencil: room one i can need */
     for (int i = i0; i < i1; i++) {
-        if (ensure_capacity(buf, cap, *len + (size_t)(s->n - i) + 64)) return -1;
         size_t before = *len;
         if (nl->brute_force) {
+            if (ensure_capacity(buf, cap, *len + (size_t)(s->n - i) + 64)) return -1;
             for (int j = i + 1; j < s->n; j++) {
                 if (!keep_pair(s, filter, i, j)) continue;
                 double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
                 box_min_image(&s->box, d, NULL);
-                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2) {
-                    if (ensure_capacity(buf, cap, *len + 1)) return -1;
-                    (*buf)[(*len)++] = j;
-                }
+                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2) (*buf)[(*len)++] = j;
             }
             nl->start[i + 1] = (int)(*len - before);
             continue;
         }
         const int c = nl->cell_of[i];
-        if (c != cur_cell) { cur_cell = c; m = stencil_segments(nl, &s->box, c, seg); }
+        if (c != cur_cell) {
+            cur_cell = c;
+            m = stencil_segments(nl, &s->box, c, seg);
+            span = 0;
+            for (int k = 0; k < m; k++) span += (size_t)(seg[k].j1 - seg[k].j0);
+        }
+        /* the branch-free append writes one slot past the last kept pair */
+        if (ensure_capacity(buf, cap, *len + span + 1)) return -1;
         const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
         int *out = *buf;
         size_t L = *len;
@@ -257,6 +262,11 @@ static int build_range(const NeighborList *nl, const System *s, int i0, int i1, 
     return 0;
 }
 
+/* Particles per build chunk on more than one thread: small enough that a
+ * thread on a slower (shared) core takes fewer chunks, large enough that a
+ * chunk's stencil set-up and buffer stay cheap. */
+#define BUILD_CHUNKS_PER_THREAD 8
+
 int neighbor_build(NeighborList *nl, System *s)
 {
     const int n = s->n;
@@ -266,50 +276,54 @@ int neighbor_build(NeighborList *nl, System *s)
     int filter = s->n_frozen > 0;
     for (int a = 0; a < s->ntypes; a++)
         for (int b = 0; b < s->ntypes; b++) if (!s->pair[a][b].active) filter = 1;
+    int maxth = 1;
+#ifdef _OPENMP
+    maxth = omp_get_max_threads();
+#endif
+    /* Contiguous particle ranges (chunks), each listed into its own buffer by
+     * whichever thread takes it next, then concatenated in chunk order: the
+     * list does not depend on the thread count or on which thread built what.
+     * One thread: one chunk, whose buffer becomes the list (no copy). */
+    int nchunk = maxth == 1 ? 1 : BUILD_CHUNKS_PER_THREAD * maxth;
+    if (nchunk > NL_MAX_CHUNKS) nchunk = NL_MAX_CHUNKS;
+    if (nchunk > n) nchunk = n > 0 ? n : 1;
     int failed = 0;
-    size_t total = 0;
-    /* contiguous ranges per thread, concatenated in order: the list does not
-     * depend on the thread count. Every thread copies its own part and turns
-     * its own counts into offsets (no serial pass over the list). */
+    size_t at[NL_MAX_CHUNKS + 1];
     #pragma omp parallel
     {
-        int tid = 0, nth = 1;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-        nth = omp_get_num_threads();
-#endif
-        if (nth > NL_MAX_THREADS) nth = NL_MAX_THREADS;
-        const int i0 = (int)((long long)n * tid / nth), i1 = (int)((long long)n * (tid + 1) / nth);
-        if (tid < nth) {
-            nl->tlen[tid] = 0;
-            if (build_range(nl, s, i0, i1, filter, &nl->tbuf[tid], &nl->tcap[tid], &nl->tlen[tid])) {
+        #pragma omp for schedule(dynamic, 1)
+        for (int c = 0; c < nchunk; c++) {
+            const int i0 = (int)((long long)n * c / nchunk), i1 = (int)((long long)n * (c + 1) / nchunk);
+            nl->tlen[c] = 0;
+            if (build_range(nl, s, i0, i1, filter, &nl->tbuf[c], &nl->tcap[c], &nl->tlen[c])) {
                 #pragma omp atomic write
                 failed = 1;
             }
-        }
-        #pragma omp barrier
+        }   /* implicit barrier */
         #pragma omp single
         {
-            nl->nthreads_used = nth;
-            for (int t = 0; t < nth; t++) total += nl->tlen[t];
-            if (!failed && total > (size_t)INT32_MAX) failed = 1;
-            if (!failed && nth == 1) {
-                /* one range: the thread buffer becomes the list, no copy */
-                int *p = nl->nbr; size_t c = nl->cap;
+            nl->nchunks_used = nchunk;
+            at[0] = 0;
+            for (int c = 0; c < nchunk; c++) at[c + 1] = at[c] + nl->tlen[c];
+            if (!failed && at[nchunk] > (size_t)INT32_MAX) failed = 1;
+            if (!failed && nchunk == 1) {
+                int *p = nl->nbr; size_t cp = nl->cap;
                 nl->nbr = nl->tbuf[0]; nl->cap = nl->tcap[0];
-                nl->tbuf[0] = p; nl->tcap[0] = c;
-            } else if (!failed && ensure_capacity(&nl->nbr, &nl->cap, total + 1)) {
+                nl->tbuf[0] = p; nl->tcap[0] = cp;
+            } else if (!failed && ensure_capacity(&nl->nbr, &nl->cap, at[nchunk] + 1)) {
                 failed = 1;
             }
         }   /* implicit barrier */
-        if (!failed && tid < nth) {
-            size_t at = 0;
-            for (int t = 0; t < tid; t++) at += nl->tlen[t];
-            if (nth > 1) memcpy(nl->nbr + at, nl->tbuf[tid], nl->tlen[tid] * sizeof(int));
-            int run = (int)at;   /* start[i + 1] holds the count of i: make it the offset */
-            for (int i = i0; i < i1; i++) { run += nl->start[i + 1]; nl->start[i + 1] = run; }
-            memcpy(nl->x_ref + 3 * (size_t)i0, s->x + 3 * (size_t)i0, 3 * (size_t)(i1 - i0) * sizeof(double));
-            for (int i = i0; i < i1; i++) nl->img_ref[i] = s->img[3 * i + 1];
+        if (!failed) {
+            #pragma omp for schedule(dynamic, 1)
+            for (int c = 0; c < nchunk; c++) {
+                const int i0 = (int)((long long)n * c / nchunk), i1 = (int)((long long)n * (c + 1) / nchunk);
+                if (nchunk > 1) memcpy(nl->nbr + at[c], nl->tbuf[c], nl->tlen[c] * sizeof(int));
+                int run = (int)at[c];   /* start[i + 1] holds the count of i: make it the offset */
+                for (int i = i0; i < i1; i++) { run += nl->start[i + 1]; nl->start[i + 1] = run; }
+                memcpy(nl->x_ref + 3 * (size_t)i0, s->x + 3 * (size_t)i0, 3 * (size_t)(i1 - i0) * sizeof(double));
+                for (int i = i0; i < i1; i++) nl->img_ref[i] = s->img[3 * i + 1];
+            }
         }
     }
     if (failed) return -1;
@@ -335,8 +349,13 @@ int neighbor_update(NeighborList *nl, System *s)
         /* undo the Lees-Edwards shift of a y crossing, at the current offset;
          * the offset travelled since the build bounds the difference */
         d[0] += (s->img[3 * i + 1] - nl->img_ref[i]) * b->le_offset;
-        /* a particle that crossed a boundary is compared through its image */
-        for (int k = 0; k < b->dim; k++) d[k] -= b->L[k] * rint(d[k] * b->inv[k]);
+        /* a particle that crossed a boundary is compared through its image; a
+         * move of more than half a box (a blow-up) stays large and forces a
+         * rebuild either way, so one box length is enough (no rint call) */
+        for (int k = 0; k < b->dim; k++) {
+            if (d[k] > b->half[k]) d[k] -= b->L[k];
+            else if (d[k] < -b->half[k]) d[k] += b->L[k];
+        }
         const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (r2 > max2) max2 = r2;
     }

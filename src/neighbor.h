@@ -9,7 +9,8 @@
 #include <stddef.h>
 #include "system.h"
 
-#define NL_MAX_THREADS 64
+#define NL_MAX_THREADS 64   /* threads of the counting sort */
+#define NL_MAX_CHUNKS 128   /* ranges of the list build */
 
 typedef struct {
     double skin, cutoff;      /* cutoff = rc_max + skin */
@@ -30,10 +31,10 @@ typedef struct {
     double *scratch;          /* 3 n doubles for permutations */
     long builds;
     int n;
-    /* per-thread build buffers */
-    int *tbuf[NL_MAX_THREADS];
-    size_t tcap[NL_MAX_THREADS], tlen[NL_MAX_THREADS];
-    int nthreads_used;
+    /* per-chunk build buffers */
+    int *tbuf[NL_MAX_CHUNKS];
+    size_t tcap[NL_MAX_CHUNKS], tlen[NL_MAX_CHUNKS];
+    int nchunks_used;
 } NeighborList;
 
 int  neighbor_init(NeighborList *nl, const System *s, double skin);

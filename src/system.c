@@ -31,39 +31,30 @@ void system_free(System *s)
     s->n = 0;
 }
 
-static void permute_vec3(double *a, const int *perm, int n, double *scratch)
-{
-    #pragma omp parallel for schedule(static)
-    for (int k = 0; k < n; k++)
-        for (int d = 0; d < 3; d++) scratch[3 * k + d] = a[3 * perm[k] + d];
-    memcpy(a, scratch, 3 * (size_t)n * sizeof *a);
-}
+/* a[k] = a[perm[k]] through scratch; called inside a parallel region (both
+ * the gather and the copy back are shared out, each ends with a barrier) */
+#define PERMUTE_THROUGH(type, a, width, perm, n, tmp) do {                        \
+        type *t_ = (type *)(tmp);                                                 \
+        _Pragma("omp for schedule(static)")                                       \
+        for (int k = 0; k < (n); k++)                                             \
+            for (int d = 0; d < (width); d++) t_[(width) * k + d] = (a)[(width) * (perm)[k] + d]; \
+        _Pragma("omp for schedule(static)")                                       \
+        for (int k = 0; k < (n); k++)                                             \
+            for (int d = 0; d < (width); d++) (a)[(width) * k + d] = t_[(width) * k + d]; \
+    } while (0)
 
 void system_permute(System *s, const int *perm, double *scratch)
 {
     const int n = s->n;
-    permute_vec3(s->x, perm, n, scratch);
-    permute_vec3(s->v, perm, n, scratch);
-    permute_vec3(s->f, perm, n, scratch);
-    permute_vec3(s->v_pred, perm, n, scratch);
-    if (s->omega) {
-        permute_vec3(s->omega, perm, n, scratch);
-        permute_vec3(s->omega_pred, perm, n, scratch);
-        permute_vec3(s->torque, perm, n, scratch);
+    double *vec3[7] = {s->x, s->v, s->f, s->v_pred, s->omega, s->omega_pred, s->torque};
+    const int nvec = s->omega ? 7 : 4;
+    #pragma omp parallel
+    {
+        for (int q = 0; q < nvec; q++) PERMUTE_THROUGH(double, vec3[q], 3, perm, n, scratch);
+        PERMUTE_THROUGH(int32_t, s->img, 3, perm, n, scratch);
+        PERMUTE_THROUGH(uint32_t, s->id, 1, perm, n, scratch);
+        PERMUTE_THROUGH(uint8_t, s->type, 1, perm, n, scratch);
     }
-    int32_t *ti = (int32_t *)scratch;
-    #pragma omp parallel for schedule(static)
-    for (int k = 0; k < n; k++)
-        for (int d = 0; d < 3; d++) ti[3 * k + d] = s->img[3 * perm[k] + d];
-    memcpy(s->img, ti, 3 * (size_t)n * sizeof *ti);
-    uint32_t *tu = (uint32_t *)scratch;
-    #pragma omp parallel for schedule(static)
-    for (int k = 0; k < n; k++) tu[k] = s->id[perm[k]];
-    memcpy(s->id, tu, (size_t)n * sizeof *tu);
-    uint8_t *tb = (uint8_t *)scratch;
-    #pragma omp parallel for schedule(static)
-    for (int k = 0; k < n; k++) tb[k] = s->type[perm[k]];
-    memcpy(s->type, tb, (size_t)n);
 }
 
 /* Momentum is conserved only without walls and body forces. */
