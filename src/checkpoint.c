@@ -13,8 +13,10 @@ static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
 /* Version 2 appends the state of rotation scenes, 3D spring colloids, the
  * TCAF and the trajectory segments after the version 1 layout, each only for
  * a scene that has it: for any other scene the two layouts are the same
- * byte for byte, so a version 1 checkpoint of such a scene is still read. */
-#define CHECKPOINT_VERSION 2u
+ * byte for byte, so a version 1 checkpoint of such a scene is still read.
+ * Version 3 keeps the MSD curves per group of particles (their errors come
+ * from the groups): a version 1 or 2 checkpoint of an MSD scene is refused. */
+#define CHECKPOINT_VERSION 3u
 #define CHECKPOINT_VERSION_OLDEST 1u
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
@@ -136,7 +138,7 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     if (m->msd_on) {
         io_array(io, m->msd_origin_pos, (size_t)m->msd_norig * 3 * n, sizeof(double), "msd origins");
         io_array(io, m->msd_origin_step, (size_t)m->msd_norig, sizeof(long long), "msd origin steps");
-        io_array(io, m->msd_curve, (size_t)m->msd_norig * m->msd_nlags, sizeof(double), "msd curves");
+        io_array(io, m->msd_curve, (size_t)m->msd_norig * m->msd_groups * m->msd_nlags, sizeof(double), "msd curves");
         io_series(io, &m->msd_done, "msd done");
         io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
     }
@@ -335,7 +337,7 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
         snprintf(err, errlen, "%s is not a dpd checkpoint", path);
         rc = -1;
     } else if (version < CHECKPOINT_VERSION_OLDEST || version > CHECKPOINT_VERSION
-               || (version < 2 && needs_version2(s, m, x))) {
+               || (version < 2 && needs_version2(s, m, x)) || (version < 3 && m->msd_on)) {
         snprintf(err, errlen, "checkpoint %s has format version %u, which this dpd (format %u) cannot resume "
                  "for this scene; delete it to start afresh", path, version, CHECKPOINT_VERSION);
         rc = -1;

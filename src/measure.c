@@ -13,6 +13,37 @@ static int block_of(const Measure *m, long long sample)
     return (int)(b >= nb ? nb - 1 : b);
 }
 
+/* The selected particles (mobile, of the MSD type) by id; group of the k-th of
+ * them (by id) k * G / count, G = min(blocks, count): sizes differ by at most
+ * one and do not depend on the order particles are stored in. */
+static int msd_groups_init(Measure *m, const System *s)
+{
+    const int n = s->n;
+    m->msd_group_of_id = malloc((size_t)(n > 0 ? n : 1) * sizeof(int));
+    if (!m->msd_group_of_id) return -1;
+    for (int k = 0; k < n; k++) m->msd_group_of_id[k] = -1;
+    m->msd_count = 0;
+    for (int i = 0; i < n; i++)
+        if (!s->types[s->type[i]].frozen && (m->msd_type < 0 || s->type[i] == m->msd_type)) {
+            m->msd_group_of_id[s->id[i]] = 0;
+            m->msd_count++;
+        }
+    int G = m->nblocks < m->msd_count ? m->nblocks : m->msd_count;
+    if (G < 1) G = 1;
+    m->msd_groups = G;
+    m->msd_group_n = calloc((size_t)G, sizeof(int));
+    m->msd_gsum = calloc((size_t)G, sizeof(double));
+    if (!m->msd_group_n || !m->msd_gsum) return -1;
+    long long rank = 0;
+    for (int id = 0; id < n; id++) {
+        if (m->msd_group_of_id[id] < 0) continue;
+        const int g = (int)(rank++ * G / (m->msd_count > 0 ? m->msd_count : 1));
+        m->msd_group_of_id[id] = g;
+        m->msd_group_n[g]++;
+    }
+    return 0;
+}
+
 int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
@@ -45,12 +76,10 @@ int measure_init(Measure *m, const System *s)
         m->msd_norig = m->msd_window / m->msd_origin_every + 1;
         m->msd_origin_pos = calloc((size_t)m->msd_norig * 3 * s->n, sizeof(double));
         m->msd_origin_step = malloc((size_t)m->msd_norig * sizeof(long long));
-        m->msd_curve = calloc((size_t)m->msd_norig * m->msd_nlags, sizeof(double));
+        if (msd_groups_init(m, s)) return -1;
+        m->msd_curve = calloc((size_t)m->msd_norig * m->msd_groups * m->msd_nlags, sizeof(double));
         if (!m->msd_origin_pos || !m->msd_origin_step || !m->msd_curve) return -1;
         for (int k = 0; k < m->msd_norig; k++) m->msd_origin_step[k] = -1;
-        m->msd_count = 0;
-        for (int i = 0; i < s->n; i++)
-            if (!s->types[s->type[i]].frozen && (m->msd_type < 0 || s->type[i] == m->msd_type)) m->msd_count++;
     }
     if (m->tcaf.on && tcaf_init(&m->tcaf, s, m->nblocks, m->prod_steps)) return -1;
     return 0;
@@ -71,6 +100,7 @@ void measure_free(Measure *m)
     for (int d = 0; d < 3; d++) { series_free(&m->com_v[d]); series_free(&m->com_r[d]); }
     free(m->rdf_hist); free(m->rdf_samples);
     free(m->msd_origin_pos); free(m->msd_origin_step); free(m->msd_curve);
+    free(m->msd_group_of_id); free(m->msd_group_n); free(m->msd_gsum);
     series_free(&m->msd_done);
     field_free(&m->field);
     if (m->tcaf.on) tcaf_free(&m->tcaf);
@@ -179,7 +209,7 @@ static void sample_rdf(Measure *m, const System *s, const NeighborList *nl, int 
 
 static void sample_msd(Measure *m, const System *s, long long step)
 {
-    const int n = s->n;
+    const int n = s->n, G = m->msd_groups, L = m->msd_nlags;
     /* start an origin */
     if (step % m->msd_origin_every == 0) {
         const int slot = (int)((step / m->msd_origin_every) % m->msd_norig);
@@ -188,25 +218,26 @@ static void sample_msd(Measure *m, const System *s, long long step)
             for (int d = 0; d < 3; d++)
                 o[3 * s->id[i] + d] = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d];
         m->msd_origin_step[slot] = step;
-        memset(m->msd_curve + (size_t)slot * m->msd_nlags, 0, (size_t)m->msd_nlags * sizeof(double));
+        memset(m->msd_curve + (size_t)slot * G * L, 0, (size_t)G * L * sizeof(double));
     }
     for (int slot = 0; slot < m->msd_norig; slot++) {
         const long long t0 = m->msd_origin_step[slot];
         if (t0 < 0 || step - t0 > m->msd_window || (step - t0) % m->msd_every) continue;
         const int lag = (int)((step - t0) / m->msd_every);
         const double *o = m->msd_origin_pos + (size_t)slot * 3 * n;
-        double sum = 0.0;
+        memset(m->msd_gsum, 0, (size_t)G * sizeof(double));
         for (int i = 0; i < n; i++) {
-            if (s->types[s->type[i]].frozen || (m->msd_type >= 0 && s->type[i] != m->msd_type)) continue;
+            const int g = m->msd_group_of_id[s->id[i]];
+            if (g < 0) continue;
             for (int d = 0; d < s->box.dim; d++) {
                 const double dd = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d] - o[3 * s->id[i] + d];
-                sum += dd * dd;
+                m->msd_gsum[g] += dd * dd;
             }
         }
-        double *curve = m->msd_curve + (size_t)slot * m->msd_nlags;
-        curve[lag] = sum / m->msd_count;
+        double *curve = m->msd_curve + (size_t)slot * G * L;
+        for (int g = 0; g < G; g++) curve[(size_t)g * L + lag] = m->msd_gsum[g] / m->msd_group_n[g];
         if (step - t0 == m->msd_window) {
-            for (int l = 0; l < m->msd_nlags; l++) series_push(&m->msd_done, curve[l]);
+            for (size_t k = 0; k < (size_t)G * L; k++) series_push(&m->msd_done, curve[k]);
             m->msd_ndone++;
             m->msd_origin_step[slot] = -1;
         }
@@ -408,41 +439,73 @@ static int write_rdf(const Measure *m, const System *s, const char *dir)
     return fclose(f);
 }
 
+/* msd of group g after lag l, averaged over the completed origins */
+static double msd_group_mean(const Measure *m, int g, int l)
+{
+    const size_t G = (size_t)m->msd_groups, L = (size_t)m->msd_nlags;
+    double sum = 0.0;
+    for (long long o = 0; o < m->msd_ndone; o++) sum += m->msd_done.v[((size_t)o * G + (size_t)g) * L + (size_t)l];
+    return sum / (double)m->msd_ndone;
+}
+
+/* Mean over all selected particles of a per-group value y_g and its standard
+ * error from the scatter of the groups (ratio estimator for groups of sizes
+ * n_g: var = sum_g (n_g / nbar)^2 (y_g - mean)^2 / (G (G - 1))). */
+static void over_groups(const Measure *m, const double *y, double *mean, double *se)
+{
+    const int G = m->msd_groups;
+    double sum = 0.0;
+    for (int g = 0; g < G; g++) sum += m->msd_group_n[g] * y[g];
+    *mean = sum / m->msd_count;
+    *se = NAN;
+    if (G < 2) return;
+    const double nbar = (double)m->msd_count / G;
+    double v = 0.0;
+    for (int g = 0; g < G; g++) {
+        const double w = m->msd_group_n[g] / nbar, d = y[g] - *mean;
+        v += w * w * d * d;
+    }
+    *se = sqrt(v / ((double)G * (G - 1)));
+}
+
 static int write_msd(const Measure *m, const System *s, FILE *summary, const char *dir)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/msd.tsv", dir);
     FILE *f = fopen(path, "w");
     if (!f) return -1;
-    const int L = m->msd_nlags, dim = s->box.dim;
+    const int L = m->msd_nlags, dim = s->box.dim, G = m->msd_groups;
     const long long no = m->msd_ndone;
-    int nb = m->nblocks;
-    if (no < nb) nb = (int)no;
-    fprintf(f, "# %lld time origins, errors from %d blocks of consecutive origins\n", no, nb);
+    fprintf(f, "# %lld time origins; errors from %d groups of particles (%d particles)\n", no, G, m->msd_count);
     fprintf(f, "t\tmsd\tmsd_se\tD\tD_se\n");
-    double *col = malloc((size_t)(no > 0 ? no : 1) * sizeof(double));
-    if (!col) { fclose(f); return -1; }
-    for (int l = 1; l < L; l++) {
+    double *y = malloc((size_t)G * sizeof(double)), *yl = malloc((size_t)G * sizeof(double));
+    if (!y || !yl) { free(y); free(yl); fclose(f); return -1; }
+    double mean = NAN, se = NAN;
+    for (int l = 1; l < L && no > 0; l++) {
         const double t = (double)l * m->msd_every * s->dt;
-        for (long long o = 0; o < no; o++) col[o] = m->msd_done.v[o * L + l];
-        double mean, se;
-        block_stats(col, (size_t)no, nb, &mean, &se);
+        for (int g = 0; g < G; g++) y[g] = msd_group_mean(m, g, l);
+        over_groups(m, y, &mean, &se);
         fprintf(f, "%.6g\t%.8g\t%.3g\t%.8g\t%.3g\n", t, mean, se, mean / (2 * dim * t), se / (2 * dim * t));
     }
-    /* D from the slope over the second half of the window, per origin */
+    /* D from the slope over the second half of the window */
     const int l1 = L - 1, l0 = (L - 1) / 2;
     const double T1 = l1 * m->msd_every * s->dt, T0 = l0 * m->msd_every * s->dt;
-    for (long long o = 0; o < no; o++)
-        col[o] = (m->msd_done.v[o * L + l1] - m->msd_done.v[o * L + l0]) / (2 * dim * (T1 - T0));
+    for (int g = 0; g < G; g++) {
+        yl[g] = no > 0 ? msd_group_mean(m, g, l0) : NAN;
+        y[g] = no > 0 ? msd_group_mean(m, g, l1) : NAN;
+    }
     double D, Dse;
-    block_stats(col, (size_t)no, nb, &D, &Dse);
+    for (int g = 0; g < G; g++) y[g] = (y[g] - yl[g]) / (2 * dim * (T1 - T0));
+    over_groups(m, y, &D, &Dse);
     row(summary, "D", D, Dse);
-    /* flatness of D(t) = msd / (2 d t): late over half-window */
-    for (long long o = 0; o < no; o++)
-        col[o] = (m->msd_done.v[o * L + l1] / T1) / (m->msd_done.v[o * L + l0] / T0);
-    block_stats(col, (size_t)no, nb, &D, &Dse);
+    /* flatness of D(t) = msd / (2 d t): late over half-window, per group */
+    for (int g = 0; g < G; g++) {
+        const double late = no > 0 ? msd_group_mean(m, g, l1) : NAN;
+        y[g] = (late / T1) / (yl[g] / T0);
+    }
+    over_groups(m, y, &D, &Dse);
     row(summary, "D_t_ratio_late_half", D, Dse);
-    free(col);
+    free(y); free(yl);
     return fclose(f);
 }
 

@@ -38,10 +38,17 @@ typedef struct {
     int msd_nlags, msd_norig;
     double *msd_origin_pos;   /* norig x 3 n (by id) */
     long long *msd_origin_step;
-    double *msd_curve;        /* norig x nlags: running sums for active origins */
-    Series msd_done;          /* completed curves, nlags values each, flattened */
+    double *msd_curve;        /* norig x groups x nlags: curves of the active origins */
+    Series msd_done;          /* completed curves, groups x nlags values each, flattened */
     long long msd_ndone;
     int msd_count;            /* particles in the selection */
+    /* The errors come from groups of particles, not from blocks of time origins:
+     * the origins of one window share most of their trajectory, the particles
+     * move (nearly) independently. Group of a particle: its rank by id. */
+    int msd_groups;
+    int *msd_group_of_id;     /* n: group, or -1 outside the selection */
+    int *msd_group_n;         /* particles per group */
+    double *msd_gsum;         /* groups: scratch sums of one sample */
     /* profile per block (time-resolved start-up profiles) */
     int prof_per_block;
     double *prof_tsum;        /* per block: sum of sample times */

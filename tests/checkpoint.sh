@@ -103,9 +103,11 @@ check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/
 check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/foreign/summary.tsv"
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
 
-# checkpoint format versions: a version 1 file (the layout of version 2 for a
-# scene without spins, rigid bodies, TCAF or trajectory) still resumes; one of
-# a rotation scene cannot (version 1 had no spins), nor one of a future format
+# checkpoint format versions: a version 1 or 2 file of a scene without MSD,
+# spins, rigid bodies, TCAF or trajectory (the 2D colloid scene) still resumes
+# (same layout); one of a rotation scene cannot (version 1 had no spins), nor a
+# version 2 one of an MSD scene (version 3 keeps the MSD per particle group),
+# nor one of a future format
 # reseal FILE VERSION: set the format version and recompute the FNV-1a checksum
 reseal() {
     perl -e '
@@ -121,26 +123,35 @@ reseal() {
         }
         open $f, ">:raw", $ARGV[0] or die; print $f $b, pack("VV", $lo, $hi); close $f;' "$1" "$2"
 }
-rm -rf "$tmp/v1"; cp -r "$tmp/foreign" "$tmp/v1"
-reseal "$tmp/v1/checkpoint.dpd" 2
-"$DPD" run "$scene" --out "$tmp/v1" --threads 1 --quiet --resume 2>"$tmp/err"
-check "reseal control: the rewritten version 2 checkpoint resumes (checksum right)" same_run "$tmp/$s-ref" "$tmp/v1"
-rm -rf "$tmp/v1"; cp -r "$tmp/foreign" "$tmp/v1"
-reseal "$tmp/v1/checkpoint.dpd" 1
-"$DPD" run "$scene" --out "$tmp/v1" --threads 1 --quiet --resume 2>"$tmp/err"
-check "version 1 checkpoint of a plain scene: resumes, bit for bit" same_run "$tmp/$s-ref" "$tmp/v1"
-rm -rf "$tmp/v1r" "$tmp/v3"
+c=checkpoint-colloids2d
+rm -rf "$tmp/old"
+"$DPD" run tests/$c.cfg --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$tmp/old/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
+for v in 3 2 1; do
+    rm -rf "$tmp/v$v"; cp -r "$tmp/old" "$tmp/v$v"
+    reseal "$tmp/v$v/checkpoint.dpd" $v
+    "$DPD" run tests/$c.cfg --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
+done
+check "reseal control: the rewritten version 3 checkpoint resumes (checksum right)" same_run "$tmp/$c-ref" "$tmp/v3"
+check "version 2 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v2"
+check "version 1 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v1"
+rm -rf "$tmp/v2m"; cp -r "$tmp/foreign" "$tmp/v2m"
+reseal "$tmp/v2m/checkpoint.dpd" 2
+"$DPD" run "$scene" --out "$tmp/v2m" --quiet --resume 2>"$tmp/err"; st=$?
+check "version 2 checkpoint of an MSD scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v2m/summary.tsv"
+check "version 2 checkpoint of an MSD scene: message" grep -q 'format version 2, which this dpd (format 3) cannot resume' "$tmp/err"
+rm -rf "$tmp/v1r" "$tmp/v4"
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-cp -r "$tmp/v1r" "$tmp/v3"
+cp -r "$tmp/v1r" "$tmp/v4"
 reseal "$tmp/v1r/checkpoint.dpd" 1
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --quiet --resume 2>"$tmp/err"; st=$?
 check "version 1 checkpoint of a rotation scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v1r/summary.tsv"
-check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 2) cannot resume' "$tmp/err"
-reseal "$tmp/v3/checkpoint.dpd" 3
-"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v3" --quiet --resume 2>"$tmp/err"; st=$?
-check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v3/summary.tsv"
-check "future checkpoint format: message" grep -q 'format version 3' "$tmp/err"
+check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 3) cannot resume' "$tmp/err"
+reseal "$tmp/v4/checkpoint.dpd" 4
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v4" --quiet --resume 2>"$tmp/err"; st=$?
+check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v4/summary.tsv"
+check "future checkpoint format: message" grep -q 'format version 4' "$tmp/err"
 
 # trajectory output (H5MD) across interruptions: frames go to segment files
 # closed at each checkpoint and are copied into run.h5 when the run completes
