@@ -367,7 +367,9 @@ static int write_rdf(const Bonds *b, const System *s, const char *dir)
 }
 
 /* MSD of the centres (eq. 52), time average over every sample as origin;
- * errors from nblocks blocks of consecutive origins. */
+ * errors from blocks of consecutive origins, each at least two windows long
+ * (origins closer than a window share their trajectory: shorter blocks would
+ * be correlated and understate the error), at most nblocks of them. */
 static int write_msd(const Bonds *b, const System *s, FILE *summary, const char *dir)
 {
     const int nc = b->ncol, W = b->msd_window;
@@ -376,7 +378,8 @@ static int write_msd(const Bonds *b, const System *s, FILE *summary, const char 
     const double dts = b->every * s->dt;
     if (no < 1) { fprintf(summary, "D_colloid\tnan\tnan\n"); return 0; }
     int nb = b->nblocks;
-    if (no < nb) nb = (int)no;
+    if (no / (2LL * W) < nb) nb = (int)(no / (2LL * W));
+    if (nb < 1) nb = 1;   /* one block: the error is nan */
     /* per block of origins: the mean MSD at every lag */
     double *blk = calloc((size_t)nb * (W + 1), sizeof(double));
     long long *cnt = calloc((size_t)nb, sizeof(long long));
