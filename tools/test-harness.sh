@@ -129,6 +129,8 @@ CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
 
 Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
 
+Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}.
+
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}.
 
 <!-- table: x/y/rows.tsv -->
@@ -201,6 +203,11 @@ if [ -f "$G" ]; then
     in_file "mkpaper: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
     in_file "mkpaper: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
     in_file "mkpaper: tsv cell by first column" "$G" '^Cells: 5.17; '
+    # 30.9 +- 0.3 against 29.08: +6.26 % +- 1.03 %; 30.9/3.71 = 8.33 +- 0.081; (30.9 - 29.08)/0.3 = 6.07; quick 29.317: +0.81 %
+    in_file "mkpaper: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
+    in_file "mkpaper: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
+    in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
+    in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier)\.$'
     in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
     in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
@@ -247,7 +254,8 @@ has "mkpaper: names tsv placeholder" 'tsv: data/none.tsv'
 has "mkpaper: names figure placeholder" 'figure: x/nores/a.svg'
 printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
-    'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' > "$root/bad.md"
+    'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
+    'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' > "$root/bad.md"
 T "mkpaper: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
 has "mkpaper: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
 has "mkpaper: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
@@ -257,7 +265,10 @@ has "mkpaper: names a missing tsv column" 'cells.tsv: no column nocol'
 has "mkpaper: a cell of an INCOMPLETE result is refused" 'results/x/incomplete/quick is not a valid result'
 has "mkpaper: names a missing tsv file" 'no file data/none.tsv'
 has "mkpaper: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
-has "mkpaper: counts every failed placeholder" '8 placeholder(s) could not be filled'
+has "mkpaper: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
+has "mkpaper: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
+has "mkpaper: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
+has "mkpaper: counts every failed placeholder" '11 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
