@@ -129,7 +129,7 @@ CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
 
 Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
 
-Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}.
+Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}.
 
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}.
 
@@ -207,6 +207,7 @@ if [ -f "$G" ]; then
     in_file "mkpaper: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
     in_file "mkpaper: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
     in_file "mkpaper: difference of two quantities" "$G" '; +27.19 +- 0.3; '
+    in_file "mkpaper: a derived value of zero error is printed without one" "$G" '; 1.85; '
     in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
     in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier)\.$'
     in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
