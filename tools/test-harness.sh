@@ -89,7 +89,10 @@ $(tab tight 1.0 0.5)
 $(tab zero 0.1 0.5)
 EOF2
 mkexp x/paperonly <<< "$(tab q paper 0 1 0 - fixture)"
-mkres x/paperonly paper 7 <<< "$(tab q 0.5 0)"
+mkres x/paperonly paper 7 <<EOF2
+$(tab q 0.5 0)
+$(tab q_tol1e-10 0.25 0.05)
+EOF2
 cat > "$root/EXPERIMENTS.md" <<'EOF2'
 | experiment | what |
 |---|---|
@@ -129,7 +132,7 @@ CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
 
 Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
 
-Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}.
+Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
 
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}.
 
@@ -208,8 +211,11 @@ if [ -f "$G" ]; then
     in_file "mkpaper: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
     in_file "mkpaper: difference of two quantities" "$G" '; +27.19 +- 0.3; '
     in_file "mkpaper: a derived value of zero error is printed without one" "$G" '; 1.85; '
+    # x/out q = 5.5 +- 0.1 against x/y quick eta 29.317 +- 0.25: -88.5; x/paperonly 0.25 +- 0.05 - 0.5
+    in_file "mkpaper: standard errors against another experiment's quantity, tier marked" "$G" '; -88.5 (quick tier); '
+    in_file "mkpaper: a name holding the operator is split where both sides resolve" "$G" '; -0.25 +- 0.05\.$'
     in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
-    in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier)\.$'
+    in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
     in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
     in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
