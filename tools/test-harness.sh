@@ -134,7 +134,7 @@ Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}
 
 Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
 
-Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}.
+Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
 <!-- table: x/y/rows.tsv -->
 
@@ -217,7 +217,8 @@ if [ -f "$G" ]; then
     in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
     in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
     in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
-    in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62\.$'
+    in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
+    in_file "mkpaper: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
@@ -263,7 +264,8 @@ has "mkpaper: names figure placeholder" 'figure: x/nores/a.svg'
 printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
-    'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' > "$root/bad.md"
+    'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
+    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' > "$root/bad.md"
 T "mkpaper: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
 has "mkpaper: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
 has "mkpaper: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
@@ -276,7 +278,8 @@ has "mkpaper: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
 has "mkpaper: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
 has "mkpaper: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
 has "mkpaper: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
-has "mkpaper: counts every failed placeholder" '11 placeholder(s) could not be filled'
+has "mkpaper: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
+has "mkpaper: counts every failed placeholder" '12 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
