@@ -89,7 +89,10 @@ $(tab tight 1.0 0.5)
 $(tab zero 0.1 0.5)
 EOF2
 mkexp x/paperonly <<< "$(tab q paper 0 1 0 - fixture)"
-mkres x/paperonly paper 7 <<< "$(tab q 0.5 0)"
+mkres x/paperonly paper 7 <<EOF2
+$(tab q 0.5 0)
+$(tab q_tol1e-10 0.25 0.05)
+EOF2
 cat > "$root/EXPERIMENTS.md" <<'EOF2'
 | experiment | what |
 |---|---|
@@ -104,6 +107,8 @@ touch -d '2001-01-01' "$root"/results/x/y/*/summary.tsv
 touch -d '2002-01-01' "$root/figures/x/y/fig.png"
 printf 'phi\teta_r\n0.0119\t1.0273\n0.4940\t5.1700\n' > "$root/data/t.tsv"
 printf 'row\tours\tverdict@\n1\t30.9 +- 0.3\teta\n2\t3.71\tratio\n3\t7\tunbanded\n' > "$root/results/x/y/paper/rows.tsv"
+printf '# eta(k) per shell; comment line skipped\nk\tn2\teta\teta_se\n0.418879\t1\t37.616704\t6.8\n0.592384\t2\t33.149762\t1.49\n' > "$root/results/x/y/paper/cells.tsv"
+printf 'k\teta\n0.7\t26.901334\n' > "$root/results/x/incomplete/quick/cells.tsv"
 cat > "$root/paper.md" <<'EOF2'
 ---
 title: Fixture paper
@@ -124,6 +129,12 @@ title: Fixture paper
 Verdicts: y {{verdict:x/y}}; miss {{verdict:x/miss}}; out {{verdict:x/out}}.
 
 CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
+
+Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
+
+Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
+
+Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
 <!-- table: x/y/rows.tsv -->
 
@@ -191,6 +202,23 @@ if [ -f "$G" ]; then
     in_file "mkpaper: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
     in_file "mkpaper: inline CPU seconds from provenance, tier named unless paper" "$G" '^CPU: y 4322 s; out 2 (quick tier) s\.$'
     in_file "mkpaper: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
+    in_file "mkpaper: inline value from the paper tier" "$G" '^Values: 30.9 +- 0.3; '
+    in_file "mkpaper: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
+    in_file "mkpaper: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
+    in_file "mkpaper: tsv cell by first column" "$G" '^Cells: 5.17; '
+    # 30.9 +- 0.3 against 29.08: +6.26 % +- 1.03 %; 30.9/3.71 = 8.33 +- 0.081; 30.9 - 3.71 = 27.19 +- 0.3; (30.9 - 29.08)/0.3 = 6.07; quick 29.317: +0.81 %
+    in_file "mkpaper: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
+    in_file "mkpaper: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
+    in_file "mkpaper: difference of two quantities" "$G" '; +27.19 +- 0.3; '
+    in_file "mkpaper: a derived value of zero error is printed without one" "$G" '; 1.85; '
+    # x/out q = 5.5 +- 0.1 against x/y quick eta 29.317 +- 0.25: -88.5; x/paperonly 0.25 +- 0.05 - 0.5
+    in_file "mkpaper: standard errors against another experiment's quantity, tier marked" "$G" '; -88.5 (quick tier); '
+    in_file "mkpaper: a name holding the operator is split where both sides resolve" "$G" '; -0.25 +- 0.05\.$'
+    in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
+    in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
+    in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
+    in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
+    in_file "mkpaper: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
@@ -233,6 +261,25 @@ T "mkpaper: missing result, tsv and figure fail" 1 "$M" -i "$root/bad.md" -o "$r
 has "mkpaper: names results placeholder" 'results: x/nores'
 has "mkpaper: names tsv placeholder" 'tsv: data/none.tsv'
 has "mkpaper: names figure placeholder" 'figure: x/nores/a.svg'
+printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
+    'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
+    'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
+    'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
+    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' > "$root/bad.md"
+T "mkpaper: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
+has "mkpaper: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
+has "mkpaper: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
+has "mkpaper: names a missing quantity" '{{x/y:nonesuch}}'
+has "mkpaper: names a missing tsv row" 'cells.tsv: no row n2=9'
+has "mkpaper: names a missing tsv column" 'cells.tsv: no column nocol'
+has "mkpaper: a cell of an INCOMPLETE result is refused" 'results/x/incomplete/quick is not a valid result'
+has "mkpaper: names a missing tsv file" 'no file data/none.tsv'
+has "mkpaper: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
+has "mkpaper: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
+has "mkpaper: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
+has "mkpaper: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
+has "mkpaper: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
+has "mkpaper: counts every failed placeholder" '12 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
