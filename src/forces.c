@@ -14,7 +14,9 @@ int forces_init(ForceWork *w, int n, int nbins)
     w->n = n;
     w->nbins = nbins;
     w->buf = malloc((size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1);
-    if (!w->buf) return -1;
+    w->nblk = (n >> FORCE_BLOCK_SHIFT) + 1;
+    w->touched = calloc((size_t)FORCE_CHUNKS * (size_t)w->nblk, 1);
+    if (!w->buf || !w->touched) { forces_free(w); return -1; }
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         w->chunk[c].nbins = nbins;
         if (nbins > 0) {
@@ -29,6 +31,7 @@ void forces_free(ForceWork *w)
 {
     free(w->buf);
     free(w->tbuf);
+    free(w->touched);
     for (int c = 0; c < FORCE_CHUNKS; c++) free(w->chunk[c].Wbin);
     memset(w, 0, sizeof *w);
 }
@@ -126,8 +129,9 @@ static __attribute__((noinline, noclone)) void accumulate_virial(PairVirial *pv,
  * value (pair_loop below), so that a scene without shear runs no test for it. */
 static inline __attribute__((always_inline))
 void pair_loop_le(const System *s, const NeighborList *nl, int i0, int i1,
-                  double *f, PairVirial *pv, const int le)
+                  double *f, unsigned char *touched, PairVirial *pv, const int le)
 {
+    const int n = s->n;
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *x = s->x, *v = s->v_pred;
@@ -164,28 +168,64 @@ void pair_loop_le(const System *s, const NeighborList *nl, int i0, int i1,
                 const double ft = F[0] + F[1] + F[2];
                 const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
                 fi[0] += fx; fi[1] += fy; fi[2] += fz;
+                force_claim(f, NULL, touched, j, n);
                 f[3 * j] -= fx; f[3 * j + 1] -= fy; f[3 * j + 2] -= fz;
                 if (pv) accumulate_virial(pv, s, i, j, d, r, F, fx, fy, fz);
             }
         }
+        force_claim(f, NULL, touched, i, n);
         f[3 * i] += fi[0]; f[3 * i + 1] += fi[1]; f[3 * i + 2] += fi[2];
     }
 }
 
-static void pair_loop_shear(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+static void pair_loop_shear(const System *s, const NeighborList *nl, int i0, int i1, double *f,
+                            unsigned char *touched, PairVirial *pv)
 {
-    pair_loop_le(s, nl, i0, i1, f, pv, 1);
+    pair_loop_le(s, nl, i0, i1, f, touched, pv, 1);
 }
 
-static void pair_loop_plain(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+static void pair_loop_plain(const System *s, const NeighborList *nl, int i0, int i1, double *f,
+                            unsigned char *touched, PairVirial *pv)
 {
-    pair_loop_le(s, nl, i0, i1, f, pv, 0);
+    pair_loop_le(s, nl, i0, i1, f, touched, pv, 0);
 }
 
-static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, double *f, PairVirial *pv)
+static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, double *f,
+                      unsigned char *touched, PairVirial *pv)
 {
-    if (MOD_SHEAR(&s->box)) pair_loop_shear(s, nl, i0, i1, f, pv);
-    else pair_loop_plain(s, nl, i0, i1, f, pv);
+    if (MOD_SHEAR(&s->box)) pair_loop_shear(s, nl, i0, i1, f, touched, pv);
+    else pair_loop_plain(s, nl, i0, i1, f, touched, pv);
+}
+
+unsigned char *forces_chunk_mask(ForceWork *w, int c)
+{
+    unsigned char *m = w->touched + (size_t)c * (size_t)w->nblk;
+    memset(m, 0, (size_t)w->nblk);
+    return m;
+}
+
+static void sum_block(const ForceWork *w, double *f0, const double *rest, int b)
+{
+    const size_t stride = 3 * (size_t)w->n, nb = (size_t)w->nblk;
+    const size_t k0 = 3 * ((size_t)b << FORCE_BLOCK_SHIFT);
+    const size_t k1 = k0 + (3u << FORCE_BLOCK_SHIFT) < stride ? k0 + (3u << FORCE_BLOCK_SHIFT) : stride;
+    const int own = w->touched[b];
+    for (size_t k = k0; k < k1; k++) {
+        double sum = own ? f0[k] : 0.0;
+        for (int c = 1; c < FORCE_CHUNKS; c++)
+            if (w->touched[(size_t)c * nb + (size_t)b]) sum += rest[(size_t)(c - 1) * stride + k];
+        f0[k] = sum;
+    }
+}
+
+void forces_sum_chunks(const ForceWork *w, double *f0, const double *rest, double *t0, const double *trest)
+{
+    /* contiguous blocks per thread, as the chunks and the integrator's loops */
+    #pragma omp parallel for schedule(static)
+    for (int b = 0; b < w->nblk; b++) {
+        sum_block(w, f0, rest, b);
+        if (t0) sum_block(w, t0, trest, b);
+    }
 }
 
 void forces_body(System *s)
@@ -238,7 +278,6 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         /* chunk 0 accumulates straight into f: one buffer less to clear and read */
         double *buf = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
-        memset(buf, 0, stride * sizeof(double));
         /* equal numbers of pairs per chunk, cut at particle boundaries */
         const size_t np = (size_t)nl->start[n];
         int i0 = 0, i1 = n;
@@ -253,14 +292,9 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
         }
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
-        pair_loop(s, nl, i0, i1, buf, cv);
+        pair_loop(s, nl, i0, i1, buf, forces_chunk_mask(w, c), cv);
     }
-    #pragma omp parallel for schedule(static)
-    for (size_t k = 0; k < stride; k++) {
-        double sum = s->f[k];                     /* fixed order: ((b0 + b1) + b2) + b3 */
-        for (int c = 1; c < FORCE_CHUNKS; c++) sum += w->buf[(size_t)(c - 1) * stride + k];
-        s->f[k] = sum;
-    }
+    forces_sum_chunks(w, s->f, w->buf, NULL, NULL);
     if (pv) forces_reduce_virial(pv, w);
     forces_body(s);
 }

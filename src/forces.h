@@ -25,12 +25,35 @@ typedef struct {
     double frozen_torque_random[DPD_MAX_TYPES][3]; /* the random part of the torque */
 } PairVirial;
 
+/* A chunk writes to its own particles, the next cell layer and the periodic
+ * wrap: most of its buffer is never written. Buffers are cleared on a block's
+ * first write and summed only over the blocks each chunk touched. */
+#define FORCE_BLOCK_SHIFT 8   /* 256 particles per block */
+
 typedef struct {
     double *buf;              /* (FORCE_CHUNKS - 1) x 3 n; chunk 0 sums into f */
     double *tbuf;             /* rotation scenes: (FORCE_CHUNKS - 1) x 3 n torques; chunk 0 sums into torque */
     PairVirial chunk[FORCE_CHUNKS];
-    int n, nbins;
+    unsigned char *touched;   /* FORCE_CHUNKS x nblk: block written by the chunk this step */
+    int n, nbins, nblk;
 } ForceWork;
+
+/* Before writing particle j of a chunk's buffer(s) f (and t, or NULL): clear
+ * its block if this is the block's first write of the step. */
+static inline void force_claim(double *f, double *t, unsigned char *touched, int j, int n)
+{
+    const int b = j >> FORCE_BLOCK_SHIFT;
+    if (touched[b]) return;
+    touched[b] = 1;
+    const int p0 = b << FORCE_BLOCK_SHIFT, p1 = p0 + (1 << FORCE_BLOCK_SHIFT) < n ? p0 + (1 << FORCE_BLOCK_SHIFT) : n;
+    for (int k = 3 * p0; k < 3 * p1; k++) f[k] = 0.0;
+    if (t) for (int k = 3 * p0; k < 3 * p1; k++) t[k] = 0.0;
+}
+/* The touched-block mask of chunk c, cleared for a new step. */
+unsigned char *forces_chunk_mask(ForceWork *w, int c);
+/* f0 = the sum of the chunks' buffers in chunk order (((b0 + b1) + b2) + b3,
+ * untouched blocks skipped: the same sums); the same for t0/trest if not NULL. */
+void forces_sum_chunks(const ForceWork *w, double *f0, const double *rest, double *t0, const double *trest);
 
 int  forces_init(ForceWork *w, int n, int nbins);
 void forces_free(ForceWork *w);

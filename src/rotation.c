@@ -151,8 +151,9 @@ static void accumulate(PairVirial *pv, const System *s, int i, int j, const doub
  * torques (bench/RESULTS.md, issue 6: 3-7 % faster than one pass per pair by
  * best of 5 on a noisy host, not resolved). pv != NULL also sums the virial by part. */
 static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
-                      double *restrict f, double *restrict tq, PairVirial *pv)
+                      double *restrict f, double *restrict tq, unsigned char *touched, PairVirial *pv)
 {
+    const int n = s->n;
     const Box *b = &s->box;
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *x = s->x, *v = s->v_pred, *w = s->omega_pred;
@@ -213,6 +214,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
             } else {
                 pair_force(p, g, g + 3, g[6], g[7], dv, wsum, noise[q][0], noise[q] + 1, inv_sqrt_dt, NULL, Ft, tau);
             }
+            force_claim(f, tq, touched, j, n);
             for (int a = 0; a < 3; a++) {
                 fi[a] += Ft[a];
                 f[3 * j + a] -= Ft[a];
@@ -221,6 +223,7 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
             }
           }
         }
+        force_claim(f, tq, touched, i, n);
         for (int a = 0; a < 3; a++) { f[3 * i + a] += fi[a]; tq[3 * i + a] += ti_[a]; }
     }
 }
@@ -250,23 +253,12 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         double *fb = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
         double *tb = c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride;
-        memset(fb, 0, stride * sizeof(double));
-        memset(tb, 0, stride * sizeof(double));
         const int i0 = chunk_start(nl, n, c), i1 = c == FORCE_CHUNKS - 1 ? n : chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
-        pair_loop(s, nl, i0, i1, fb, tb, cv);
+        pair_loop(s, nl, i0, i1, fb, tb, forces_chunk_mask(w, c), cv);
     }
-    #pragma omp parallel for schedule(static)
-    for (size_t k = 0; k < stride; k++) {
-        double sf = s->f[k], st = s->torque[k];   /* fixed order: ((b0 + b1) + b2) + b3 */
-        for (int c = 1; c < FORCE_CHUNKS; c++) {
-            sf += w->buf[(size_t)(c - 1) * stride + k];
-            st += w->tbuf[(size_t)(c - 1) * stride + k];
-        }
-        s->f[k] = sf;
-        s->torque[k] = st;
-    }
+    forces_sum_chunks(w, s->f, w->buf, s->torque, w->tbuf);
     if (pv) forces_reduce_virial(pv, w);
 }
 
