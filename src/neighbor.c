@@ -206,9 +206,26 @@ static inline int keep_pair(const System *s, int filter, int i, int j)
     return s->pair[ti][tj].active && !(s->types[ti].frozen && s->types[tj].frozen);
 }
 
-/* Neighbours of the particles [i0, i1) appended to *buf; counts in start[i+1]. */
+/* Neighbours of the particles [i0, i1) appended to *buf; counts in start[i+1].
+ * The buffer, its capacity and length are kept in locals and written back at
+ * the end: the chunks' entries share cache lines, and writing them for every
+ * particle made the two threads fight over those lines (the build ran 1.2-1.6x
+ * slower per thread on 2 threads than on 1). */
+static int build_range_local(const NeighborList *nl, const System *s, int i0, int i1, int filter,
+                             int **buf, size_t *cap, size_t *len);
+
 static int build_range(const NeighborList *nl, const System *s, int i0, int i1, int filter,
-                       int **buf, size_t *cap, size_t *len)
+                       int **buf_out, size_t *cap_out, size_t *len_out)
+{
+    int *buf = *buf_out;
+    size_t cap = *cap_out, len = *len_out;
+    const int rc = build_range_local(nl, s, i0, i1, filter, &buf, &cap, &len);
+    *buf_out = buf; *cap_out = cap; *len_out = len;
+    return rc;
+}
+
+static int build_range_local(const NeighborList *nl, const System *s, int i0, int i1, int filter,
+                             int **buf, size_t *cap, size_t *len)
 {
     const double cut2 = nl->cutoff * nl->cutoff;
     const double *x = s->x;
