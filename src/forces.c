@@ -15,7 +15,8 @@ int forces_init(ForceWork *w, int n, int nbins)
     w->nbins = nbins;
     w->buf = malloc((size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1);
     w->nblk = (n >> FORCE_BLOCK_SHIFT) + 1;
-    w->touched = calloc((size_t)FORCE_CHUNKS * (size_t)w->nblk, 1);
+    w->mask_stride = (w->nblk + 63) / 64 * 64;   /* each chunk's mask on its own cache lines */
+    w->touched = calloc((size_t)FORCE_CHUNKS * w->mask_stride, 1);
     if (!w->buf || !w->touched) { forces_free(w); return -1; }
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         w->chunk[c].nbins = nbins;
@@ -199,14 +200,14 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, d
 
 unsigned char *forces_chunk_mask(ForceWork *w, int c)
 {
-    unsigned char *m = w->touched + (size_t)c * (size_t)w->nblk;
+    unsigned char *m = w->touched + (size_t)c * w->mask_stride;
     memset(m, 0, (size_t)w->nblk);
     return m;
 }
 
 static void sum_block(const ForceWork *w, double *f0, const double *rest, int b)
 {
-    const size_t stride = 3 * (size_t)w->n, nb = (size_t)w->nblk;
+    const size_t stride = 3 * (size_t)w->n, nb = w->mask_stride;
     const size_t k0 = 3 * ((size_t)b << FORCE_BLOCK_SHIFT);
     const size_t k1 = k0 + (3u << FORCE_BLOCK_SHIFT) < stride ? k0 + (3u << FORCE_BLOCK_SHIFT) : stride;
     const int own = w->touched[b];

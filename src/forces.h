@@ -34,7 +34,8 @@ typedef struct {
     double *buf;              /* (FORCE_CHUNKS - 1) x 3 n; chunk 0 sums into f */
     double *tbuf;             /* rotation scenes: (FORCE_CHUNKS - 1) x 3 n torques; chunk 0 sums into torque */
     PairVirial chunk[FORCE_CHUNKS];
-    unsigned char *touched;   /* FORCE_CHUNKS x nblk: block written by the chunk this step */
+    unsigned char *touched;   /* FORCE_CHUNKS x mask_stride: block written by the chunk this step */
+    size_t mask_stride;       /* nblk rounded up to a cache line */
     int n, nbins, nblk;
 } ForceWork;
 

@@ -74,11 +74,21 @@ void neighbor_free(NeighborList *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-/* Sort the particles by cell (counting sort), keeping the order within a cell.
- * Each thread counts the cells of a contiguous range of particles; the counts
- * scanned in (cell, thread) order put thread 0's particles of a cell before
- * thread 1's, which is the serial order: the permutation does not depend on
- * the thread count. */
+/* Sort the particles by cell (counting sort), keeping the order within a cell:
+ * the permutation does not depend on the thread count. Each thread counts the
+ * cells of a contiguous range of particles; then each thread places the
+ * particles of a contiguous range of cells (about n / threads particles),
+ * scanning all particles in order, so that no two threads write next to each
+ * other in perm (placing by particle range interleaved the threads' writes
+ * within every cell: false sharing). */
+/* The first cell whose particles start at or after sorted position k. */
+static int first_cell_at(const NeighborList *nl, int ncell, int k)
+{
+    int lo = 0, hi = ncell;
+    while (lo < hi) { const int mid = (lo + hi) / 2; if (nl->cell_start[mid] < k) lo = mid + 1; else hi = mid; }
+    return lo;
+}
+
 static int sort_by_cell(NeighborList *nl, System *s)
 {
     const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2], n = s->n;
@@ -110,16 +120,19 @@ static int sort_by_cell(NeighborList *nl, System *s)
             int run = 0;
             for (int c = 0; c < ncell; c++) {
                 nl->cell_start[c] = run;
-                for (int t = 0; t < nth; t++) {
-                    int *tc = nl->tcount + (size_t)t * (size_t)ncell + c;
-                    const int k = *tc;
-                    *tc = run;
-                    run += k;
-                }
+                for (int t = 0; t < nth; t++) run += nl->tcount[(size_t)t * (size_t)ncell + c];
             }
             nl->cell_start[ncell] = run;
+            /* thread 0's counts become the cursors */
+            memcpy(nl->tcount, nl->cell_start, (size_t)ncell * sizeof(int));
         }   /* implicit barrier */
-        for (int i = i0; i < i1; i++) nl->perm[cnt[nl->cell_of[i]]++] = i;
+        int *cur = nl->tcount;
+        const int c0 = first_cell_at(nl, ncell, (int)((long long)n * tid / nth));
+        const int c1 = tid == nth - 1 ? ncell : first_cell_at(nl, ncell, (int)((long long)n * (tid + 1) / nth));
+        for (int i = 0; i < n; i++) {
+            const int c = nl->cell_of[i];
+            if (c >= c0 && c < c1) nl->perm[cur[c]++] = i;
+        }
     }
     system_permute(s, nl->perm, nl->scratch);
     return 0;
