@@ -219,43 +219,34 @@ static inline int keep_pair(const System *s, int filter, int i, int j)
     return s->pair[ti][tj].active && !(s->types[ti].frozen && s->types[tj].frozen);
 }
 
-/* Neighbours of the particles [i0, i1) appended to *buf; counts in start[i+1].
- * The buffer, its capacity and length are kept in locals and written back at
- * the end: the chunks' entries share cache lines, and writing them for every
- * particle made the two threads fight over those lines (the build ran 1.2-1.6x
- * slower per thread on 2 threads than on 1). */
-static int build_range_local(const NeighborList *nl, const System *s, int i0, int i1, int filter,
-                             int **buf, size_t *cap, size_t *len);
-
+/* Neighbours of the particles [i0, i1) appended to the chunk's buffer *buf_out
+ * (capacity *cap_out, length *len_out); counts in start[i+1]. The buffer, its
+ * capacity and length are kept in locals and written back at the end: the
+ * chunks' entries share cache lines, and writing them for every particle made
+ * the two threads fight over those lines (the build ran 1.2-1.6x slower per
+ * thread on 2 threads than on 1). */
 static int build_range(const NeighborList *nl, const System *s, int i0, int i1, int filter,
                        int **buf_out, size_t *cap_out, size_t *len_out)
 {
     int *buf = *buf_out;
     size_t cap = *cap_out, len = *len_out;
-    const int rc = build_range_local(nl, s, i0, i1, filter, &buf, &cap, &len);
-    *buf_out = buf; *cap_out = cap; *len_out = len;
-    return rc;
-}
-
-static int build_range_local(const NeighborList *nl, const System *s, int i0, int i1, int filter,
-                             int **buf, size_t *cap, size_t *len)
-{
+    int rc = 0;
     const double cut2 = nl->cutoff * nl->cutoff;
     const double *x = s->x;
     Segment seg[MAX_SEGMENTS];
     int cur_cell = -1, m = 0;
     size_t span = 0;   /* particles in the current cell's stencil: room one i can need */
     for (int i = i0; i < i1; i++) {
-        size_t before = *len;
+        size_t before = len;
         if (nl->brute_force) {
-            if (ensure_capacity(buf, cap, *len + (size_t)(s->n - i) + 64)) return -1;
+            if (ensure_capacity(&buf, &cap, len + (size_t)(s->n - i) + 64)) { rc = -1; break; }
             for (int j = i + 1; j < s->n; j++) {
                 if (!keep_pair(s, filter, i, j)) continue;
                 double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
                 box_min_image(&s->box, d, NULL);
-                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2) (*buf)[(*len)++] = j;
+                if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut2) buf[len++] = j;
             }
-            nl->start[i + 1] = (int)(*len - before);
+            nl->start[i + 1] = (int)(len - before);
             continue;
         }
         const int c = nl->cell_of[i];
@@ -266,30 +257,28 @@ static int build_range_local(const NeighborList *nl, const System *s, int i0, in
             for (int k = 0; k < m; k++) span += (size_t)(seg[k].j1 - seg[k].j0);
         }
         /* the branch-free append writes one slot past the last kept pair */
-        if (ensure_capacity(buf, cap, *len + span + 1)) return -1;
+        if (ensure_capacity(&buf, &cap, len + span + 1)) { rc = -1; break; }
         const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
-        int *out = *buf;
-        size_t L = *len;
         for (int k = 0; k < m; k++) {
             const double sx = xi - seg[k].shift[0], sy = yi - seg[k].shift[1], sz = zi - seg[k].shift[2];
             /* segment 0 is the own row from cell c: partners after i only */
             for (int j = k == 0 ? i + 1 : seg[k].j0; j < seg[k].j1; j++) {
                 const double dx = sx - x[3 * j], dy = sy - x[3 * j + 1], dz = sz - x[3 * j + 2];
                 /* branch-free append: the test result advances the write index */
-                out[L] = j;
-                L += (dx * dx + dy * dy + dz * dz < cut2);
+                buf[len] = j;
+                len += (dx * dx + dy * dy + dz * dz < cut2);
             }
         }
         if (filter) {   /* drop frozen-frozen and non-interacting pairs */
             size_t w = before;
-            for (size_t q = before; q < L; q++)
-                if (keep_pair(s, 1, i, out[q])) out[w++] = out[q];
-            L = w;
+            for (size_t q = before; q < len; q++)
+                if (keep_pair(s, 1, i, buf[q])) buf[w++] = buf[q];
+            len = w;
         }
-        *len = L;
-        nl->start[i + 1] = (int)(L - before);
+        nl->start[i + 1] = (int)(len - before);
     }
-    return 0;
+    *buf_out = buf; *cap_out = cap; *len_out = len;
+    return rc;
 }
 
 /* Particles per build chunk on more than one thread: small enough that a
