@@ -28,23 +28,12 @@ bench_run() {  # L threads DIR: the standard system of side L, timed
 val() { awk -F'\t' -v q="$2" '$1==q{print $2}' "$1/summary.tsv"; }   # DIR QUANTITY
 max() { awk -v a="$1" -v b="$2" 'BEGIN{print (b > a) ? b : a}'; }
 
-ours() {  # L threads -> "rate bytes_per_particle production_temperature cpu_rate"
-    local L=$1 T=$2 best=0 cbest=0 d="$out/dpd-$1-$2"
-    for k in $(seq "$REPEAT"); do
-        bench_run "$L" "$T" "$d"
-        best=$(max "$best" "$(val "$d" production_particle_steps_per_second)")
-        cbest=$(max "$cbest" "$(val "$d" production_particle_steps_per_second_cpu)")
-    done
-    echo "$best $(val "$d" peak_memory_bytes_per_particle) $(val "$d" temperature) $cbest"
+peer_once() {  # L threads -> rate of one LAMMPS run
+    EQ=$(eq_for "$1") bench/peer/run-lammps.sh "$1" $(steps_for "$1") "$2" | cut -f4
 }
-peer() {  # L threads -> rate
-    local L=$1 T=$2 best=0 r
-    for k in $(seq "$REPEAT"); do
-        r=$(EQ=$(eq_for "$L") bench/peer/run-lammps.sh "$L" $(steps_for "$L") "$T" | cut -f4)
-        best=$(max "$best" "$r")
-    done
-    echo "$best"
-}
+# median of the numbers on stdin (one per line)
+median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+range() { sort -g | awk 'NR == 1 { lo = $1 } { hi = $1 } END { printf "%.2f-%.2f", lo, hi }'; }
 
 # The machine's own ceiling for 2 threads: two independent one-thread runs at
 # once (no shared data, no barriers), aggregate rate over the rate of one run
@@ -64,22 +53,47 @@ pair_of_runs() {  # L -> best aggregate rate of two concurrent one-thread runs
 if [ "${STANDARD:-1}" = 1 ]; then
 if [ "${PEER:-0}" = 1 ]; then bash bench/peer/build-lammps.sh >/dev/null; fi
 printf '%-10s %-8s %14s %14s %12s %10s %8s %16s\n' particles threads "dpd [ps/s]" "lammps [ps/s]" "dpd/lammps" "B/particle" "T" "dpd [ps/cpu-s]"
-declare -A rate crate
+# The host's speed drifts by tens of per cent within minutes, so the 1 -> 2
+# thread speed-up is taken from alternating pairs (a 1-thread run, then a
+# 2-thread run, and LAMMPS's pair right after with PEER=1): the median of the
+# REPEAT pairs' ratios. The table shows the best rate of each configuration.
+declare -A rate crate pairs ppairs
 for L in $SIZES; do
     n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
-    for T in 1 2; do
-        read -r r mem temp c < <(ours "$L" "$T")
-        rate[$L,$T]=$r; crate[$L,$T]=$c
+    declare -A prate=([1]=0 [2]=0) mem temp
+    rate[$L,1]=0; rate[$L,2]=0; crate[$L,1]=0; crate[$L,2]=0; pairs[$L]=""; ppairs[$L]=""
+    for k in $(seq "$REPEAT"); do
+        declare -A this=() pthis=()
+        for T in 1 2; do
+            d="$out/dpd-$L-$T"
+            bench_run "$L" "$T" "$d"
+            this[$T]=$(val "$d" production_particle_steps_per_second)
+            rate[$L,$T]=$(max "${rate[$L,$T]}" "${this[$T]}")
+            crate[$L,$T]=$(max "${crate[$L,$T]}" "$(val "$d" production_particle_steps_per_second_cpu)")
+            mem[$T]=$(val "$d" peak_memory_bytes_per_particle); temp[$T]=$(val "$d" temperature)
+        done
+        pairs[$L]+="$(awk -v a="${this[1]}" -v b="${this[2]}" 'BEGIN{print b/a}') "
         if [ "${PEER:-0}" = 1 ]; then
-            p=$(peer "$L" "$T"); ratio=$(awk -v a="$r" -v b="$p" 'BEGIN{printf "%.2f", a/b}')
+            for T in 1 2; do pthis[$T]=$(peer_once "$L" "$T"); prate[$T]=$(max "${prate[$T]}" "${pthis[$T]}"); done
+            ppairs[$L]+="$(awk -v a="${pthis[1]}" -v b="${pthis[2]}" 'BEGIN{print b/a}') "
+        fi
+    done
+    for T in 1 2; do
+        if [ "${PEER:-0}" = 1 ]; then
+            p=${prate[$T]}; ratio=$(awk -v a="${rate[$L,$T]}" -v b="$p" 'BEGIN{printf "%.2f", a/b}')
         else p="-"; ratio="-"; fi
-        printf '%-10s %-8s %14.4g %14s %12s %10.0f %8.3f %16.4g\n' "$n" "$T" "$r" "$p" "$ratio" "$mem" "$temp" "$c"
+        printf '%-10s %-8s %14.4g %14s %12s %10.0f %8.3f %16.4g\n' "$n" "$T" "${rate[$L,$T]}" "$p" "$ratio" "${mem[$T]}" "${temp[$T]}" "${crate[$L,$T]}"
     done
 done
 echo
 for L in $SIZES; do
-    awk -v L="$L" -v a="${rate[$L,1]}" -v b="${rate[$L,2]}" \
-        'BEGIN{printf "speed-up 1 -> 2 threads, %d particles: %.2f\n", 3*L*L*L+0.5, b/a}'
+    n=$(awk -v L="$L" 'BEGIN{printf "%d", 3*L*L*L + 0.5}')
+    line=$(printf 'speed-up 1 -> 2 threads, %d particles: %.2f (median of %d alternating pairs, %s)' "$n" \
+        "$(tr ' ' '\n' <<< "${pairs[$L]}" | grep . | median)" "$REPEAT" "$(tr ' ' '\n' <<< "${pairs[$L]}" | grep . | range)")
+    if [ "${PEER:-0}" = 1 ]; then
+        line+=$(printf '; LAMMPS %.2f (%s)' "$(tr ' ' '\n' <<< "${ppairs[$L]}" | grep . | median)" "$(tr ' ' '\n' <<< "${ppairs[$L]}" | grep . | range)")
+    fi
+    echo "$line"
 done
 # Idle OpenMP threads spin by default (libgomp); on a machine shared with other
 # jobs a spinning thread holds a core its partner needs, and 2-thread runs were
