@@ -478,8 +478,10 @@ static int write_msd(const Measure *m, const System *s, FILE *summary, const cha
     const long long no = m->msd_ndone;
     fprintf(f, "# %lld time origins; errors from %d groups of particles (%d particles)\n", no, G, m->msd_count);
     fprintf(f, "t\tmsd\tmsd_se\tD\tD_se\n");
-    double *y = malloc((size_t)G * sizeof(double)), *yl = malloc((size_t)G * sizeof(double));
-    if (!y || !yl) { free(y); free(yl); fclose(f); return -1; }
+    /* per group: msd at every lag in turn, then at T/2 (half) and T (late); nan without origins */
+    double *y = malloc((size_t)G * sizeof(double)), *half = malloc((size_t)G * sizeof(double)),
+           *late = malloc((size_t)G * sizeof(double));
+    if (!y || !half || !late) { free(y); free(half); free(late); fclose(f); return -1; }
     double mean = NAN, se = NAN;
     for (int l = 1; l < L && no > 0; l++) {
         const double t = (double)l * m->msd_every * s->dt;
@@ -487,25 +489,18 @@ static int write_msd(const Measure *m, const System *s, FILE *summary, const cha
         over_groups(m, y, &mean, &se);
         fprintf(f, "%.6g\t%.8g\t%.3g\t%.8g\t%.3g\n", t, mean, se, mean / (2 * dim * t), se / (2 * dim * t));
     }
-    /* D from the slope over the second half of the window */
     const int l1 = L - 1, l0 = (L - 1) / 2;
     const double T1 = l1 * m->msd_every * s->dt, T0 = l0 * m->msd_every * s->dt;
-    for (int g = 0; g < G; g++) {
-        yl[g] = no > 0 ? msd_group_mean(m, g, l0) : NAN;
-        y[g] = no > 0 ? msd_group_mean(m, g, l1) : NAN;
-    }
-    double D, Dse;
-    for (int g = 0; g < G; g++) y[g] = (y[g] - yl[g]) / (2 * dim * (T1 - T0));
-    over_groups(m, y, &D, &Dse);
-    row(summary, "D", D, Dse);
-    /* flatness of D(t) = msd / (2 d t): late over half-window, per group */
-    for (int g = 0; g < G; g++) {
-        const double late = no > 0 ? msd_group_mean(m, g, l1) : NAN;
-        y[g] = (late / T1) / (yl[g] / T0);
-    }
-    over_groups(m, y, &D, &Dse);
-    row(summary, "D_t_ratio_late_half", D, Dse);
-    free(y); free(yl);
+    for (int g = 0; g < G; g++) { half[g] = msd_group_mean(m, g, l0); late[g] = msd_group_mean(m, g, l1); }
+    /* D from the slope over the second half of the window */
+    for (int g = 0; g < G; g++) y[g] = (late[g] - half[g]) / (2 * dim * (T1 - T0));
+    over_groups(m, y, &mean, &se);
+    row(summary, "D", mean, se);
+    /* flatness of D(t) = msd / (2 d t): late over half-window */
+    for (int g = 0; g < G; g++) y[g] = (late[g] / T1) / (half[g] / T0);
+    over_groups(m, y, &mean, &se);
+    row(summary, "D_t_ratio_late_half", mean, se);
+    free(y); free(half); free(late);
     return fclose(f);
 }
 
