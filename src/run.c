@@ -432,6 +432,7 @@ int run_scene(const RunOptions *opt)
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
     stop_signal = 0;
+    double last_checkpoint = wall_now();
     for (long long k = (long long)s.step; k < total && status == 0; k++) {
         if (k == rc.equilibration) { st.prod_wall0 = wall_now(); if (st.prod_cpu0 >= 0) st.prod_cpu0 = cpu_now(); }
         if (walls_later && k == rc.equilibration) set_walls_moving(&s, (const double (*)[3])vwall, 1);
@@ -506,8 +507,12 @@ int run_scene(const RunOptions *opt)
         st.timers[T_OUTPUT] += t6 - t5;
         st.steps_done++;
         if (show) progress(k + 1, total, st.wall0, k + 1 == total);
-        if (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total)) {
+        /* a checkpoint holds every sampled series, so it grows with the run (hundreds of MB in long
+         * runs): the wall-clock floor keeps its rewriting a small share of the run */
+        if (stop_signal || (opt->checkpoint_every > 0 && (long long)s.step % opt->checkpoint_every == 0 && k + 1 < total
+                            && wall_now() - last_checkpoint >= opt->checkpoint_wall)) {
             if (save_checkpoint(opt, scene_hash, &s, &nl, &m, &cx, &st, rc.equilibration, &out)) { status = 4; break; }
+            last_checkpoint = wall_now();
             if (stop_signal) {
                 if (show) fputc('\n', stderr);
                 fprintf(stderr, "dpd: stopped by signal %d at step %llu; checkpoint written, the run is incomplete "

@@ -11,6 +11,7 @@ typedef struct {
     const char *command_line;
     int quiet;
     long long checkpoint_every;   /* > 0: write DIR/checkpoint.dpd every this many steps */
+    double checkpoint_wall;       /* ... but not sooner than this many wall seconds after the last one */
     int resume;                   /* continue from DIR/checkpoint.dpd if there is one */
 } RunOptions;
 

@@ -9,7 +9,10 @@ mkdir -p "$OUT/runs"
 # Resumable (tools/run-experiment keeps $OUT across attempts while nothing
 # changed): a simulation already complete with the same arguments is not
 # rerun; an interrupted one continues from its checkpoint, written every
-# DPD_CHECKPOINT_EVERY steps (default 5000; the result is bit-identical).
+# DPD_CHECKPOINT_EVERY steps (default 5000) but not sooner than
+# DPD_CHECKPOINT_WALL seconds (default 60) after the last one: a checkpoint
+# holds every sampled series and reaches hundreds of MB in long runs (the
+# result is bit-identical either way).
 dpd_run() {
     local name=$1 scene=$2; shift 2
     local dir=$OUT/runs/$name args
@@ -23,7 +26,8 @@ dpd_run() {
         rm -rf "$dir"; mkdir -p "$dir"
         printf '%s\n' "$args" > "$dir/.args"
     fi
-    "$DPD" run "$scene" --out "$dir" --quiet --checkpoint-every "${DPD_CHECKPOINT_EVERY:-5000}" --resume "$@"
+    "$DPD" run "$scene" --out "$dir" --quiet --checkpoint-every "${DPD_CHECKPOINT_EVERY:-5000}" \
+        --checkpoint-wall "${DPD_CHECKPOINT_WALL:-60}" --resume "$@"
 }
 
 # get NAME QUANTITY -> "value<TAB>stderr" from a run's summary.
