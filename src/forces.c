@@ -198,6 +198,15 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, d
     else pair_loop_plain(s, nl, i0, i1, f, touched, pv);
 }
 
+int forces_chunk_start(const NeighborList *nl, int n, int c)
+{
+    if (c >= FORCE_CHUNKS) return n;
+    const size_t want = (size_t)nl->start[n] * (size_t)c / FORCE_CHUNKS;
+    int lo = 0, hi = n;
+    while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want) lo = mid + 1; else hi = mid; }
+    return lo;
+}
+
 unsigned char *forces_chunk_mask(ForceWork *w, int c)
 {
     unsigned char *m = w->touched + (size_t)c * w->mask_stride;
@@ -279,18 +288,7 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         /* chunk 0 accumulates straight into f: one buffer less to clear and read */
         double *buf = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
-        /* equal numbers of pairs per chunk, cut at particle boundaries */
-        const size_t np = (size_t)nl->start[n];
-        int i0 = 0, i1 = n;
-        {
-            size_t want0 = np * (size_t)c / FORCE_CHUNKS, want1 = np * (size_t)(c + 1) / FORCE_CHUNKS;
-            int lo = 0, hi = n;
-            while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want0) lo = mid + 1; else hi = mid; }
-            i0 = lo;
-            lo = 0; hi = n;
-            while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want1) lo = mid + 1; else hi = mid; }
-            i1 = (c == FORCE_CHUNKS - 1) ? n : lo;
-        }
+        const int i0 = forces_chunk_start(nl, n, c), i1 = forces_chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
         pair_loop(s, nl, i0, i1, buf, forces_chunk_mask(w, c), cv);

@@ -50,6 +50,9 @@ static inline void force_claim(double *f, double *t, unsigned char *touched, int
     for (int k = 3 * p0; k < 3 * p1; k++) f[k] = 0.0;
     if (t) for (int k = 3 * p0; k < 3 * p1; k++) t[k] = 0.0;
 }
+/* first particle of chunk c (n for c = FORCE_CHUNKS): equal numbers of
+ * neighbour-list entries per chunk, cut at particle boundaries */
+int forces_chunk_start(const NeighborList *nl, int n, int c);
 /* The touched-block mask of chunk c, cleared for a new step. */
 unsigned char *forces_chunk_mask(ForceWork *w, int c);
 /* f0 = the sum of the chunks' buffers in chunk order (((b0 + b1) + b2) + b3,

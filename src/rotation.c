@@ -228,16 +228,6 @@ static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1,
     }
 }
 
-/* first particle of chunk c: equal numbers of list entries per chunk */
-static int chunk_start(const NeighborList *nl, int n, int c)
-{
-    if (c >= FORCE_CHUNKS) return n;
-    const size_t want = (size_t)nl->start[n] * (size_t)c / FORCE_CHUNKS;
-    int lo = 0, hi = n;
-    while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want) lo = mid + 1; else hi = mid; }
-    return lo;
-}
-
 void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
     const int n = s->n;
@@ -253,7 +243,7 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
     for (int c = 0; c < FORCE_CHUNKS; c++) {
         double *fb = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
         double *tb = c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride;
-        const int i0 = chunk_start(nl, n, c), i1 = c == FORCE_CHUNKS - 1 ? n : chunk_start(nl, n, c + 1);
+        const int i0 = forces_chunk_start(nl, n, c), i1 = forces_chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
         pair_loop(s, nl, i0, i1, fb, tb, forces_chunk_mask(w, c), cv);
