@@ -140,6 +140,15 @@ if [ "${ROTATION:-1}" = 1 ]; then
     echo
     echo "rotating particles (Pan 2008 fluid, 3000 particles, 1 thread, particle-steps per CPU second):"
     awk -v a="$with" -v b="$without" 'BEGIN{printf "  with shear + rotational terms %.4g, without %.4g: cost ratio %.2f (target < 2)\n", a, b, b/a}'
+    # machine-readable copy for paper.md ({{bench:rotation.tsv:ROW:value}}), with its date and commit
+    {
+        printf 'measure\tvalue\tnote\n'
+        printf 'particle-steps per CPU second, rotation\t%.4g\tbench/pan-fluid.cfg, 3000 particles, 1 thread, best of %d\n' "$with" "$REPEAT"
+        printf 'particle-steps per CPU second, standard\t%.4g\tthe same with rotation = false, gamma_shear = 0\n' "$without"
+        printf 'cost ratio, rotation / standard\t%s\ttarget < 2 (issue 6)\n' "$(awk -v a="$with" -v b="$without" 'BEGIN{printf "%.2f", b/a}')"
+        printf 'date, commit\t%s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
+    } > "$out/rotation.tsv"
+    cp "$out/rotation.tsv" bench/rotation.tsv
 fi
 
 # ---- overdamped solvers (issue 3): the Fig. 2 system of Phan-Thien et al. 2016 at the paper

@@ -109,6 +109,8 @@ printf 'phi\teta_r\n0.0119\t1.0273\n0.4940\t5.1700\n' > "$root/data/t.tsv"
 printf 'row\tours\tverdict@\n1\t30.9 +- 0.3\teta\n2\t3.71\tratio\n3\t7\tunbanded\n' > "$root/results/x/y/paper/rows.tsv"
 printf '# eta(k) per shell; comment line skipped\nk\tn2\teta\teta_se\n0.418879\t1\t37.616704\t6.8\n0.592384\t2\t33.149762\t1.49\n' > "$root/results/x/y/paper/cells.tsv"
 printf 'k\teta\n0.7\t26.901334\n' > "$root/results/x/incomplete/quick/cells.tsv"
+mkdir -p "$root/bench"
+printf 'measure\tvalue\tnote\ncost ratio\t1.81\tfixture\ndate, commit\t2026-01-01\tabc1234\n' > "$root/bench/rot.tsv"
 cat > "$root/paper.md" <<'EOF2'
 ---
 title: Fixture paper
@@ -135,6 +137,10 @@ Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}
 Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
 
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
+
+Calc: {{calc:%.1f:[x/y:eta]/[x/y:eta:se]}}; {{calc:%.3g:[tsv:data/t.tsv:0.4940:eta_r]*2}}; {{calc:%.2f:[x/y@quick:eta]-29}}; {{calc:%.0f:sqrt(16)+(2^3)}}.
+
+Bench: {{bench:rot.tsv:cost ratio:value}}; {{bench:none.tsv:cost ratio:value}}; {{bench:rot.tsv:no such row:value}}.
 
 <!-- table: x/y/rows.tsv -->
 
@@ -219,6 +225,14 @@ if [ -f "$G" ]; then
     in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
     in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
     in_file "mkpaper: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
+    # 30.9 / 0.3 = 103; 2 x 5.17; quick 29.317 - 29; sqrt(16) + 2^3
+    in_file "mkpaper: calc of a value and its stderr" "$G" '^Calc: 103.0; '
+    in_file "mkpaper: calc of a tsv cell" "$G" '; 10.3; '
+    in_file "mkpaper: calc from a pinned quick tier, marked" "$G" '; 0.32 (quick tier); '
+    in_file "mkpaper: calc with sqrt and powers" "$G" '; 12\.$'
+    in_file "mkpaper: bench cell with its date and commit" "$G" '^Bench: 1.81 (`make bench` 2026-01-01, abc1234); '
+    in_file "mkpaper: bench file absent: not measured" "$G" '; not measured (run `make bench`); '
+    in_file "mkpaper: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
@@ -265,7 +279,8 @@ printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
     'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
-    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' > "$root/bad.md"
+    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' \
+    'm {{calc:%.1f:[x/y:nonesuch]}} n {{calc:%.1f:system(1)}} o {{calc:%s:1}} p {{calc:%.1f:1/0}} q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
 T "mkpaper: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
 has "mkpaper: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
 has "mkpaper: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
@@ -279,7 +294,12 @@ has "mkpaper: names a derived value with a missing operand" '{{pct:x/y:eta/nones
 has "mkpaper: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
 has "mkpaper: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
 has "mkpaper: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
-has "mkpaper: counts every failed placeholder" '12 placeholder(s) could not be filled'
+has "mkpaper: calc names a missing operand" '{{calc:%.1f:\[x/y:nonesuch\]}}: operand \[x/y:nonesuch\]: no such quantity'
+has "mkpaper: calc refuses anything but arithmetic" '{{calc:%.1f:system(1)}}: expression holds something other'
+has "mkpaper: calc refuses a non-numeric format" '{{calc:%s:1}}: expected calc:FMT:EXPR'
+has "mkpaper: calc refuses a non-finite result" '{{calc:%.1f:1/0}}: cannot evaluate'
+has "mkpaper: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
+has "mkpaper: counts every failed placeholder" '17 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
