@@ -102,3 +102,26 @@ emit_drag_torque() {
             printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
     done
 }
+
+# couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016
+# fig03 (walls bottom_inner/outer, top_inner/outer; run with
+# measure.profile.per_block=true) -> "rate rate_se tau tau_se eta eta_se".
+# rate: mean of the blocks' straight-line slopes of vx over the bulk bins (BULK
+# = LO:HI in y) and its standard error (the m = 0 velocities are solved for the
+# whole channel at once, so the bins of one profile are not independent);
+# tau: (F_x on the bottom wall - F_x on the top wall) / (2 LX), errors added
+# linearly (at m = 0 the fluid's net force vanishes: the walls' forces are
+# opposite step by step, and a wall's two layers move together; at m > 0 an
+# upper bound); eta = tau / rate.
+couette_viscosity() {
+    local name=$1 lx=$2 bulk=$3 g gse tau tause
+    read -r g gse < <(awk -F'\t' -v b="$bulk" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
+        $3>=r[1] && $3<=r[2] {k=$1; n[k]++; sx[k]+=$3; sy[k]+=$5; sxx[k]+=$3*$3; sxy[k]+=$3*$5}
+        END{for(k in n){s=(n[k]*sxy[k]-sx[k]*sy[k])/(n[k]*sxx[k]-sx[k]^2); m++; t+=s; tt+=s*s}
+            if(m<2){print "nan nan"; exit} mean=t/m; printf "%.10g %.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
+        "$OUT/runs/$name/profile_blocks.tsv")
+    read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get "$name" "force_on_${w}_x"; done |
+        awk -F'\t' -v lx="$lx" '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2} END{printf "%.10g %.4g\n", v/(2*lx), e/(2*lx)}')
+    awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \
+        'BEGIN{e=t/g; printf "%s %s %s %s %.10g %.4g\n", g, gs, t, ts, e, e*sqrt((ts/t)^2+(gs/g)^2)}'
+}

@@ -101,13 +101,9 @@ for solver in pcg scheme2_consistent; do
     for tol in ${OD_TOLS[$solver]}; do
         name=${solver}_$tol
         dpd_run $name $couette --set equilibration=$OD_EQ --set steps=$OD_STEPS --set measure.blocks=10 \
-            --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
+            --set measure.profile.per_block=true --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
         # viscosity from the wall shear stress over the bulk shear rate (as fig03)
-        "$DPD" fit-line "$OUT/runs/$name/profile.tsv" --x pos --y vx --se vx_se --range 2:10 > "$OUT/runs/$name/fit.tsv"
-        read -r g gse < <(awk -F'\t' '$1=="slope"{print $2, $3}' "$OUT/runs/$name/fit.tsv")
-        read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get $name force_on_${w}_x; done |
-            awk -F'\t' '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2^2} END{printf "%.10g %.4g\n", v/20, sqrt(e)/20}')
-        read -r eta etase < <(awk -v t=$tau -v ts=$tause -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g %.4g\n", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+        read -r _ _ _ _ eta etase < <(couette_viscosity $name 10 2:10)
         emit eta_${name} $eta $etase
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $solver $tol $eta $etase \
             "$(awk -v e=$eta -v es=$etase -v r=$eta_ref -v rs=$eta_ref_se 'BEGIN{printf "%.6g\t%.4g", (e-r)/r, sqrt(es^2 + (e/r*rs)^2)/r}')" \

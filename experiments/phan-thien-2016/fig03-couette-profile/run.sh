@@ -7,29 +7,28 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 U=10 LX=10 YLO=1 YHI=11 BULK=2:10      # walls at -U (bottom) and +U; fluid in [YLO, YHI]; bulk 1 rc from each wall
 case $TIER in
-    quick) declare -A len=([pcg]="--set equilibration=100 --set steps=1000" [scheme2_paper]="--set equilibration=100 --set steps=1000") ;;
-    paper) declare -A len=([pcg]="" [scheme2_paper]="--set steps=5000") ;;
+    quick) declare -A len=([pcg]="--set equilibration=100 --set steps=1000" [scheme2_paper]="--set equilibration=100 --set steps=1000"
+                           [le]="--set equilibration=300 --set steps=3000") ;;
+    paper) declare -A len=([pcg]="" [scheme2_paper]="--set steps=5000" [le]="--set equilibration=1000 --set steps=12000") ;;
 esac
 for solver in pcg scheme2_paper; do
     sfx=; [ $solver = pcg ] || sfx=_scheme2
     # shellcheck disable=SC2086
-    dpd_run $solver couette.cfg ${len[$solver]} --set "overdamped.solver=\"$solver\""
+    dpd_run $solver couette.cfg ${len[$solver]} --set "overdamped.solver=\"$solver\"" --set measure.profile.per_block=true
     p=$OUT/runs/$solver/profile.tsv
     cp "$p" "$OUT/profile$sfx.tsv"
     "$DPD" fit-line "$p" --x pos --y vx --se vx_se --range $BULK > "$OUT/runs/$solver/fit.tsv"
     fit() { awk -F'\t' -v q="$1" '$1==q{print $2 "\t" $3}' "$OUT/runs/$solver/fit.tsv"; }
-    read -r g gse < <(fit slope)
+    # shear rate from the blocks' slopes, wall stress from both walls (errors: tools/lib/exp.sh)
+    read -r g gse tau tause eta etase < <(couette_viscosity $solver $LX $BULK)
     emit "shear_rate$sfx" "$g" "$gse"
     emit "r2_bulk$sfx" "$(fit r2 | cut -f1)" 0
     emit "velocity_centre$sfx" $(fit value_at_centre)
     # mean slip of the two walls: U - (v(YHI) - v(YLO)) / 2 = U - slope (YHI - YLO) / 2
     emit "wall_slip$sfx" "$(awk -v u=$U -v g=$g -v h=$((YHI - YLO)) 'BEGIN{printf "%.10g", u - g*h/2}')" \
          "$(awk -v s=$gse -v h=$((YHI - YLO)) 'BEGIN{printf "%.4g", s*h/2}')"
-    # wall shear stress: x force of the fluid on the bottom wall minus that on the top, over 2 Lx
-    read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get $solver force_on_${w}_x; done |
-        awk -F'\t' -v lx=$LX '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2^2} END{printf "%.10g\t%.4g\n", v/(2*lx), sqrt(e)/(2*lx)}')
     emit "wall_stress$sfx" "$tau" "$tause"
-    emit "eta$sfx" $(awk -v t=$tau -v ts=$tause -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g\t%.4g", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+    emit "eta$sfx" "$eta" "$etase"
     # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)
     read -r sb sbse < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
         $1>=r[1] && $1<=r[2] && $13!="nan" {s+=$12; e+=$13; n++} END{printf "%.10g\t%.4g\n", s/n, e/n}' "$p")
@@ -45,3 +44,18 @@ done
 # the published Scheme 2 against the solution of A v = f: does time averaging hide its error?
 emit shear_rate_scheme2_minus_pcg $(awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
     END{printf "%.10g\t%.4g", b-a, sqrt(as^2+bs^2)}' "$OUT/summary.tsv")
+# Cross-check without walls: Lees-Edwards shear of the same fluid (fig07's shear.cfg, 10 x 10, dt and
+# rate as here) at the channel's bulk density, which exceeds the nominal 4 because the fluid is
+# depleted next to the walls; the wall viscosity must equal it (at the nominal density it is lower:
+# eta grows roughly as the density squared). Bulk density error: bins taken as independent.
+read -r rho rhose < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
+    $1>=r[1] && $1<=r[2] {s+=$2; e+=$3^2; n++} END{printf "%.6f\t%.4g\n", s/n, sqrt(e)/n}' "$OUT/profile.tsv")
+emit density_bulk "$rho" "$rhose"
+read -r g _ < <(awk -F'\t' '$1=="shear_rate"{print $2 "\t" $3}' "$OUT/summary.tsv")
+# shellcheck disable=SC2086
+dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg" ${len[le]} \
+    --set "types.[0].density=$rho" --set "shear_rate=$g" --set dt=0.01 --set seed=2017
+emit_from le viscosity eta_lees_edwards_bulk_density
+# the LE density is held at the measured mean: its error enters through d eta / d rho ~ 2 eta / rho
+emit eta_wall_minus_lees_edwards $(awk -F'\t' -v r=$rho -v rs=$rhose -v le="$(get le viscosity)" '
+    $1=="eta"{a=$2; as=$3} END{split(le, L, "\t"); printf "%.10g\t%.4g", a-L[1], sqrt(as^2+L[2]^2+(2*L[1]/r*rs)^2)}' "$OUT/summary.tsv")

@@ -12,27 +12,24 @@ case $TIER in
 esac
 od=../fig03-couette-profile/couette.cfg
 nsteps() { awk -v t=$1 -v dt=$2 'BEGIN{printf "%d", t/dt + 0.5}'; }
-# analyse NAME PREFIX: shear rate (bulk fit), viscosity from the wall force, bulk density deviation
+# analyse NAME PREFIX: shear rate (blocks' bulk slopes), viscosity from the wall force, bulk density deviation
 analyse() {
-    local p=$OUT/runs/$1/profile.tsv g gse tau tause
-    "$DPD" fit-line "$p" --x pos --y vx --se vx_se --range 2:10 > "$OUT/runs/$1/fit.tsv"
-    read -r g gse < <(awk -F'\t' '$1=="slope"{print $2 "\t" $3}' "$OUT/runs/$1/fit.tsv")
+    local p=$OUT/runs/$1/profile.tsv g gse tau tause eta etase
+    read -r g gse tau tause eta etase < <(couette_viscosity $1 10 2:10)   # tools/lib/exp.sh
     emit "shear_rate_$2" "$g" "$gse"
-    read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get $1 force_on_${w}_x; done |
-        awk -F'\t' '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2^2} END{printf "%.10g\t%.4g\n", v/20, sqrt(e)/20}')
-    emit "eta_$2" $(awk -v t=$tau -v ts=$tause -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g\t%.4g", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
+    emit "eta_$2" "$eta" "$etase"
     emit "density_bulk_max_rel_dev_$2" $(awk -F'\t' '/^#/||$1=="pos"{next} $1>=2 && $1<=10 {n++; d[n]=$2; e[n]=$3; s+=$2}
         END{m=s/n; for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>b){b=x; be=e[k]/m}} printf "%.10g\t%.4g", b, be}' "$p")
     emit_from $1 temperature "temperature_$2"
 }
 # 1. m -> 0
-dpd_run m0 $od --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
+dpd_run m0 $od --set measure.profile.per_block=true --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
 analyse m0 m0
 printf 'm\tdt\tshear_rate\tshear_rate_se\ttemperature\n' > "$OUT/m-limit.tsv"
 for m in $masses; do
     dt=$(awk -v m=$m 'BEGIN{printf "%.6g", m/30}')
     every=$(awk -v dt=$dt 'BEGIN{e=int(0.05/dt+0.5); printf "%d", e<1?1:e}')
-    dpd_run m$m inertial.cfg --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
+    dpd_run m$m inertial.cfg --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$every $(for t in 0 1 2 3 4; do printf -- '--set types.[%d].mass=%s ' $t $m; done)
     analyse m$m m$m
     printf '%s\t%s\t%s\t%s\n' $m $dt "$(awk -F'\t' -v q=shear_rate_m$m '$1==q{print $2 "\t" $3}' "$OUT/summary.tsv")" \
@@ -44,7 +41,7 @@ emit shear_rate_m_smallest_minus_m0 $(awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x
 # 2. time step of the m = 0 run
 printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OUT/dt-scan.tsv"
 for dt in $dts; do
-    dpd_run dt$dt $od --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
+    dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
     analyse dt$dt dt$dt
 done
