@@ -8,9 +8,10 @@ case $TIER in
     quick) ROWS="3"; sph=(--set equilibration=2000 --set steps=10000); emp=(--set equilibration=2000 --set steps=4000) ;;
     paper) ROWS="1 2 3"; sph=(--set measure.blocks=50); emp=() ;;
 esac
-# Paper tier (reduced length, README): rows 1 and 2 500 time units, row 3 1100 (its torque ratio
-# resolved: torque noise variance x run length about 1.4 in torque^2 x time, stderr near 11 % of eq. 22)
-row_steps() { [ "$TIER" = paper ] && [ "$1" = 3 ] && echo 110000 || true; }
+# Paper tier (reduced length, README): rows 1, 2, 3 run 21000, 5300 and 1100 time units, the
+# lengths at which the torque's stderr is about 10 % of eq. 22 (torque noise variance x run length
+# about 1.4 in torque^2 x time, measured at 500 time units)
+row_steps() { [ "$TIER" = paper ] || return 0; case $1 in 1) echo 2100000;; 2) echo 530000;; 3) echo 110000;; esac; }
 row_g()     { case $1 in 1) echo 0.05;; 2) echo 0.10;; 3) echo 0.20;; esac; }
 paper_F()   { case $1 in 1) echo 4.4881;; 2) echo 9.689;; 3) echo 18.881;; esac; }
 paper_T()   { case $1 in 1) echo 0.0838;; 2) echo 0.163;; 3) echo 0.313;; esac; }
