@@ -13,6 +13,10 @@ results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment
 PLOT = mkdir -p figures/$(1) && cd experiments/$(1) && \
        gnuplot -e "res='$(CURDIR)/results/$(1)/$(TIER)'; out='$(CURDIR)/figures/$(1)'; tier='$(TIER)'" plot.gp
 
+# paper tier: results that reuse another experiment's simulations (reuse_run, tools/lib/exp.sh)
+results/mai-duy-2019/tab02-effective-viscosity/paper/summary.tsv \
+results/mai-duy-2019/fig04-relative-viscosity-a353/paper/summary.tsv: results/mai-duy-2019/tab01-wavelengths/paper/summary.tsv
+
 figures/%/.stamp-$(TIER): results/%/$(TIER)/summary.tsv experiments/%/plot.gp
 	@$(call PLOT,$*)
 	@touch $@
@@ -35,7 +39,9 @@ reproduce:
 	$(MAKE) check TIER=paper || true
 	$(MAKE) paper
 
-paper:
+# verify-results: every result must still be what its current inputs give (it fails on a stale one)
+paper: $(BIN)
+	@tools/verify-results
 	@$(MAKE) --no-print-directory plots TIER=paper
 	@set -o pipefail; $(MAKE) --no-print-directory plots TIER=reduced 2>&1 | { grep -v '^plots: no reduced results' || true; }
 	@tools/render-paper

@@ -198,10 +198,10 @@ if [ -f "$G" ]; then
     in_file "mkpaper: placeholders replaced" "$G" '^| experiment | verdict'
     if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
     in_file "mkpaper: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
-    in_file "mkpaper: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 |$'
+    in_file "mkpaper: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 | - |$'
     in_file "mkpaper: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
     in_file "mkpaper: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\]'
-    in_file "mkpaper: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 |$'
+    in_file "mkpaper: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 | - |$'
     in_file "mkpaper: summary not run" "$G" '^| `x/nores` | not run |'
     in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
@@ -235,6 +235,39 @@ if [ -f "$G" ]; then
     in_file "mkpaper: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
+    # every number of the summary table traced to the files: the CPU seconds to the tier's
+    # provenance.tsv, the pass count and the worst distance to the bands evaluated on its
+    # summary.tsv (lib/bands.awk); then every provenance CPU changed: every CPU cell follows
+    trace_summary() { # trace_summary GEN.md -> "rows bad" on stdout, a line per mismatch on stderr
+        ( . "$tools/lib/common.sh"
+          awk '/^\| experiment \| verdict/ { t = 1; next } t && !/^\|/ { exit } t && /^\| `/' "$1" |
+          while IFS='|' read -r _ id verdict tier worst cpu _; do
+            id=$(echo "$id" | tr -d ' `'); tier=$(echo "$tier" | tr -d ' *'); worst=$(echo "$worst" | tr -d ' ')
+            cpu=$(echo "$cpu" | tr -d ' '); verdict=$(echo "$verdict" | sed 's/^ *//; s/ *$//')
+            [ "$tier" = "-" ] && { echo "row"; continue; }
+            want_cpu=$(provenance "$id" "$tier" cpu_seconds)
+            read -r n p w < <(evaluate "$id" "$tier" | awk -F '\t' '{ n++; if ($9 == "PASS") p++
+                if ($10 == "inf" || $10 == "-") inf = 1; else if ($10 + 0 > m) m = $10 + 0 }
+                END { printf "%d %d %s\n", n, p, inf ? "inf" : sprintf("%.3g", m) }')
+            case $verdict in "[Re]") vp=$n ;; "[¬Re] (0/$n)") vp=0 ;; *"($p/$n)") vp=$p ;; *) vp=x ;; esac
+            echo "row"
+            [ "$cpu" = "$want_cpu" ] || echo "bad $id cpu $cpu vs provenance $want_cpu" >&2
+            [ "$worst" = "$w" ] || echo "bad $id worst $worst vs bands $w" >&2
+            [ "$vp" = "$p" ] || echo "bad $id verdict '$verdict' vs $p/$n passing" >&2
+          done ) 2>&1 | awk '/^row$/ { r++ } /^bad/ { b++; print > "/dev/stderr" } END { printf "%d %d\n", r, b + 0 }'
+    }
+    read -r nrows nbad < <(trace_summary "$G" 2> "$root/trace.err")
+    if [ "$nrows" -ge 8 ] && [ "$nbad" = 0 ]; then ok "mkpaper: every summary-table number traced to a result file ($nrows rows)"
+    else bad "mkpaper: summary-table numbers not traced ($nrows rows, $nbad mismatches)" "$root/trace.err"; fi
+    for p in "$root"/results/*/*/*/provenance.tsv; do cp "$p" "$p.keep"; sed -i 's/^cpu_seconds\t.*/cpu_seconds\t9876.5/' "$p"; done
+    "$M" -o "$root/traced.md" > /dev/null 2>&1
+    read -r nrows nbad < <(trace_summary "$root/traced.md" 2> "$root/trace.err")
+    awk '/^\| experiment \| verdict/ { t = 1; next } t && !/^\|/ { exit } t && /^\| `/' "$root/traced.md" > "$root/traced.rows"
+    ncpu=$(grep -c '| 9876.5 | [^|]* |$' "$root/traced.rows")
+    nrun=$(grep -vc '| - | - | - |$' "$root/traced.rows")
+    if [ "$nbad" = 0 ] && [ "$ncpu" = "$nrun" ] && [ "$ncpu" -gt 0 ]; then ok "mkpaper: changed provenance CPU shows in every row ($ncpu)"
+    else bad "mkpaper: CPU cells did not follow provenance ($ncpu of $nrun rows, $nbad mismatches)" "$root/trace.err"; fi
+    for p in "$root"/results/*/*/*/provenance.tsv; do mv "$p.keep" "$p"; done
     in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
     in_file "mkpaper: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
     in_file "mkpaper: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
@@ -368,6 +401,67 @@ echo 'x = 2;' > "$rx/experiments/t/e/s.cfg"
 T "run-experiment: stale partial result discarded" 0 RX "$rx/tools/run-experiment" t/e quick
 if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: changed experiment reruns everything"
 else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
+
+# ---------------------------------------------------------------- verify-result
+# The analysis redone from the kept runs (no simulation): fresh while nothing
+# changed; stale when a scene's content, a run's arguments, the analysis or the
+# stored table changed; unverifiable when run.sh simulates outside dpd_run.
+V() { env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$rx/tools/verify-result" t/e quick; }
+e="$rx/experiments/t/e"
+: > "$log"
+T "verify-result: unchanged result is fresh" 0 V
+has "verify-result: says fresh" '^fresh'
+if [ ! -s "$log" ]; then ok "verify-result: ran no simulation"; else bad "verify-result: simulated: $(tr '\n' ' ' < "$log")"; fi
+cp "$e/s.cfg" "$root/s.cfg.keep"; echo 'x = 3;' > "$e/s.cfg"
+T "verify-result: changed scene content is stale" 1 V
+has "verify-result: names the rerun" "would be rerun"
+cp "$root/s.cfg.keep" "$e/s.cfg"; cp "$e/run.sh" "$root/run.sh.keep"
+sed -i 's/--set x=2/--set x=5/' "$e/run.sh"
+T "verify-result: changed run arguments are stale" 1 V
+cp "$root/run.sh.keep" "$e/run.sh"; echo 'emit extra 1 0' >> "$e/run.sh"
+T "verify-result: changed analysis is stale" 1 V
+has "verify-result: names the summary" "another summary.tsv"
+cp "$root/run.sh.keep" "$e/run.sh"
+T "verify-result: restored inputs are fresh again" 0 V
+sed -i 's/^q_a\t1.5/q_a\t1.6/' "$rx/results/t/e/quick/summary.tsv"
+T "verify-result: an edited result is stale" 1 V
+sed -i 's/^q_a\t1.6/q_a\t1.5/' "$rx/results/t/e/quick/summary.tsv"
+echo '"$DPD" run s.cfg --out "$OUT/runs/direct"' >> "$e/run.sh"
+T "verify-result: simulations outside dpd_run are unverifiable" 3 V
+if [ ! -s "$log" ]; then ok "verify-result: the direct run was refused"; else bad "verify-result: simulated: $(tr '\n' ' ' < "$log")"; fi
+cp "$root/run.sh.keep" "$e/run.sh"
+T "verify-results: all fresh, exit 0" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
+in_file "verify-results: table row" "$root/fresh.tsv" '^t/e	quick	fresh'
+echo 'x = 4;' > "$e/s.cfg"
+T "verify-results: a stale result fails" 1 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
+has "verify-results: names it" 'STALE t/e \[quick\]'
+printf "<!-- summary-table -->\n" > "$root/fresh.in.md"
+T "mkpaper: summary shows the stale result" 0 env MKPAPER_FRESHNESS="$root/fresh.tsv" DPD_ROOT="$rx" "$rx/tools/mkpaper" -i "$root/fresh.in.md" -o "$root/fresh.md"
+in_file "mkpaper: inputs column STALE" "$root/fresh.md" '^| `t/e` | .* | \*\*STALE\*\* |$'
+cp "$root/s.cfg.keep" "$e/s.cfg"
+
+# reuse_run: another experiment's simulation copied, not rerun, its CPU not counted twice
+mkdir -p "$rx/experiments/t/r"
+cat > "$rx/experiments/t/r/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+reuse_run a t/e quick
+emit_from a q q_a
+EOF2
+chmod +x "$rx/experiments/t/r/run.sh"
+: > "$log"
+T "reuse_run: experiment made from another's simulation" 0 RX "$rx/tools/run-experiment" t/r quick
+if [ ! -s "$log" ]; then ok "reuse_run: no simulation"; else bad "reuse_run: simulated: $(tr '\n' ' ' < "$log")"; fi
+in_file "reuse_run: origin recorded" "$rx/results/t/r/quick/runs/a/REUSED_FROM" '^results/t/e/quick/runs/a$'
+in_file "reuse_run: its CPU not counted again" "$rx/results/t/r/quick/provenance.tsv" '^cpu_seconds	0.000$'
+T "reuse_run: the reusing result verifies fresh" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-result" t/r quick
+sed -i 's/^q\t1.5/q\t1.7/' "$rx/results/t/e/quick/runs/a/summary.tsv"
+T "reuse_run: stale when the reused simulation changed" 1 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-result" t/r quick
+sed -i 's/^q\t1.7/q\t1.5/' "$rx/results/t/e/quick/runs/a/summary.tsv"
+mv "$rx/results/t/e" "$rx/results/t/e.away"
+T "reuse_run: fails clearly without the other result" 1 RX "$rx/tools/run-experiment" t/r quick
+has "reuse_run: names what to make" 'make results/t/e/quick/summary.tsv'
+mv "$rx/results/t/e.away" "$rx/results/t/e"
 
 # known non-reproductions: expect = fail (8th column) -> XFAIL, not a failure; XPASS is one
 mkdir -p "$root/experiments/x/xf" "$root/experiments/x/xp"

@@ -7,27 +7,77 @@ mkdir -p "$OUT/runs"
 
 # dpd_run NAME SCENE [--set k=v ...]: one simulation into $OUT/runs/NAME.
 # Resumable (tools/run-experiment keeps $OUT across attempts while nothing
-# changed): a simulation already complete with the same arguments is not
-# rerun; an interrupted one continues from its checkpoint, written every
-# DPD_CHECKPOINT_EVERY steps (default 5000) but not sooner than
-# DPD_CHECKPOINT_WALL seconds (default 60) after the last one: a checkpoint
-# holds every sampled series and reaches hundreds of MB in long runs (the
-# result is bit-identical either way).
+# changed): a simulation already complete with the same arguments and the same
+# scene file content is not rerun; an interrupted one continues from its
+# checkpoint, written every DPD_CHECKPOINT_EVERY steps (default 5000) but not
+# sooner than DPD_CHECKPOINT_WALL seconds (default 60) after the last one: a
+# checkpoint holds every sampled series and reaches hundreds of MB in long runs
+# (the result is bit-identical either way). The arguments are compared with the
+# checkout's root removed from paths (a result made in another clone or
+# worktree matches), the scene by the sha256 recorded in .scene_sha256 (runs
+# made before it was recorded are matched by their arguments alone).
+# DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run
+# marks the result stale ($OUT/.verify-stale) and stops the script.
 dpd_run() {
     local name=$1 scene=$2; shift 2
-    local dir=$OUT/runs/$name args
-    args=$(printf '%s\n' "$scene" "$@")
-    if [ "$(cat "$dir/.args" 2>/dev/null)" = "$args" ]; then
+    local dir=$OUT/runs/$name args sha
+    args=$(printf '%s\n' "$scene" "$@" | _args_norm)
+    sha=missing; [ -f "$scene" ] && sha=$(sha256sum < "$scene" | cut -c1-64)
+    if [ "$(_args_recorded "$dir")" = "$args" ] &&
+       [ "$(cat "$dir/.scene_sha256" 2>/dev/null || echo "$sha")" = "$sha" ]; then
         if [ -s "$dir/summary.tsv" ] && [ ! -e "$dir/INCOMPLETE" ]; then
             echo "dpd_run: $name already complete, kept" >&2
             return 0
         fi
+        # a kept run that stopped (e.g. unstable, deliberately): with the same
+        # arguments and seed it stops again; verification takes the recorded outcome
+        if [ "${DPD_VERIFY:-0}" = 1 ] && [ -e "$dir/INCOMPLETE" ]; then return 3; fi
+        _verify_refuse "$name" "it is incomplete"
     else
+        _verify_refuse "$name" "its arguments or scene ($scene) differ from the recorded ones"
         rm -rf "$dir"; mkdir -p "$dir"
-        printf '%s\n' "$args" > "$dir/.args"
+        printf '%s\n' "$scene" "$@" > "$dir/.args"
+        printf '%s\n' "$sha" > "$dir/.scene_sha256"
     fi
     "$DPD" run "$scene" --out "$dir" --quiet --checkpoint-every "${DPD_CHECKPOINT_EVERY:-5000}" \
         --checkpoint-wall "${DPD_CHECKPOINT_WALL:-60}" --resume "$@"
+}
+# the arguments a kept run was made with: .args, or for runs made before .args
+# was written, the command line the simulator recorded in provenance.tsv
+_args_recorded() {
+    if [ -f "$1/.args" ]; then _args_norm < "$1/.args"
+    elif [ -f "$1/provenance.tsv" ]; then
+        awk -F'\t' '$1 == "command" { n = split($2, w, " "); print w[3]
+            for (i = 4; i <= n; i++) {
+                if (w[i] == "--out" || w[i] == "--checkpoint-every" || w[i] == "--checkpoint-wall") { i++; continue }
+                if (w[i] == "--quiet" || w[i] == "--resume") continue
+                print w[i] } }' "$1/provenance.tsv" | _args_norm
+    fi
+}
+# run arguments with any absolute path into experiments/ made relative to the checkout
+_args_norm() { sed -E 's#^/([^/]+/)*experiments/#experiments/#; s#=/([^/]+/)*experiments/#=experiments/#g'; }
+_verify_refuse() {
+    [ "${DPD_VERIFY:-0}" = 1 ] || return 0
+    echo "verify: run '$1' would be (re)run: $2" >&2
+    printf '%s: %s\n' "$1" "$2" >> "$OUT/.verify-stale"
+    exit 97
+}
+
+# reuse_run NAME PAPER/EXP TIER [SOURCE_NAME]: the simulation SOURCE_NAME (default
+# NAME) of another experiment's complete result, copied into $OUT/runs/NAME
+# instead of run again (the same system and settings, e.g. Mai-Duy et al.'s
+# Tables 1 and 2 come from one set of TCAF runs). The copy records its origin
+# in REUSED_FROM; tools/run-experiment does not count its CPU time again.
+reuse_run() {
+    local name=$1 id=$2 tier=$3 src_name=${4:-$1}
+    local src=$DPD_ROOT/results/$id/$tier/runs/$src_name dir=$OUT/runs/$1
+    if [ ! -s "$src/summary.tsv" ] || [ -e "$src/INCOMPLETE" ] || [ -e "$DPD_ROOT/results/$id/$tier/INCOMPLETE" ]; then
+        echo "reuse_run: $name needs the complete simulation $src_name of results/$id/$tier" \
+             "(make results/$id/$tier/summary.tsv, or tools/run-experiment $id $tier)" >&2
+        exit 1
+    fi
+    rm -rf "$dir"; cp -a "$src" "$dir"
+    printf 'results/%s/%s/runs/%s\n' "$id" "$tier" "$src_name" > "$dir/REUSED_FROM"
 }
 
 # get NAME QUANTITY -> "value<TAB>stderr" from a run's summary.

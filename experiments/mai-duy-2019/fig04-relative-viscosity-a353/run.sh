@@ -59,9 +59,17 @@ for pair in $PAIRS; do
     emit_ratio eta_r_original_$tag susp_$tag viscosity solvent viscosity
     if [[ " $TCAF_PAIRS " == *" $pair "* ]]; then
         # the TCAF construction of tab02-effective-viscosity at this phi and repulsion
-        dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" --set "seed=$((40300 + 2 * i))"
-        dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
-            --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
+        if [ "$TIER" = paper ] && [ "$A" = 3.53 ]; then
+            # the same scenes and settings as tab01-wavelengths' paper tier (the scenes' a = 3.53):
+            # its simulations, not new ones (tools/lib/exp.sh reuse_run; experiments.mk orders them)
+            t01=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')   # tab01's tag
+            reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper free_$t01
+            reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper constrained_$t01
+        else
+            dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" --set "seed=$((40300 + 2 * i))"
+            dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
+                --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
+        fi
         emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
         emit_from constrained_$tag tcaf_eta_k0 eta_eff_$tag
         emit_ratio eta_r_tcaf_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0

@@ -15,8 +15,15 @@ printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\
 i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
-    dpd_run free_$tag free.cfg "${tier[@]}" "${geo[@]}" --set "seed=$((50300 + 2 * i))"
-    dpd_run constrained_$tag constrained.cfg "${tier[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" --set "seed=$((50301 + 2 * i))"
+    if [ "$TIER" = paper ]; then
+        # the paper's Tables 1 and 2 come from one set of TCAF runs: so do ours (tab01-wavelengths
+        # runs these scenes with the same settings; its paper tier must exist, see experiments.mk)
+        reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper
+        reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper
+    else
+        dpd_run free_$tag free.cfg "${tier[@]}" "${geo[@]}" --set "seed=$((50300 + 2 * i))"
+        dpd_run constrained_$tag constrained.cfg "${tier[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" --set "seed=$((50301 + 2 * i))"
+    fi
     np=$(get free_$tag particles | cut -f1)
     awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
