@@ -20,7 +20,7 @@ SRC := $(filter-out src/main.c,$(wildcard src/*.c))
 OBJ := $(patsubst src/%.c,$(BUILD)/%.o,$(SRC))
 BIN := bin/dpd
 
-.PHONY: all deps test figures check reproduce paper bench bench-peer clean
+.PHONY: all deps test figures check reproduce paper paper-pdf bench bench-peer clean
 all: $(BIN)
 
 # Install any missing Debian package (idempotent, fast when all present).
@@ -67,6 +67,11 @@ $(BARE): $(BARE_OBJ)
 include tests/tests.mk
 include tests/reliability.mk
 include experiments/experiments.mk
+
+# the rendered paper printed to PDF by WeasyPrint (installed on first use: tools/deps pdf)
+paper-pdf: paper
+	@tools/deps pdf
+	@weasyprint -q build/paper.html build/paper.pdf && echo "paper-pdf: wrote build/paper.pdf"
 
 bench: $(BIN) $(BARE)
 	@bench/bench.sh

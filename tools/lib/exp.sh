@@ -153,6 +153,19 @@ emit_drag_torque() {
     done
 }
 
+# block_slope NAME LO:HI -> "slope<TAB>stderr": the slope of v_x against position over
+# LO <= pos <= HI, fitted to each block's profile (runs/NAME/profile_blocks.tsv: a scene
+# with measure.profile.per_block) and averaged; the error from the scatter of the block
+# slopes. The bins of one profile share the flow's fluctuations (and at m = 0 are solved
+# together), so a fit of the averaged profile taking its bins as independent understates it.
+block_slope() {
+    awk -F'\t' -v b="$2" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
+        $3>=r[1] && $3<=r[2] {k=$1; n[k]++; sx[k]+=$3; sy[k]+=$5; sxx[k]+=$3*$3; sxy[k]+=$3*$5}
+        END{for(k in n){s=(n[k]*sxy[k]-sx[k]*sy[k])/(n[k]*sxx[k]-sx[k]^2); m++; t+=s; tt+=s*s}
+            if(m<2){printf "nan\tnan\n"; exit} mean=t/m; printf "%.10g\t%.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
+        "$OUT/runs/$1/profile_blocks.tsv"
+}
+
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016
 # fig03 (walls bottom_inner/outer, top_inner/outer; run with
 # measure.profile.per_block=true) -> "rate rate_se tau tau_se eta eta_se".
@@ -165,11 +178,7 @@ emit_drag_torque() {
 # upper bound); eta = tau / rate.
 couette_viscosity() {
     local name=$1 lx=$2 bulk=$3 g gse tau tause
-    read -r g gse < <(awk -F'\t' -v b="$bulk" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
-        $3>=r[1] && $3<=r[2] {k=$1; n[k]++; sx[k]+=$3; sy[k]+=$5; sxx[k]+=$3*$3; sxy[k]+=$3*$5}
-        END{for(k in n){s=(n[k]*sxy[k]-sx[k]*sy[k])/(n[k]*sxx[k]-sx[k]^2); m++; t+=s; tt+=s*s}
-            if(m<2){print "nan nan"; exit} mean=t/m; printf "%.10g %.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
-        "$OUT/runs/$name/profile_blocks.tsv")
+    read -r g gse < <(block_slope "$name" "$bulk" | tr '\t' ' ')
     read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get "$name" "force_on_${w}_x"; done |
         awk -F'\t' -v lx="$lx" '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2} END{printf "%.10g %.4g\n", v/(2*lx), e/(2*lx)}')
     awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \

@@ -18,16 +18,21 @@ for a in 3.53 6.50 9.50 18.50 500; do
         for r in 1 2; do
             dpd_run a${a}_r$r solvent-msd.cfg "${tier[@]}" --set "pairs.[0].a=$a" --set "seed=$((30290 + r))"
         done
-        # mean and standard error over the three runs, written as run a500's D
-        d=$(for n in a$a a${a}_r1 a${a}_r2; do get $n D | cut -f1; done | awk '{ x[NR] = $1; s += $1 }
-            END { m = s / NR; for (i = 1; i <= NR; i++) v += (x[i] - m)^2; printf "%.10g\t%.4g", m, sqrt(v / (NR * (NR - 1))) }')
-        sed -i "s/^D\t.*/D\t$d/" "$OUT/runs/a$a/summary.tsv"
+        # mean and standard error over the three runs (the runs' own summaries stay as they are:
+        # a resumed or re-analysed experiment reads them again)
+        emit_mean "D_a$a" D a$a a${a}_r1 a${a}_r2
+    else
+        emit_from a$a D "D_a$a"
     fi
-    emit_from a$a D "D_a$a"
     emit_from a$a D_t_ratio_late_half "D_t_flatness_a$a"
     emit_from a$a temperature "temperature_a$a"
     cp "$OUT/runs/a$a/msd.tsv" "$OUT/msd_a$a.tsv"
     k=$((k + 1))
 done
-emit_ratio D_ratio_a18.50_a3.53 a18.50 D a3.53 D
-emit_ratio D_ratio_a500_a3.53 a500 D a3.53 D
+# ratios of the summary's D (at a = 500 in the quick tier the three-run mean)
+for a in 18.50 500; do
+    awk -F'\t' -v a="$a" '{ v[$1] = $2; s[$1] = $3 } END { x = v["D_a" a]; y = v["D_a3.53"]; r = x / y
+        printf "D_ratio_a%s_a3.53\t%.10g\t%.4g\n", a, r, (r < 0 ? -r : r) * sqrt((s["D_a" a] / x)^2 + (s["D_a3.53"] / y)^2) }' \
+        "$OUT/summary.tsv" > "$OUT/.ratio"
+    cat "$OUT/.ratio" >> "$OUT/summary.tsv"; rm "$OUT/.ratio"
+done
