@@ -13,6 +13,9 @@ results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment
 PLOT = mkdir -p figures/$(1) && cd experiments/$(1) && \
        gnuplot -e "res='$(CURDIR)/results/$(1)/$(TIER)'; out='$(CURDIR)/figures/$(1)'; tier='$(TIER)'" plot.gp
 
+# results that read another experiment's result of the same tier (so `make -j` orders them)
+results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv
+results/phan-thien-2016/fig13-shear-thinning/$(TIER)/summary.tsv: results/phan-thien-2016/fig10-11-colloid-structure/$(TIER)/summary.tsv
 # paper tier: results that reuse another experiment's simulations (reuse_run, tools/lib/exp.sh)
 results/mai-duy-2019/tab02-effective-viscosity/paper/summary.tsv \
 results/mai-duy-2019/fig04-relative-viscosity-a353/paper/summary.tsv: results/mai-duy-2019/tab01-wavelengths/paper/summary.tsv
