@@ -166,6 +166,18 @@ block_slope() {
         "$OUT/runs/$1/profile_blocks.tsv"
 }
 
+# block_mean NAME LO:HI -> "mean<TAB>stderr": v_x averaged over the bins with LO < pos < HI
+# in each block's profile (runs/NAME/profile_blocks.tsv), then over the blocks; the error
+# from the scatter of the block means (neighbouring bins share the flow's fluctuations:
+# their errors do not add in quadrature).
+block_mean() {
+    awk -F'\t' -v b="$2" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
+        $3>r[1] && $3<r[2] {n[$1]++; s[$1]+=$5}
+        END{for(k in n){x=s[k]/n[k]; m++; t+=x; tt+=x*x}
+            if(m<2){printf "nan\tnan\n"; exit} mean=t/m; printf "%.10g\t%.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
+        "$OUT/runs/$1/profile_blocks.tsv"
+}
+
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016
 # fig03 (walls bottom_inner/outer, top_inner/outer; run with
 # measure.profile.per_block=true) -> "rate rate_se tau tau_se eta eta_se".
