@@ -35,16 +35,23 @@ dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent
 # colloid size: one colloid at rest in a 5^3 box; r_half where the solvent-constituent RDF
-# reaches 1/2, from a weighted straight line through g(r) over 0.1 <= r <= 0.6 (where it rises
-# from ~0.2 to ~0.65; `dpd fit-line`): r_half = 0.35 + (1/2 - g(0.35)) / slope, error from
-# g(0.35)'s; the colloid radius d + r_half (d = 0.5, the site distance)
-dpd_run rdf "$HERE/colloid-rdf.cfg" "${rep3[@]}"
+# reaches 1/2, from a straight line through g(r) over 0.1 <= r <= 0.6 (where it rises from ~0.2
+# to ~0.65; `dpd fit-line`): r_half = 0.35 + (1/2 - g(0.35)) / slope; the colloid radius
+# d + r_half (d = 0.5, the site distance). Five independent runs (seeds 40170 ... 40174), r_half
+# their mean, its error from their scatter (the bins of one g(r) are not independent, so the
+# fit's own error would understate it).
+rdfs=""
+for r in 0 1 2 3 4; do
+    name=rdf; [ $r -gt 0 ] && name=rdf_r$r && seed=(--set "seed=$((40170 + r))") || seed=()
+    dpd_run $name "$HERE/colloid-rdf.cfg" "${rep3[@]}" "${seed[@]}"
+    "$DPD" fit-line "$OUT/runs/$name/rdf.tsv" --x r --y g --se g_se --range 0.1:0.6 |
+        awk -F'\t' '{ v[$1] = $2 } END { printf "%.10g\n", 0.35 + (0.5 - v["value_at_centre"]) / v["slope"] }' > "$OUT/runs/$name/r_half"
+    rdfs="$rdfs $(cat "$OUT/runs/$name/r_half")"
+done
 cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
-"$DPD" fit-line "$OUT/colloid_rdf.tsv" --x r --y g --se g_se --range 0.1:0.6 |
-    awk -F'\t' -v d=0.5 '{ v[$1] = $2; s[$1] = $3 }
-        END { b = v["slope"]; x = 0.35 + (0.5 - v["value_at_centre"]) / b
-              e = sqrt(s["value_at_centre"]^2 + ((0.5 - v["value_at_centre"]) * s["slope"] / b)^2) / b
-              printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", x, e, d + x, e }' >> "$OUT/summary.tsv"
+awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); for (i = 1; i <= n; i++) s += x[i]; m = s / n
+    for (i = 1; i <= n; i++) ss += (x[i] - m)^2; e = sqrt(ss / (n - 1) / n)
+    printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", m, e, d + m, e }' >> "$OUT/summary.tsv"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 i=0
 for pair in $PAIRS; do
