@@ -350,8 +350,8 @@ fi
 # ---------------------------------------------------------------- run-experiment: resume
 # A fixture repository with a fake simulator: an interrupted experiment leaves
 # no result (check: MISSING), keeps its finished simulations, and the next
-# attempt reruns only the unfinished one (with --resume); a changed experiment
-# (stale) starts afresh.
+# attempt reruns only the unfinished one (with --resume); a simulation whose
+# scene or arguments changed reruns; another binary starts afresh; --reanalyse.
 rx="$root/rx"
 mkdir -p "$rx/experiments/t/e"
 cp -r "$tools" "$rx/tools"
@@ -398,9 +398,40 @@ else bad "run-experiment: summary rows" "$rx/results/t/e/quick/summary.tsv"; fi
 T "run-experiment: interrupted again" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
 echo 'x = 2;' > "$rx/experiments/t/e/s.cfg"
 : > "$log"
-T "run-experiment: stale partial result discarded" 0 RX "$rx/tools/run-experiment" t/e quick
-if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: changed experiment reruns everything"
+T "run-experiment: partial result with a changed scene completes" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: a changed scene reruns the simulations that use it"
 else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
+# the stamp is the binary and the tier: a change of the analysis alone keeps the finished
+# simulations of an interrupted attempt; another binary starts afresh
+cp "$rx/experiments/t/e/run.sh" "$root/run.sh.orig"
+T "run-experiment: interrupted once more" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+echo 'emit extra 1 0' >> "$rx/experiments/t/e/run.sh"
+: > "$log"
+T "run-experiment: resumes after a change of the analysis" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "run-experiment: analysis change keeps the finished simulation"
+else bad "run-experiment: after an analysis change ran: $(tr '\n' ' ' < "$log")"; fi
+in_file "run-experiment: the changed analysis is applied" "$rx/results/t/e/quick/summary.tsv" '^extra	1	0$'
+T "run-experiment: interrupted with the old binary" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+{ cat "$rx/fake-dpd"; echo '# another build'; } > "$rx/fake-dpd2"; chmod +x "$rx/fake-dpd2"
+: > "$log"
+T "run-experiment: another binary" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd2" FAKE_LOG="$log" "$rx/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: another binary starts afresh"
+else bad "run-experiment: with another binary ran: $(tr '\n' ' ' < "$log")"; fi
+# --reanalyse: the complete result's simulations, only those whose arguments changed rerun
+cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
+: > "$log"
+T "run-experiment --reanalyse: analysis only" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
+if [ ! -s "$log" ]; then ok "run-experiment --reanalyse: no simulation"; else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
+if grep -q '^extra' "$rx/results/t/e/quick/summary.tsv"; then bad "run-experiment --reanalyse: old analysis kept" "$rx/results/t/e/quick/summary.tsv"
+else ok "run-experiment --reanalyse: the current analysis"; fi
+sed -i 's/--set x=2/--set x=3/' "$rx/experiments/t/e/run.sh"
+: > "$log"
+T "run-experiment --reanalyse: changed arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
+if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "run-experiment --reanalyse: reruns only the changed simulation"
+else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
+T "run-experiment: unknown option refused" 1 RX "$rx/tools/run-experiment" t/e quick --reanalyze
+cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
+T "run-experiment --reanalyse: back to the original arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
 
 # ---------------------------------------------------------------- verify-result
 # The analysis redone from the kept runs (no simulation): fresh while nothing
