@@ -80,9 +80,11 @@ reuse_run() {
     printf 'results/%s/%s/runs/%s\n' "$id" "$tier" "$src_name" > "$dir/REUSED_FROM"
 }
 
-# get NAME QUANTITY -> "value<TAB>stderr" from a run's summary.
+# get NAME QUANTITY -> "value<TAB>stderr" from a run's summary (NAME "." : the
+# experiment's own summary so far, e.g. a mean emit_mean wrote).
 get() {
-    awk -F'\t' -v q="$2" '$1==q{print $2 "\t" $3; f=1} END{exit !f}' "$OUT/runs/$1/summary.tsv" \
+    local f=$OUT/runs/$1/summary.tsv; [ "$1" = . ] && f=$OUT/summary.tsv
+    awk -F'\t' -v q="$2" '$1==q{print $2 "\t" $3; f=1; exit} END{exit !f}' "$f" \
         || { echo "exp.sh: quantity '$2' missing in run '$1'" >&2; return 1; }
 }
 

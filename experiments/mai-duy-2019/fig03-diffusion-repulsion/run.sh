@@ -30,9 +30,5 @@ for a in 3.53 6.50 9.50 18.50 500; do
     k=$((k + 1))
 done
 # ratios of the summary's D (at a = 500 in the quick tier the three-run mean)
-for a in 18.50 500; do
-    awk -F'\t' -v a="$a" '{ v[$1] = $2; s[$1] = $3 } END { x = v["D_a" a]; y = v["D_a3.53"]; r = x / y
-        printf "D_ratio_a%s_a3.53\t%.10g\t%.4g\n", a, r, (r < 0 ? -r : r) * sqrt((s["D_a" a] / x)^2 + (s["D_a3.53"] / y)^2) }' \
-        "$OUT/summary.tsv" > "$OUT/.ratio"
-    cat "$OUT/.ratio" >> "$OUT/summary.tsv"; rm "$OUT/.ratio"
-done
+emit_ratio D_ratio_a18.50_a3.53 . D_a18.50 . D_a3.53
+emit_ratio D_ratio_a500_a3.53 . D_a500 . D_a3.53

@@ -69,7 +69,7 @@ for pair in $PAIRS; do
         if [ "$TIER" = paper ] && [ "$A" = 3.53 ]; then
             # the same scenes and settings as tab01-wavelengths' paper tier (the scenes' a = 3.53):
             # its simulations, not new ones (tools/lib/exp.sh reuse_run; experiments.mk orders them)
-            t01=$(awk -v k="$kp" 'BEGIN { printf "phi%.4f", 6 * k^3 / (13500 + 6 * k^3) }')   # tab01's tag
+            t01=$(lattice_pair "$pair" 4; echo "$tag")   # tab01's tag (4 decimals)
             reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper free_$t01
             reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper constrained_$t01
         else
