@@ -1,5 +1,6 @@
 # growth.awk - start-up of the Couette profile from per-block profiles of
-# independent runs (profile_blocks.tsv of each run as the input files).
+# independent runs: block, t, pos, vx of each run's profile_blocks.tsv (vx_blocks.tsv.gz),
+# concatenated, each run starting with its header line.
 #   -v ts=T     steady profile = run-averaged profile over blocks with t >= T
 #   -v name=Q   summary rows t90_Q and the growth/profile tables
 #   -v out=DIR  where growth_Q.tsv and profiles_Q.tsv go
@@ -7,9 +8,9 @@
 # t90 = first time a reaches 0.9, linear interpolation between block times,
 # from a = 0 at t = 0 (walls start). Error: jackknife over the runs.
 BEGIN { FS = OFS = "\t" }
-FNR == 1 { S++; next }
-$5 == "nan" || $5 == "" { next }
-{ b = $1 + 0; y = $3; v[S, b, y] = $5; t[b] = $2; bins[y] = 1; if (b > nb) nb = b }
+$1 == "block" { S++; next }
+$4 == "nan" || $4 == "" { next }
+{ b = $1 + 0; y = $3; v[S, b, y] = $4; t[b] = $2; bins[y] = 1; if (b > nb) nb = b }
 function t90_without(ex,    s, b, y, n, m, num, den, vs, a, ap, tp) {
     for (y in bins) vs[y] = 0
     n = 0
