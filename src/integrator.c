@@ -64,9 +64,32 @@ static inline __attribute__((always_inline)) void correct_loop(System *s, const 
 static void correct_walls(System *s) { correct_loop(s, 1); }
 static void correct_plain(System *s) { correct_loop(s, 0); }
 
+/* hold_mean_velocity: each holding type's velocities shifted by one vector so
+ * that their mean is the held one (a uniform force on the type, whatever the
+ * frozen particles take from it). Summed in particle order: the same on any
+ * thread count. */
+static void hold_mean_velocities(System *s)
+{
+    for (int t = 0; t < s->ntypes; t++) {
+        const ParticleType *pt = &s->types[t];
+        if (!pt->hold_velocity) continue;
+        double sum[3] = {0.0, 0.0, 0.0};
+        long count = 0;
+        for (int i = 0; i < s->n; i++)
+            if (s->type[i] == t) { for (int d = 0; d < 3; d++) sum[d] += s->v[3 * i + d]; count++; }
+        if (count == 0) continue;
+        double shift[3];
+        for (int d = 0; d < 3; d++) shift[d] = d < s->box.dim ? pt->held_velocity[d] - sum[d] / count : 0.0;
+        #pragma omp parallel for schedule(static)
+        for (int i = 0; i < s->n; i++)
+            if (s->type[i] == t) for (int d = 0; d < 3; d++) s->v[3 * i + d] += shift[d];
+    }
+}
+
 void integrate_correct(System *s)
 {
     if (MOD_ON(s->n_frozen > 0)) correct_walls(s);
     else correct_plain(s);
     if (MOD_ROTATION(s)) rotation_correct(s);
+    if (MOD_ON(s->has_held_velocity)) hold_mean_velocities(s);
 }

@@ -56,6 +56,27 @@ static int read_positions(Scene *sc, config_setting_t *g, const System *s, TypeI
     return 1;
 }
 
+/* hold_mean_velocity = [ux, uy, uz]: the type's mean velocity is reset to this
+ * vector after every step (integrator.c), so that a flow past frozen particles
+ * runs at a prescribed superficial velocity instead of relaxing to it over the
+ * total momentum's time N m / zeta; it is also the type's initial drift. */
+static int read_held_velocity(Scene *sc, config_setting_t *g, System *s, ParticleType *pt)
+{
+    int got = 0;
+    if (scene_vector(sc, g, "hold_mean_velocity", pt->held_velocity, s->box.dim, &got, -1e6, 1e6, 0) < 0) return -1;
+    if (!got) return 0;
+    const config_setting_t *key = config_setting_get_member(g, "hold_mean_velocity");
+    if (pt->frozen) return scene_fail(sc, key, "hold_mean_velocity needs a mobile type (this one is frozen)");
+    for (int d = 0; d < s->box.dim; d++)
+        if (pt->body_force[d] != 0.0 || pt->wall_velocity[d] != 0.0)
+            return scene_fail(sc, key, "hold_mean_velocity sets the type's drift and replaces its body force: "
+                              "give no 'velocity' or 'body_force' with it");
+    memcpy(pt->wall_velocity, pt->held_velocity, sizeof pt->held_velocity);   /* the initial drift */
+    pt->hold_velocity = 1;
+    s->has_held_velocity = 1;
+    return 0;
+}
+
 static int read_types(Scene *sc, System *s, TypeInit *ti)
 {
     config_setting_t *list = scene_child(sc, NULL, "types", CONFIG_TYPE_LIST);
@@ -92,6 +113,7 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         if (pt->body_force_flip_axis >= dim)
             return scene_fail(sc, g, "body_force_flip_axis \"%s\" does not exist in %dD", flip, dim);
         for (int d = 0; d < dim; d++) if (pt->body_force[d] != 0.0 && !pt->frozen) s->has_body_force = 1;
+        if (read_held_velocity(sc, g, s, pt)) return -1;
         /* placement */
         for (int d = 0; d < 3; d++) { ti[t].lo[d] = 0.0; ti[t].hi[d] = d < dim ? s->box.L[d] : 0.0; }
         config_setting_t *reg = scene_child(sc, g, "region", CONFIG_TYPE_GROUP);
@@ -464,6 +486,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
         if (s->box.shear_rate != 0.0) mod = "shear_rate (Lees-Edwards)";
         else if (frozen_type) mod = "frozen particles";
         else if (s->has_body_force) mod = "a body force";
+        else if (s->has_held_velocity) mod = "hold_mean_velocity";
         else if (s->rotation) mod = "rotation";
         else if (rc->overdamped) mod = "overdamped";
         else if (rc->confine_axis >= 0) mod = "confining walls";
@@ -486,6 +509,9 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     if (rc->bonds && bonds_place(rc->bonds, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
+    if (s->has_held_velocity && rc->overdamped)
+        return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
+                          "a type's hold_mean_velocity needs massive particles: no 'overdamped' group with it");
     if (s->rotation) {
         if (rc->overdamped) return scene_fail(sc, NULL, "rotation = true cannot be combined with overdamped");
         s->rotation = 0;

@@ -57,10 +57,10 @@ void system_permute(System *s, const int *perm, double *scratch)
     }
 }
 
-/* Momentum is conserved only without walls and body forces. */
+/* Momentum is conserved only without walls, body forces and held mean velocities. */
 static int momentum_conserved(const System *s)
 {
-    return !MOD_ON(s->n_frozen != 0 || s->has_body_force);
+    return !MOD_ON(s->n_frozen != 0 || s->has_body_force || s->has_held_velocity);
 }
 
 int system_dof(const System *s)

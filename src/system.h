@@ -21,6 +21,8 @@ typedef struct {
     int body_force_flip_axis; /* -1: none; else sign flips in the upper half along this axis */
     double inertia;           /* moment of inertia (rotation scenes only, src/rotation.c) */
     double spin[3];           /* prescribed angular velocity of frozen particles (rotation scenes) */
+    int hold_velocity;        /* 1: the type's mean velocity is reset to held_velocity every step */
+    double held_velocity[3];
 } ParticleType;
 
 typedef struct {
@@ -54,6 +56,7 @@ typedef struct {
     double time;
     uint32_t seed;
     int has_body_force;
+    int has_held_velocity;    /* some type holds its mean velocity (integrator.c) */
     int n_frozen;
     /* rotational degrees of freedom (Pan et al. 2008), only when the scene asks:
      * NULL otherwise. Angular velocity, its Groot-Warren prediction, torque: 3 n each */

@@ -333,6 +333,51 @@ static void mobile_velocity_is_initial_drift(void **state)
     CHECK_ABS("mean velocity y = drift -0.25 (momentum conserved)", vy, -0.25, 1e-9);
 }
 
+/* hold_mean_velocity: a fluid flowing past a frozen particle keeps its mean
+ * velocity at the held vector at every sample (to round-off) while the particle
+ * takes momentum from it (drag > 0 by 3 stderr); the same fluid started at that
+ * drift without the hold slows down (the control: the hold does the work); and
+ * the shift is summed in particle order, so 1 and 2 threads agree bit for bit. */
+static void held_mean_velocity_past_frozen_particle(void **state)
+{
+    (void)state;
+    static const char *fmt =
+        "dimension = 3; box = [4.0, 4.0, 4.0]; dt = 0.01; seed = 77; equilibration = 0; steps = 500;\n"
+        "rotation = true;\n"
+        "types = ( { name = \"f\"; density = 3.0; %s },\n"
+        "          { name = \"c\"; frozen = true; positions = ( [2.0, 2.0, 2.0] ); } );\n"
+        "pairs = ( { types = [\"f\", \"f\"]; a = 25.0; gamma = 4.5; gamma_shear = 4.5; s = 0.5; },\n"
+        "          { types = [\"f\", \"c\"]; a = 25.0; gamma = 3.5; gamma_shear = 5.5; s = 0.5; },\n"
+        "          { types = [\"c\", \"c\"]; a = 25.0; gamma = 0.0; interact = false; } );\n"
+        "output = { trajectory_every = 500; };\n"
+        "measure = { every = 1; blocks = 5; };\n";
+    char text[1500], scene[600], held[600], held2[600], free_[600], f1[700], f2[700];
+    snprintf(scene, sizeof scene, "%s/hold.cfg", dir);
+    snprintf(text, sizeof text, fmt, "hold_mean_velocity = [1.0, 0.0, 0.0];");
+    write_text(scene, text);
+    snprintf(held, sizeof held, "%s/held", dir);
+    snprintf(held2, sizeof held2, "%s/held2", dir);
+    assert_int_equal(run_quiet(scene, held, 1), 0);
+    assert_int_equal(run_quiet(scene, held2, 2), 0);
+    double vx = NAN, sx = NAN, vy = NAN, sy = NAN, F = NAN, Fse = NAN;
+    assert_int_equal(summary_get(held, "mean_velocity_f_x", &vx, &sx), 0);
+    assert_int_equal(summary_get(held, "mean_velocity_f_y", &vy, &sy), 0);
+    CHECK_ABS("held mean velocity x", vx, 1.0, 1e-12);
+    CHECK_ABS("held mean velocity x, scatter between blocks", sx, 0.0, 1e-12);
+    CHECK_ABS("held mean velocity y", vy, 0.0, 1e-12);
+    assert_int_equal(summary_get(held, "drag_on_c_x", &F, &Fse), 0);
+    CHECK_TRUE(F > 3.0 * Fse, "drag on the frozen particle at u = 1: %g +- %g (should be > 0)", F, Fse);
+    snprintf(f1, sizeof f1, "%s/run.h5", held);
+    snprintf(f2, sizeof f2, "%s/run.h5", held2);
+    compare_frames(f1, f2, "held mean velocity, 1 vs 2 threads");
+    snprintf(text, sizeof text, fmt, "velocity = [1.0, 0.0, 0.0];");
+    write_text(scene, text);
+    snprintf(free_, sizeof free_, "%s/free", dir);
+    assert_int_equal(run_quiet(scene, free_, 1), 0);
+    assert_int_equal(summary_get(free_, "mean_velocity_f_x", &vx, &sx), 0);
+    CHECK_TRUE(vx < 1.0 - 3.0 * sx && vx < 0.95, "without the hold the flow slows: mean %g +- %g", vx, sx);
+}
+
 static int setup(void **state) { (void)state; make_tmpdir(dir, sizeof dir, "rotation"); return 0; }
 static int teardown(void **state) { (void)state; rm_rf(dir); return 0; }
 
@@ -348,6 +393,7 @@ int main(void)
         cmocka_unit_test(rotation_threads_bitwise),
         cmocka_unit_test(rotation_without_shear_is_standard_run),
         cmocka_unit_test(mobile_velocity_is_initial_drift),
+        cmocka_unit_test(held_mean_velocity_past_frozen_particle),
     };
     return cmocka_run_group_tests_name("rotation", tests, setup, teardown);
 }

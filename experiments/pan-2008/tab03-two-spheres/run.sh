@@ -1,55 +1,70 @@
 #!/usr/bin/env bash
 # Pan et al. 2008, Table 3: drag and torque on each of two fixed spheres a distance l
-# apart, flow normal to their line of centres, against eq. 23 with the measured
-# superficial velocity u.
+# apart, flow normal to their line of centres, against eq. 23 at the superficial
+# velocity u. The fluid's mean velocity is held at u (hold_mean_velocity): driven by a
+# body force it would relax to its steady value only over N_f m / zeta (~300 time units
+# at 16^3, ~2200 at 30^3), and a run shorter than that measures its starting drift.
 . "$DPD_ROOT/tools/lib/exp.sh"
-MU=3.6388 R=0.2737 FSPH=5.1      # paper mu and R; body force per sphere (N_f g = 2 FSPH)
+MU=3.6388 R=0.2737 U=0.3        # paper mu and R; u: Re = rho u R / mu = 0.068 (paper: at most 0.0756)
+B=20                            # blocks of the drag and torque series
 case $TIER in
     quick) L=8;  ROWS="1 3"; len=() ;;
-    paper) L=30; ROWS="1 2 3"; len=(--set equilibration=20000 --set steps=200000) ;;
-    # reduced: the paper's rows in a 16^3 box (12288 particles) for 200 time units each,
-    # about 10 CPU-minutes; the paper tier needs about 4 CPU-hours per row
+    # paper: the paper's box; 50 + 600 time units per row (blocks of 30, above the box's slowest
+    # shear mode L^2 / (4 pi^2 nu) = 19), about 1.2 CPU-hours per row
+    paper) L=30; ROWS="1 2 3"; len=(--set equilibration=5000 --set steps=60000) ;;
+    # reduced: the paper's rows in a 16^3 box (12288 particles), 20 + 200 time units each,
+    # about 4 CPU-minutes per row
     reduced) L=16; ROWS="1 2 3"; len=(--set equilibration=2000 --set steps=20000) ;;
 esac
 row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
 NF=$(awk -v L=$L 'BEGIN{printf "%d", 3*L^3}')
-G=$(awk -v n=$NF -v f=$FSPH 'BEGIN{printf "%.6g", 2*f/n}')
 eq23() {  # l u -> F_the T_the (eq. 23)
     awk -v l=$1 -v u=$2 -v m=$MU -v R=$R 'BEGIN{pi = 3.141592653589793; q = R/l
         F = 6*pi*m*R*u * (1 - 3*q/4 + 9*q^2/16 - 59*q^3/64 + 465*q^4/256 - 15813*q^5/7168)
         T = 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024)
         printf "%.10g %.10g\n", F, T}'
 }
+# sphere_blocks NAME: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
+# the torque (T_a - T_b) / 2 about z (sphere a at lower y), B contiguous blocks of the
+# samples in run.h5 (the first n mod B skipped, as src/blockavg.c), kept in
+# runs/NAME/sphere_blocks.tsv: the two spheres' noises are averaged sample by sample, so
+# their correlation is in the error
+sphere_blocks() {
+    local f=$OUT/runs/$1/sphere_blocks.tsv
+    [ -f "$f" ] && return 0
+    [ -f "$OUT/runs/$1/run.h5" ] || { echo "tab03: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
+    paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
+          <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
+        awk -F'\t' -v B=$B '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
+            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
+                for (b = 0; b < B; b++) { f = t = 0
+                    for (i = skip + b * len + 1; i <= skip + (b + 1) * len; i++) { f += F[i]; t += T[i] }
+                    printf "%d\t%.10g\t%.10g\n", b, f / len, t / len } }' > "$f.tmp" && mv "$f.tmp" "$f"
+}
+# column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
+column_mean() {
+    awk -F'\t' -v c=$2 'NR > 1 {n++; s += $c; ss += $c * $c}
+        END{m = s / n; printf "%.10g\t%.4g", m, sqrt((ss / n - m * m) / (n - 1))}' "$1"
+}
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
-printf 'l\tu\tF paper\tF ours (N_f g / 2)\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"
+printf 'l\tu\tF paper\tF ours\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"
 for r in $ROWS; do
     l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
     ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
-    # start the fluid at eq. 23's u for this force: the total momentum relaxes in N_f / (2 zeta)
-    u0=$(eq23 $l 1 | awk -v f=$FSPH '{printf "%.4f", f/$1}')
     dpd_run row$r two-spheres.cfg "${len[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
-        --set "types.[0].body_force=[$G,0.0,0.0]" --set "types.[0].velocity=[$u0,0.0,0.0]" \
+        --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
         --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
-    st=$(awk -F'\t' '$1 == "steps" {print $2}' "$OUT/runs/row$r/summary.tsv")
-    # superficial velocity: mean fluid velocity; error the larger of the block and the
-    # Ornstein-Uhlenbeck estimate sqrt(2 kBT / (zeta T)), zeta = N_f g / u (see fig02-drag-calibration)
-    u=$(get row$r mean_velocity_fluid_x | awk -F'\t' -v n=$NF -v g=$G -v T="$(awk -v s=$st 'BEGIN{print s*0.01}')" '{
-        ou = sqrt(2 * $1 / (n * g * T)); printf "%.10g\t%.4g", $1, ($2 > ou ? $2 : ou) }')
+    u="$U	0"
     emit "u_row$r" $u
-    # drag per sphere: the applied force N_f g / 2 (in the steady state the fluid's momentum balance
-    # makes it the mean drag exactly, as the paper's nearly constant F_sim suggests); the measured
-    # mean of the two drags is kept as a check (drag_measured_row*), its noise is 10x larger.
-    # Torque: antisymmetric, (T_a - T_b) / 2 about z (sphere a at lower y).
-    Fm=$(paste <(get row$r drag_on_colloid_a_x) <(get row$r drag_on_colloid_b_x) | awk -F'\t' '{printf "%.10g\t%.4g", ($1+$3)/2, sqrt($2^2+$4^2)/2}')
-    emit "drag_measured_row$r" $Fm
-    F=$(awk -v n=$NF -v g=$G 'BEGIN{printf "%.10g\t0", n*g/2}')
-    T=$(paste <(get row$r torque_on_colloid_a_z) <(get row$r torque_on_colloid_b_z) | awk -F'\t' '{printf "%.10g\t%.4g", ($1-$3)/2, sqrt($2^2+$4^2)/2}')
-    read -r Fth Tth < <(eq23 $l "$(echo "$u" | cut -f1)")
+    # drag per sphere (without the zero-mean random part) and the antisymmetric torque
+    sphere_blocks row$r
+    F=$(column_mean "$OUT/runs/row$r/sphere_blocks.tsv" 2) T=$(column_mean "$OUT/runs/row$r/sphere_blocks.tsv" 3)
+    read -r Fth Tth < <(eq23 $l $U)
     emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$u"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $l "$u" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table3.data.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\n' $l "$u" "$F" "$T" $Fth $Tth | awk -F'\t' -v r=$r -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
-        printf "%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
-               $1, $2, $3, pF, $4, $5, $8, r, pT, $6, $7, $9, r }' >> "$OUT/table3.tsv"
+        printf "%s\t%.2f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
+               $1, $2, pF, $4, $5, $8, r, pT, $6, $7, $9, r }' >> "$OUT/table3.tsv"
 done
