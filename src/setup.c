@@ -478,6 +478,12 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
         if (bonds_configure(sc, bg, s, counts, rc->steps, m->nblocks, &rc->bonds)) return -1;
     }
     if (scene_check_unknown(sc)) return -1;
+    if (s->rotation && rc->overdamped)
+        return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
+                          "rotation = true cannot be combined with overdamped (the m = 0 solver has no spins)");
+    if (s->has_held_velocity && rc->overdamped)
+        return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
+                          "a type's hold_mean_velocity needs massive particles: no 'overdamped' group with it");
 #ifdef DPD_BARE
     {   /* the bare build has no optional modules (src/modules.h) */
         const char *mod = NULL;
@@ -509,11 +515,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (rc->colloids && colloid_place(rc->colloids, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     if (rc->bonds && bonds_place(rc->bonds, s)) return scene_fail(sc, NULL, "out of memory for the colloids");
     initial_velocities(s);
-    if (s->has_held_velocity && rc->overdamped)
-        return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
-                          "a type's hold_mean_velocity needs massive particles: no 'overdamped' group with it");
     if (s->rotation) {
-        if (rc->overdamped) return scene_fail(sc, NULL, "rotation = true cannot be combined with overdamped");
         s->rotation = 0;
         if (rotation_alloc(s)) return scene_fail(sc, NULL, "out of memory for angular velocities");
     }
