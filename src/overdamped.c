@@ -357,6 +357,17 @@ static double residual_from_t(const OdSystem *od, const double *t, const double 
     return sqrt(rn2);
 }
 
+/* The start of a Picard sweep: t = f - K v^{l-1} (one product with K) and the
+ * relative residual of v^{l-1}, recorded in res (with the residual's
+ * component sums in sum, when asked for). */
+static void sweep_rhs(const OdSystem *od, const double *v, double *t, double *sum, OdResult *res)
+{
+    offdiag_mul(od, v, t);
+    res->matvecs++;
+    for (int k = 0; k < 3 * od->nm; k++) t[k] = od->f[k] - t[k];
+    res->rel_residual = rel_to_f(od, residual_from_t(od, t, v, sum));
+}
+
 static int stop_change(double dnorm, double vnorm, double tol)
 {
     return dnorm < tol * vnorm;                  /* eq. 27 */
@@ -388,10 +399,7 @@ static OdResult scheme1(OdSystem *od, double *v, OdStop stop, double tol, int ma
     double *t = od->work, *vn = od->work + n3;
     OdResult res = {0};
     for (int l = 0;; l++) {
-        offdiag_mul(od, v, t);
-        res.matvecs++;
-        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
-        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, NULL));
+        sweep_rhs(od, v, t, NULL, &res);
         if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
         if (l == max_iter) break;
         for (int r = 0; r < nm; r++) blk_mul(od->dinv + 9 * (size_t)r, t + 3 * (size_t)r, vn + 3 * (size_t)r); /* eq. 26 */
@@ -439,11 +447,8 @@ static OdResult scheme2_paper(OdSystem *od, double *v, OdStop stop, double tol, 
     double *t = od->work, *vn = od->work + n3;
     OdResult res = {0};
     for (int l = 0;; l++) {
-        offdiag_mul(od, v, t);
-        res.matvecs++;
-        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
         double Ft[3];                                           /* eq. 31 at v^{l-1} */
-        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, Ft));
+        sweep_rhs(od, v, t, Ft, &res);
         if (od->s2_exclude_body) for (int a = 0; a < 3; a++) Ft[a] -= od->fbody[a];
         if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
         if (l == max_iter) break;
@@ -486,10 +491,7 @@ static OdResult scheme2_consistent(OdSystem *od, double *v, OdStop stop, double 
     for (int r = 0; r < nm; r++) for (int a = 0; a < 3; a++) fsum[a] += od->f[3 * r + a];
     OdResult res = {0};
     for (int l = 0;; l++) {
-        offdiag_mul(od, v, t);
-        res.matvecs++;
-        for (int k = 0; k < n3; k++) t[k] = od->f[k] - t[k];
-        res.rel_residual = rel_to_f(od, residual_from_t(od, t, v, NULL));
+        sweep_rhs(od, v, t, NULL, &res);
         if (stop == OD_STOP_RESIDUAL && res.rel_residual < tol) { res.converged = 1; break; }
         if (l == max_iter) break;
         double net[3] = {fsum[0], fsum[1], fsum[2]}, mean[3] = {0.0, 0.0, 0.0};
