@@ -153,14 +153,17 @@ static void refresh_index(Bonds *b, const System *s)
     for (int i = 0; i < s->n; i++) b->index[s->id[i]] = i;
 }
 
-/* The separation x_a - x_b (minimum image, z = 0) of spring p of colloid c. */
-static void spring_vector(const Bonds *b, const System *s, int c, int p, int *ia, int *ib, double d[3])
+/* Spring p of colloid c: the separation d = x_a - x_b (minimum image, z = 0) and the
+ * force F on a (-F on b). */
+static void spring_of(const Bonds *b, const System *s, int c, int p, int *ia, int *ib, double d[3],
+                      double F[3])
 {
     *ia = b->index[b->ids[BOND_P * c + PAIRS[p][0]]];
     *ib = b->index[b->ids[BOND_P * c + PAIRS[p][1]]];
     for (int a = 0; a < 3; a++) d[a] = s->x[3 * *ia + a] - s->x[3 * *ib + a];
     box_min_image(&s->box, d, NULL);
     d[2] = 0.0;
+    bonds_spring(b->H, b->side, d, F);
 }
 
 void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
@@ -170,8 +173,7 @@ void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
         for (int p = 0; p < 3; p++) {
             int ia, ib;
             double d[3], F[3];
-            spring_vector(b, s, c, p, &ia, &ib, d);
-            bonds_spring(b->H, b->side, d, F);
+            spring_of(b, s, c, p, &ia, &ib, d, F);
             const int ra = od->row_of[ia], rb = od->row_of[ib];
             for (int a = 0; a < 2; a++) {          /* eq. 18 with eqs 50-51 */
                 od->f[3 * ra + a] += F[a];
@@ -190,8 +192,7 @@ void bonds_forces(Bonds *b, System *s, PairVirial *pv)
         for (int p = 0; p < 3; p++) {
             int ia, ib;
             double d[3], F[3];
-            spring_vector(b, s, c, p, &ia, &ib, d);
-            bonds_spring(b->H, b->side, d, F);
+            spring_of(b, s, c, p, &ia, &ib, d, F);
             for (int a = 0; a < 2; a++) { s->f[3 * ia + a] += F[a]; s->f[3 * ib + a] -= F[a]; }
             if (!pv) continue;
             double t[9];
@@ -249,8 +250,7 @@ void bonds_sample(Bonds *b, const System *s, long long prod_step)
         for (int p = 0; p < 3; p++) {
             int ia, ib;
             double d[3], F[3];
-            spring_vector(b, s, c, p, &ia, &ib, d);
-            bonds_spring(b->H, b->side, d, F);
+            spring_of(b, s, c, p, &ia, &ib, d, F);
             const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
             e2 += (r - b->side) * (r - b->side);
             b->ext_max = fmax(b->ext_max, fabs(r - b->side) / b->side);

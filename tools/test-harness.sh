@@ -357,6 +357,7 @@ mkdir -p "$rx/experiments/t/e"
 cp -r "$tools" "$rx/tools"
 cat > "$rx/fake-dpd" <<'EOF2'
 #!/usr/bin/env bash
+[ "${1:-}" = --version ] && { echo "dpd fake1"; exit 0; }
 out=; resume=0; args=("$@")
 for ((i = 0; i < $#; i++)); do
     case ${args[i]} in --out) out=${args[i + 1]} ;; --resume) resume=1 ;; esac
@@ -432,6 +433,30 @@ else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
 T "run-experiment: unknown option refused" 1 RX "$rx/tools/run-experiment" t/e quick --reanalyze
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
 T "run-experiment --reanalyse: back to the original arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
+# carry-partial: an interrupted run's finished simulations committed (not the unfinished one,
+# not run.h5 or checkpoints) and resumed from a clone of that commit on "another machine"
+T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+echo big > "$rx/results/t/e/.quick.partial/runs/a/run.h5"; echo big > "$rx/results/t/e/.quick.partial/runs/b/checkpoint.dpd"
+cp "$tools/../.gitignore" "$rx/.gitignore"
+T "carry-partial: refuses another binary" 1 env DPD_BIN="$rx/fake-dpd2" "$rx/tools/carry-partial" t/e quick
+T "carry-partial: stages the finished simulations" 0 env DPD_BIN="$rx/fake-dpd" "$rx/tools/carry-partial" t/e quick
+staged=$(git -C "$rx" diff --cached --name-only | tr '\n' ' ')
+case $staged in
+    *.quick.partial/.stamp*.quick.partial/RESUME.txt*runs/a/summary.tsv*) ok "carry-partial: stamp, RESUME.txt and the finished run staged" ;;
+    *) bad "carry-partial: staged: $staged" ;;
+esac
+case $staged in
+    *runs/b/*|*run.h5*|*checkpoint*) bad "carry-partial: staged the unfinished run or a large file: $staged" ;;
+    *) ok "carry-partial: no unfinished run, run.h5 or checkpoint staged" ;;
+esac
+in_file "carry-partial: RESUME.txt names the binary's commit" "$rx/results/t/e/.quick.partial/RESUME.txt" 'built from commit fake1'
+( cd "$rx" && git add .gitignore experiments tools && git -c user.name=t -c user.email=t@t commit -qm carry ) >/dev/null 2>&1
+rm -rf "$root/rx2"; git clone -q "$rx" "$root/rx2" 2>/dev/null
+: > "$log"
+T "carry-partial: resumed in a clone" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$root/rx2/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "carry-partial: the clone reran only the unfinished simulation"
+else bad "carry-partial: the clone ran: $(tr '\n' ' ' < "$log")"; fi
+in_file "carry-partial: the clone's result is complete" "$root/rx2/results/t/e/quick/summary.tsv" '^q_b	1.5	0.1$'
 
 # ---------------------------------------------------------------- verify-result
 # The analysis redone from the kept runs (no simulation): fresh while nothing
