@@ -365,6 +365,7 @@ done
 mkdir -p "$out"; echo run > "$out/INCOMPLETE"
 echo "$(basename "$out") resume=$resume" >> "$FAKE_LOG"
 [ "$(basename "$out")" = "${FAKE_FAIL:-}" ] && exit 137
+sleep "${FAKE_SLEEP:-0}"
 printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
 printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
 rm "$out/INCOMPLETE"
@@ -433,6 +434,15 @@ else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
 T "run-experiment: unknown option refused" 1 RX "$rx/tools/run-experiment" t/e quick --reanalyze
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
 T "run-experiment --reanalyse: back to the original arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
+# dpd_run's lock: two processes asked for the same simulation at once run it once (the second
+# waits for the first, then keeps its result)
+lk="$root/lock-out"; mkdir -p "$lk"; : > "$log"
+lockrun() { ( cd "$rx/experiments/t/e" && env -u DPD_ROOT DPD="$rx/fake-dpd" OUT="$lk" TIER=quick DPD_ROOT="$rx" \
+    FAKE_LOG="$log" FAKE_SLEEP=1 bash -c '. "$DPD_ROOT/tools/lib/exp.sh"; dpd_run a s.cfg --set x=1' ) 2>> "$root/lock.err"; }
+lockrun & lockrun & wait
+if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 " ]; then ok "dpd_run: two processes, one simulation"
+else bad "dpd_run: two processes ran: $(tr '\n' ' ' < "$log")" "$root/lock.err"; fi
+in_file "dpd_run: the second process kept the first's simulation" "$root/lock.err" 'already complete, kept'
 # carry-partial: an interrupted run's finished simulations committed (not the unfinished one,
 # not run.h5 or checkpoints) and resumed from a clone of that commit on "another machine"
 T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick

@@ -18,7 +18,21 @@ mkdir -p "$OUT/runs"
 # made before it was recorded are matched by their arguments alone).
 # DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run
 # marks the result stale ($OUT/.verify-stale) and stops the script.
+# One simulation at a time per name: dpd_run holds a lock ($OUT/.locks/NAME) while it decides
+# and runs, so a second process working through the same partial result (another copy of the
+# experiment's runs started in reverse order, to use the second core with one thread each)
+# waits for a simulation the first is running and then keeps it instead of running it twice.
 dpd_run() {
+    local lock
+    mkdir -p "$OUT/.locks"
+    exec {lock}>"$OUT/.locks/$1"
+    flock "$lock"
+    _dpd_run "$@"     # under set -e a failure exits here, and the lock goes with the process
+    local rc=$?
+    exec {lock}>&-
+    return $rc
+}
+_dpd_run() {
     local name=$1 scene=$2; shift 2
     local dir=$OUT/runs/$name args sha
     args=$(printf '%s\n' "$scene" "$@" | _args_norm)
