@@ -443,6 +443,29 @@ lockrun & lockrun & wait
 if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 " ]; then ok "dpd_run: two processes, one simulation"
 else bad "dpd_run: two processes ran: $(tr '\n' ' ' < "$log")" "$root/lock.err"; fi
 in_file "dpd_run: the second process kept the first's simulation" "$root/lock.err" 'already complete, kept'
+# --side: a second process on the partial runs the simulations from the other end and stops
+# where it meets the first; the main attempt then keeps them all
+mkdir -p "$rx/experiments/t/s"
+cat > "$rx/experiments/t/s/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+if [ "${DPD_SIDE:-0}" = 1 ]; then for n in c b a; do dpd_run $n s.cfg --set x=$n; done; exit 0; fi
+for n in a b c; do dpd_run $n s.cfg --set x=$n; done
+for n in a b c; do emit_from $n q q_$n; done
+EOF2
+chmod +x "$rx/experiments/t/s/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/s/"
+T "run-experiment --side: refused without a main attempt" 1 RX "$rx/tools/run-experiment" t/s quick --side
+T "run-experiment --side: refused where run.sh has no side order" 1 RX "$rx/tools/run-experiment" t/e quick --side
+T "run-experiment --side: main attempt interrupted at b" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/s quick
+: > "$log"
+T "run-experiment --side: side process" 0 RX "$rx/tools/run-experiment" t/s quick --side
+if [ "$(tr '\n' ' ' < "$log")" = "c resume=1 b resume=1 " ]; then ok "run-experiment --side: ran c and b, stopped at a"
+else bad "run-experiment --side ran: $(tr '\n' ' ' < "$log")"; fi
+if [ ! -e "$rx/results/t/s/quick/summary.tsv" ]; then ok "run-experiment --side: publishes nothing"; else bad "run-experiment --side: published a result"; fi
+: > "$log"
+T "run-experiment --side: main attempt completes" 0 RX "$rx/tools/run-experiment" t/s quick
+if [ ! -s "$log" ]; then ok "run-experiment --side: the main attempt kept the side's simulations"; else bad "run-experiment after --side ran: $(tr '\n' ' ' < "$log")"; fi
+if [ ! -e "$rx/results/t/s/quick/.locks" ]; then ok "run-experiment: no locks left in the result"; else bad "run-experiment: .locks in the result"; fi
 # carry-partial: an interrupted run's finished simulations committed (not the unfinished one,
 # not run.h5 or checkpoints) and resumed from a clone of that commit on "another machine"
 T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick

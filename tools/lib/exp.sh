@@ -19,14 +19,23 @@ mkdir -p "$OUT/runs"
 # DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run
 # marks the result stale ($OUT/.verify-stale) and stops the script.
 # One simulation at a time per name: dpd_run holds a lock ($OUT/.locks/NAME) while it decides
-# and runs, so a second process working through the same partial result (another copy of the
-# experiment's runs started in reverse order, to use the second core with one thread each)
-# waits for a simulation the first is running and then keeps it instead of running it twice.
+# and runs, so a second process working through the same partial result waits for a simulation
+# the first is running and then keeps it instead of running it twice.
+# DPD_SIDE=1 (tools/run-experiment --side: run.sh lists its simulations in another order, to use
+# the second core with one thread each): the side process stops at the first simulation that is
+# running or complete, where it has met the main process.
 dpd_run() {
     local lock
     mkdir -p "$OUT/.locks"
     exec {lock}>"$OUT/.locks/$1"
-    flock "$lock"
+    if [ "${DPD_SIDE:-0}" = 1 ]; then
+        if ! flock -n "$lock" || { [ -s "$OUT/runs/$1/summary.tsv" ] && [ ! -e "$OUT/runs/$1/INCOMPLETE" ]; }; then
+            echo "dpd_run (side): $1 is running or complete: the side process stops here" >&2
+            exit 0
+        fi
+    else
+        flock "$lock"
+    fi
     _dpd_run "$@"     # under set -e a failure exits here, and the lock goes with the process
     local rc=$?
     exec {lock}>&-
@@ -83,6 +92,7 @@ _verify_refuse() {
 # Tables 1 and 2 come from one set of TCAF runs). The copy records its origin
 # in REUSED_FROM; tools/run-experiment does not count its CPU time again.
 reuse_run() {
+    [ "${DPD_SIDE:-0}" = 1 ] && return 0    # a copy, not a simulation: the main process makes it
     local name=$1 id=$2 tier=$3 src_name=${4:-$1}
     local src=$DPD_ROOT/results/$id/$tier/runs/$src_name dir=$OUT/runs/$1
     if [ ! -s "$src/summary.tsv" ] || [ -e "$src/INCOMPLETE" ] || [ -e "$DPD_ROOT/results/$id/$tier/INCOMPLETE" ]; then

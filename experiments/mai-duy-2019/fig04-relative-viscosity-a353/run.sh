@@ -31,6 +31,38 @@ case $TIER in
 esac
 rep=(--set "pairs.[0].a=$A")
 rep3=(--set "pairs.[0].a=$A" --set "pairs.[1].a=$A" --set "pairs.[2].a=$A")
+# the simulations of lattice pair number $1 ($2 = "kp:kq", after lattice_pair): the shear run and,
+# at a TCAF pair, the free and constrained TCAF runs and the high-k runs (nax: the axis shells
+# n = 1 .. 1 + the sphere's n, k = 2 pi n / L; the cube's k is the shell n = kq)
+pair_simulations() {
+    local i=$1 pair=$2 nax
+    dpd_run susp_$tag "$HERE/suspension-shear.cfg" "${shear[@]}" "${rep3[@]}" "${geo[@]}" \
+        --set "colloids.per_axis=$kq" --set "seed=$((40200 + i))"
+    [[ " $TCAF_PAIRS " == *" $pair "* ]] || return 0
+    if [ "$TIER" = paper ] && [ "$A" = 3.53 ]; then
+        # the same scenes and settings as tab01-wavelengths' paper tier (the scenes' a = 3.53):
+        # its simulations, not new ones (tools/lib/exp.sh reuse_run; experiments.mk orders them)
+        t01=$(lattice_pair "$pair" 4; echo "$tag")   # tab01's tag (4 decimals)
+        reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper free_$t01
+        reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper constrained_$t01
+    else
+        dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" --set "seed=$((40300 + 2 * i))"
+        dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
+            --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
+    fi
+    nax=$(awk -v k="$kq" 'BEGIN { n = int(k * (4 * 3.14159265358979 / 3)^(1/3)) + 2; print (n > 31 ? 31 : n) }')
+    dpd_run freehk_$tag "$T02/free.cfg" "${hik[@]}" "${rep3[@]}" "${geo[@]}" --set "measure.tcaf.axis_nmax=$nax" \
+        --set "seed=$((40500 + 2 * i))"
+    dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
+        --set "box=[$L,$L,$L]" --set "measure.tcaf.axis_nmax=$nax" --set "seed=$((40501 + 2 * i))"
+}
+# tools/run-experiment --side: a second process on the same partial result runs the pairs' simulations
+# from the last pair down, until it meets the main process (tools/lib/exp.sh dpd_run)
+if [ "${DPD_SIDE:-0}" = 1 ]; then
+    pairs=($PAIRS)
+    for ((j = ${#pairs[@]} - 1; j >= 0; j--)); do lattice_pair "${pairs[j]}" 2; pair_simulations $j "${pairs[j]}"; done
+    exit 0
+fi
 dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent
@@ -56,8 +88,7 @@ printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\ts
 i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 2
-    dpd_run susp_$tag "$HERE/suspension-shear.cfg" "${shear[@]}" "${rep3[@]}" "${geo[@]}" \
-        --set "colloids.per_axis=$kq" --set "seed=$((40200 + i))"
+    pair_simulations $i "$pair"
     np=$(get susp_$tag particles | cut -f1)
     awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
     emit_from susp_$tag viscosity eta_susp_$tag
@@ -66,29 +97,12 @@ for pair in $PAIRS; do
     emit_ratio eta_r_original_$tag susp_$tag viscosity solvent viscosity
     if [[ " $TCAF_PAIRS " == *" $pair "* ]]; then
         # the TCAF construction of tab02-effective-viscosity at this phi and repulsion
-        if [ "$TIER" = paper ] && [ "$A" = 3.53 ]; then
-            # the same scenes and settings as tab01-wavelengths' paper tier (the scenes' a = 3.53):
-            # its simulations, not new ones (tools/lib/exp.sh reuse_run; experiments.mk orders them)
-            t01=$(lattice_pair "$pair" 4; echo "$tag")   # tab01's tag (4 decimals)
-            reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper free_$t01
-            reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper constrained_$t01
-        else
-            dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" --set "seed=$((40300 + 2 * i))"
-            dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
-                --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
-        fi
         emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
         emit_from constrained_$tag tcaf_eta_k0 eta_eff_$tag
         emit_ratio eta_r_tcaf_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
         lc=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", L / k }')                          # eq. 31
         ls=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", (3 / (4 * 3.14159265358979 * k^3 / L^3))^(1/3) }')  # eq. 32
-        # eta(k) at the cube and sphere k: the axis shells n = 1 .. 1 + the sphere's n (k = 2 pi n / L;
-        # the cube's k is the shell n = kq), free system and solvent alone in the same box
-        nax=$(awk -v k="$kq" 'BEGIN { n = int(k * (4 * 3.14159265358979 / 3)^(1/3)) + 2; print (n > 31 ? 31 : n) }')
-        dpd_run freehk_$tag "$T02/free.cfg" "${hik[@]}" "${rep3[@]}" "${geo[@]}" --set "measure.tcaf.axis_nmax=$nax" \
-            --set "seed=$((40500 + 2 * i))"
-        dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
-            --set "box=[$L,$L,$L]" --set "measure.tcaf.axis_nmax=$nax" --set "seed=$((40501 + 2 * i))"
+        # eta(k) at the cube and sphere k (the high-k runs), free system and solvent alone in the same box
         emit_from freehk_$tag temperature temperature_freehk_$tag
         for sys in free solvent; do
             awk -F'\t' -v lambda="$lc" -v name="eta_${sys}_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
