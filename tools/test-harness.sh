@@ -449,17 +449,18 @@ mkdir -p "$rx/experiments/t/s"
 cat > "$rx/experiments/t/s/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
-if [ "${DPD_SIDE:-0}" = 1 ]; then for n in c b a; do dpd_run $n s.cfg --set x=$n; done; exit 0; fi
-for n in a b c; do dpd_run $n s.cfg --set x=$n; done
-for n in a b c; do emit_from $n q q_$n; done
+pair_simulations() { dpd_run s_$tag s.cfg --set x=$1; }
+side_order 2 pair_simulations 3:3 4:4 5:5   # DPD_SIDE: phi0.05, phi0.03, phi0.01
+i=0
+for p in 3:3 4:4 5:5; do lattice_pair $p 2; pair_simulations $i; emit_from s_$tag q q_$tag; i=$((i + 1)); done
 EOF2
 chmod +x "$rx/experiments/t/s/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/s/"
 T "run-experiment --side: refused without a main attempt" 1 RX "$rx/tools/run-experiment" t/s quick --side
 T "run-experiment --side: refused where run.sh has no side order" 1 RX "$rx/tools/run-experiment" t/e quick --side
-T "run-experiment --side: main attempt interrupted at b" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/s quick
+T "run-experiment --side: main attempt interrupted at the second pair" 1 RX FAKE_FAIL=s_phi0.03 "$rx/tools/run-experiment" t/s quick
 : > "$log"
 T "run-experiment --side: side process" 0 RX "$rx/tools/run-experiment" t/s quick --side
-if [ "$(tr '\n' ' ' < "$log")" = "c resume=1 b resume=1 " ]; then ok "run-experiment --side: ran c and b, stopped at a"
+if [ "$(tr '\n' ' ' < "$log")" = "s_phi0.05 resume=1 s_phi0.03 resume=1 " ]; then ok "run-experiment --side: ran the last two pairs from the last, stopped at the first"
 else bad "run-experiment --side ran: $(tr '\n' ' ' < "$log")"; fi
 if [ ! -e "$rx/results/t/s/quick/summary.tsv" ]; then ok "run-experiment --side: publishes nothing"; else bad "run-experiment --side: published a result"; fi
 : > "$log"

@@ -172,6 +172,18 @@ lattice_pair() {
     geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
 }
 
+# side_order DIGITS FUNCTION PAIR...: for tools/run-experiment --side (DPD_SIDE=1), run
+# FUNCTION INDEX PAIR for each lattice pair from the last down (after lattice_pair PAIR DIGITS),
+# then end the script; FUNCTION runs the simulations of one pair, which the main order runs
+# first up. Without DPD_SIDE it does nothing.
+side_order() {
+    [ "${DPD_SIDE:-0}" = 1 ] || return 0
+    local digits=$1 fn=$2 j; shift 2
+    local pairs=("$@")
+    for ((j = ${#pairs[@]} - 1; j >= 0; j--)); do lattice_pair "${pairs[j]}" "$digits"; "$fn" $j "${pairs[j]}"; done
+    exit 0
+}
+
 # emit_drag_torque ROW "F se" "T se" F_THEORY T_THEORY "U se" - the Pan et al.
 # table rows: drag_rowROW, torque_rowROW, their theories (no error) and the
 # ratios simulated / theory, whose errors combine the simulated value's and that

@@ -58,11 +58,7 @@ pair_simulations() {
 }
 # tools/run-experiment --side: a second process on the same partial result runs the pairs' simulations
 # from the last pair down, until it meets the main process (tools/lib/exp.sh dpd_run)
-if [ "${DPD_SIDE:-0}" = 1 ]; then
-    pairs=($PAIRS)
-    for ((j = ${#pairs[@]} - 1; j >= 0; j--)); do lattice_pair "${pairs[j]}" 2; pair_simulations $j "${pairs[j]}"; done
-    exit 0
-fi
+side_order 2 pair_simulations $PAIRS   # DPD_SIDE
 dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent

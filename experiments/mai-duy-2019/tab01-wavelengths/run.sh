@@ -7,7 +7,6 @@
 # tab02-effective-viscosity, error propagated), at the phi of the tier.
 . "$DPD_ROOT/tools/lib/exp.sh"
 T02=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/../tab02-effective-viscosity
-"$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
 # TCAF pairs "kp:kq": the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a
 # box 15 kq / kp (same lattice spacing, particles per colloid cell and phi)
 case $TIER in
@@ -20,12 +19,18 @@ case $TIER in
     reduced) PAIRS="3:3 8:8 5:5 10:10"; tcaf=(--set equilibration=500 --set steps=3000) ;;
     paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; tcaf=() ;;
 esac
+# the free and constrained TCAF runs of lattice pair number $1 ($2 = "kp:kq", after lattice_pair)
+pair_simulations() {
+    dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${geo[@]}" --set "seed=$((60300 + 2 * $1))"
+    dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
+        --set "seed=$((60301 + 2 * $1))"
+}
+side_order 4 pair_simulations $PAIRS   # tools/run-experiment --side (DPD_SIDE): the last phi first
+"$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
 i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
-    dpd_run free_$tag "$T02/free.cfg" "${tcaf[@]}" "${geo[@]}" --set "seed=$((60300 + 2 * i))"
-    dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
-        --set "seed=$((60301 + 2 * i))"
+    pair_simulations $i "$pair"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
     emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
