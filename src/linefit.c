@@ -21,6 +21,15 @@ static int column_of(char *header, const char *name)
     return -1;
 }
 
+/* *p grown to cap doubles; on failure *p keeps its old block (the caller frees it) */
+static int grow(double **p, int cap)
+{
+    double *q = realloc(*p, (size_t)cap * sizeof *q);
+    if (!q) return -1;
+    *p = q;
+    return 0;
+}
+
 int cmd_fit_line(int argc, char **argv)
 {
     const char *file = NULL, *xn = NULL, *yn = NULL, *sn = NULL;
@@ -49,8 +58,8 @@ int cmd_fit_line(int argc, char **argv)
     FILE *f = fopen(file, "r");
     if (!f) { fprintf(stderr, "dpd fit-line: cannot open '%s'\n", file); return 4; }
     char line[8192];
-    int cx = -1, cy = -1, cs = -1, n = 0, cap = 64, lineno = 0;
-    double *x = malloc(cap * sizeof *x), *y = malloc(cap * sizeof *y), *w = malloc(cap * sizeof *w);
+    int cx = -1, cy = -1, cs = -1, n = 0, cap = 0, lineno = 0;
+    double *x = NULL, *y = NULL, *w = NULL;
     int status = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
@@ -74,8 +83,12 @@ int cmd_fit_line(int argc, char **argv)
         const double xv = val[cx], yv = val[cy], se = val[cs];
         if (!(xv >= lo && xv <= hi) || !isfinite(yv) || !(se > 0.0) || !isfinite(se)) continue;
         if (n == cap) {
-            cap *= 2;
-            x = realloc(x, cap * sizeof *x); y = realloc(y, cap * sizeof *y); w = realloc(w, cap * sizeof *w);
+            cap = cap ? 2 * cap : 64;
+            if (grow(&x, cap) || grow(&y, cap) || grow(&w, cap)) {
+                fprintf(stderr, "dpd fit-line: %s line %d: out of memory for %d rows\n", file, lineno, cap);
+                status = 1;
+                break;
+            }
         }
         x[n] = xv; y[n] = yv; w[n] = 1.0 / (se * se); n++;
     }
