@@ -10,7 +10,7 @@ f1011=$DPD_ROOT/results/phan-thien-2016/fig10-11-colloid-structure/$TIER/summary
 [ -f "$f1011" ] || { echo "fig13: needs $f1011" >&2; exit 1; }
 case $TIER in
     quick) rates="0.25 1 4 33"; tier=(--set equilibration=300 --set steps=8000) ;;
-    paper) rates="0.25 1 4 33"; tier=(--set equilibration=1000 --set steps=20000) ;;   # reduced: CPU budget
+    paper) rates="0.25 0.5 1 2 4 8 16 33"; tier=(--set equilibration=1000 --set steps=40000) ;;
 esac
 a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
 emit colloid_radius "$a" 0
