@@ -3,7 +3,11 @@
 SHELL := /bin/bash
 TIER ?= quick
 CC ?= gcc
-GIT_DESCRIBE := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+# The simulator's version, compiled into every run's provenance (git_commit): the last commit that
+# changed its source (src/ or this Makefile), "-dirty" while these have uncommitted changes. Commits
+# of experiments, results or documents leave the binary, its version and its sha256 unchanged.
+SRC_COMMIT := $(shell git log -1 --format=%h -- src Makefile 2>/dev/null)
+GIT_DESCRIBE := $(if $(SRC_COMMIT),$(SRC_COMMIT)$(shell git diff --quiet HEAD -- src Makefile 2>/dev/null || echo -dirty),unknown)
 OPT ?= -O2
 WARN := -std=c11 -Wall -Wextra -Werror
 PKGS := gsl hdf5 libconfig
@@ -37,6 +41,12 @@ $(BUILD)/%.o: src/%.c src/*.h | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)
 	@echo "CC $<"
 	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL)"' -c $< -o $@
+
+# the objects that print the version are rebuilt when it changes, not only when their source does
+# (an edit compiled before its commit would otherwise keep the older commit's name)
+VERSION_FILE := $(BUILD)/version
+$(shell mkdir -p $(BUILD) && { [ "$$(cat $(VERSION_FILE) 2>/dev/null)" = '$(GIT_DESCRIBE)' ] || echo '$(GIT_DESCRIBE)' > $(VERSION_FILE); })
+$(addprefix $(BUILD)/,main.o run.o output.o bare/main.o bare/run.o bare/output.o): $(VERSION_FILE)
 
 $(BUILD)/libdpd.a: $(OBJ)
 	ar rcs $@ $^
