@@ -8,6 +8,9 @@ DPD_ROOT=${DPD_ROOT:-$(dirname "$DPD_TOOLS")}
 DPD_ROOT=$(cd "$DPD_ROOT" && pwd -P) || { echo "DPD_ROOT not a directory" >&2; exit 2; }
 BANDS_AWK="$_dpd_lib_dir/bands.awk"
 
+# partial_stamp TIER BINARY: the stamp of an interrupted run (results/P/E/.TIER.partial/.stamp):
+# the tier and the simulator binary's sha256; tools/run-experiment resumes only with the same one
+partial_stamp() { { echo "tier $1"; sha256sum "$2" | cut -c1-64; } | sha256sum | cut -c1-64; }
 die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 
 # normalise an experiment id: strip experiments/ or results/ prefix, trailing /
