@@ -467,6 +467,18 @@ if [ ! -e "$rx/results/t/s/quick/summary.tsv" ]; then ok "run-experiment --side:
 T "run-experiment --side: main attempt completes" 0 RX "$rx/tools/run-experiment" t/s quick
 if [ ! -s "$log" ]; then ok "run-experiment --side: the main attempt kept the side's simulations"; else bad "run-experiment after --side ran: $(tr '\n' ' ' < "$log")"; fi
 if [ ! -e "$rx/results/t/s/quick/.locks" ]; then ok "run-experiment: no locks left in the result"; else bad "run-experiment: .locks in the result"; fi
+# a side process resumed on another day: the end an earlier side process finished is passed
+# over, not taken for the meeting point
+rm -rf "$rx/results/t/s"
+T "run-experiment --side: main attempt interrupted at the first pair" 1 RX FAKE_FAIL=s_phi0.01 "$rx/tools/run-experiment" t/s quick
+T "run-experiment --side: side process interrupted at its second pair (the simulator's status)" 137 RX FAKE_FAIL=s_phi0.03 "$rx/tools/run-experiment" t/s quick --side
+: > "$log"
+T "run-experiment --side: side process resumed" 0 RX "$rx/tools/run-experiment" t/s quick --side
+if [ "$(tr '\n' ' ' < "$log")" = "s_phi0.03 resume=1 s_phi0.01 resume=1 " ]; then ok "run-experiment --side: passes over the finished end, runs the rest"
+else bad "run-experiment --side resumed ran: $(tr '\n' ' ' < "$log")"; fi
+: > "$log"
+T "run-experiment --side: main attempt completes after the resumed side" 0 RX "$rx/tools/run-experiment" t/s quick
+if [ ! -s "$log" ]; then ok "run-experiment --side: nothing left for the main attempt"; else bad "run-experiment after resumed --side ran: $(tr '\n' ' ' < "$log")"; fi
 # carry-partial: an interrupted run's finished simulations committed (not the unfinished one,
 # not run.h5 or checkpoints) and resumed from a clone of that commit on "another machine"
 T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick

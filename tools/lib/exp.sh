@@ -23,16 +23,28 @@ mkdir -p "$OUT/runs"
 # the first is running and then keeps it instead of running it twice.
 # DPD_SIDE=1 (tools/run-experiment --side: run.sh lists its simulations in another order, to use
 # the second core with one thread each): the side process stops at the first simulation that is
-# running or complete, where it has met the main process.
+# running, or complete once it has run one itself: there it has met the main process. Complete
+# simulations before its first one (the end an earlier side process finished) are passed over.
+_SIDE_RAN=0
 dpd_run() {
     local lock
     mkdir -p "$OUT/.locks"
     exec {lock}>"$OUT/.locks/$1"
     if [ "${DPD_SIDE:-0}" = 1 ]; then
-        if ! flock -n "$lock" || { [ -s "$OUT/runs/$1/summary.tsv" ] && [ ! -e "$OUT/runs/$1/INCOMPLETE" ]; }; then
-            echo "dpd_run (side): $1 is running or complete: the side process stops here" >&2
+        if ! flock -n "$lock"; then
+            echo "dpd_run (side): $1 is running: the side process stops here" >&2
             exit 0
         fi
+        if [ -s "$OUT/runs/$1/summary.tsv" ] && [ ! -e "$OUT/runs/$1/INCOMPLETE" ]; then
+            if [ "$_SIDE_RAN" = 1 ]; then
+                echo "dpd_run (side): $1 is complete: the side process stops here" >&2
+                exit 0
+            fi
+            echo "dpd_run (side): $1 already complete, passed over" >&2
+            exec {lock}>&-
+            return 0
+        fi
+        _SIDE_RAN=1
     else
         flock "$lock"
     fi
