@@ -394,6 +394,8 @@ T "run-experiment: second attempt completes" 0 RX "$rx/tools/run-experiment" t/e
 if [ "$(cat "$log")" = "b resume=1" ]; then ok "run-experiment: resumed, reran only the unfinished simulation"
 else bad "run-experiment: resume reran: $(tr '\n' ' ' < "$log")"; fi
 T "check: resumed experiment passes" 0 env DPD_ROOT="$rx" "$rx/tools/check" t/e
+in_file "run-experiment: provenance counts the simulations" "$rx/results/t/e/quick/provenance.tsv" '^simulations	2$'
+in_file "run-experiment: provenance counts the one finished by the earlier attempt" "$rx/results/t/e/quick/provenance.tsv" '^simulations_from_earlier_attempts	1$'
 if [ "$(grep -c '^q_' "$rx/results/t/e/quick/summary.tsv")" = 2 ]; then ok "run-experiment: no duplicate summary rows after resume"
 else bad "run-experiment: summary rows" "$rx/results/t/e/quick/summary.tsv"; fi
 : > "$log"
