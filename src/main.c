@@ -19,12 +19,14 @@ static void usage(FILE *f)
         "\n"
         "usage:\n"
         "  dpd run SCENE [--set key=value ...] [--out DIR] [--threads N] [--quiet]\n"
-        "          [--checkpoint-every N [--checkpoint-wall S]] [--resume]\n"
+        "          [--checkpoint-every N [--checkpoint-wall S]] [--resume] [--dry-run]\n"
         "      run a libconfig scene; --set overrides any key (e.g. --set pairs.[0].a=6.5,\n"
         "      --set measure.profile.bins=40); results go to DIR (default: out/);\n"
         "      --checkpoint-every N writes DIR/checkpoint.dpd every N steps (SIGINT and\n"
         "      SIGTERM write one too), with --checkpoint-wall S not sooner than S wall\n"
-        "      seconds after the last one; --resume continues from it, bit for bit\n"
+        "      seconds after the last one; --resume continues from it, bit for bit;\n"
+        "      --dry-run sets the scene up and prints its particles and steps (the cost\n"
+        "      of a run is about particles x steps), writing nothing\n"
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
@@ -128,6 +130,7 @@ int main(int argc, char **argv)
             if (*end || end == v || !(w >= 0 && w <= 1e7)) { fprintf(stderr, "dpd run: --checkpoint-wall %s: allowed 0 to 1e7 seconds\n", v); goto done; }
             opt.checkpoint_wall = w;
         } else if (!strcmp(a, "--resume")) opt.resume = 1;
+        else if (!strcmp(a, "--dry-run")) opt.dry_run = 1;
         else if (!strncmp(a, "--set=", 6)) sets[opt.noverrides++] = (char *)a + 6;
         else if (!strcmp(a, "--quiet")) opt.quiet = 1;
         else if (a[0] == '-' && a[1]) { fprintf(stderr, "dpd run: unknown option %s\n", a); usage(stderr); goto done; }

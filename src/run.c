@@ -74,6 +74,7 @@ typedef struct {
     long long steps_done;
     int threads;
     long builds;
+    long long resumed_at;     /* the step a resumed run continued from (-1: not resumed) */
 } RunStats;
 
 static void provenance_text(char **buf, size_t *len, const RunOptions *opt, const System *s,
@@ -94,6 +95,7 @@ static void provenance_text(char **buf, size_t *len, const RunOptions *opt, cons
     fprintf(m, "flags\t%s\n", DPD_CFLAGS);
     fprintf(m, "threads\t%d\n", st->threads);
     fprintf(m, "seed\t%u\n", s->seed);
+    if (st->resumed_at >= 0) fprintf(m, "resumed_at_step\t%lld\n", st->resumed_at);
     fprintf(m, "cpu_seconds\t%.3f\n", cpu_now() - st->cpu0);
     fprintf(m, "wall_seconds\t%.3f\n", wall_now() - st->wall0);
     fprintf(m, "peak_rss_kb\t%ld\n", ru.ru_maxrss);
@@ -334,6 +336,15 @@ int run_scene(const RunOptions *opt)
         scene_free(&sc);
         return 2;
     }
+    if (opt->dry_run) {   /* the size of the run, for planning (tools/plan) */
+        printf("particles\t%d\nequilibration\t%lld\nsteps\t%lld\noverdamped\t%d\n", s.n,
+               (long long)rc.equilibration, (long long)rc.steps, rc.overdamped ? 1 : 0);
+        colloid_free(rc.colloids);
+        bonds_free(rc.bonds);
+        system_free(&s);
+        scene_free(&sc);
+        return 0;
+    }
 #ifdef _OPENMP
     /* the m = 0 solvers are serial: extra threads would only spin between the
      * short parallel loops (doubling the CPU time, and far worse on a busy
@@ -352,7 +363,7 @@ int run_scene(const RunOptions *opt)
         system_free(&s); scene_free(&sc);
         return 4;
     }
-    RunStats st = {.wall0 = wall_now(), .cpu0 = cpu_now(), .threads = threads_in_use()};
+    RunStats st = {.wall0 = wall_now(), .cpu0 = cpu_now(), .threads = threads_in_use(), .resumed_at = -1};
     NeighborList nl;
     ForceWork fw;
     Output out;
@@ -401,6 +412,7 @@ int run_scene(const RunOptions *opt)
             status = 2;
         } else if (r == 0) {
             resumed = 1;
+            st.resumed_at = (long long)s.step;
             st.cpu0 = cpu_now() - cx.cpu_used;
             st.wall0 = wall_now() - cx.wall_used;
             st.prod_wall0 = wall_now() - cx.prod_wall_used;

@@ -13,6 +13,7 @@ typedef struct {
     long long checkpoint_every;   /* > 0: write DIR/checkpoint.dpd every this many steps */
     double checkpoint_wall;       /* ... but not sooner than this many wall seconds after the last one */
     int resume;                   /* continue from DIR/checkpoint.dpd if there is one */
+    int dry_run;                  /* validate and set up the scene, print its size, run nothing */
 } RunOptions;
 
 /* Exit status: 0 success, 2 bad input, 3 unstable run, 4 I/O failure,
