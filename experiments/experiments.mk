@@ -1,24 +1,35 @@
 # experiments.mk - results, figures and checks for every experiments/PAPER/EXP.
-# results/PAPER/EXP/TIER/summary.tsv is made by tools/run-experiment from the
-# experiment's run.sh, scenes and bin/dpd; figures/PAPER/EXP/*-TIER.png by
-# gnuplot from its plot.gp.
+# results/PAPER/EXP/TIER/summary.tsv is made by tools/run-experiment from the experiment's
+# run.sh, scenes and bin/dpd; figures/PAPER/EXP/*-TIER.png by gnuplot from its plot.gp.
+# The simulations of all the experiments under way run in one pool: tools/run-experiment joins
+# this make's jobserver (its recipes are marked `+`), so `make figures` runs one one-thread
+# simulation per slot, JOBS slots (default: one per core), whichever experiment they belong to.
+# ENGINE=slurm sends each simulation to Slurm instead (tools/slurm-sim; JOBS is then the number
+# of simulations in flight, default 200).
 EXP_IDS := $(patsubst experiments/%/run.sh,%,$(wildcard experiments/*/*/run.sh))
 RESULTS := $(foreach e,$(EXP_IDS),results/$(e)/$(TIER)/summary.tsv)
 FIG_STAMPS := $(foreach e,$(EXP_IDS),figures/$(e)/.stamp-$(TIER))
+ENGINE ?= local
+JOBS ?= $(if $(filter slurm,$(ENGINE)),200,$(shell nproc))
+export DPD_ENGINE := $(ENGINE)
+# a -j of our own unless the caller gave one (then we share its jobserver)
+POOL_J = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 
+# results are files we keep, never intermediate ones that make may delete after plotting
+.SECONDARY: $(RESULTS)
 .SECONDEXPANSION:
-results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment tools/lib/exp.sh $(BIN)
-	@tools/run-experiment $* $(TIER)
+results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment tools/run-simulation tools/lib/exp.sh $(BIN)
+	+@tools/run-experiment $* $(TIER)
+
+# the dependencies between experiments, declared once in each run.sh (`needs`, tools/lib/exp.sh)
+build/needs.mk: $(wildcard experiments/*/*/run.sh) tools/lib/needs.awk
+	@mkdir -p build && awk -f tools/lib/needs.awk $(wildcard experiments/*/*/run.sh) > $@
+-include build/needs.mk
+# a file, not a result: fig08 runs the m = 0 scene of fig06
+results/phan-thien-2016/fig08-compressibility/$(TIER)/summary.tsv: experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
 
 PLOT = mkdir -p figures/$(1) && cd experiments/$(1) && \
        gnuplot -e "res='$(CURDIR)/results/$(1)/$(TIER)'; out='$(CURDIR)/figures/$(1)'; tier='$(TIER)'" plot.gp
-
-# results that read another experiment's result of the same tier (so `make -j` orders them)
-results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv
-results/phan-thien-2016/fig13-shear-thinning/$(TIER)/summary.tsv: results/phan-thien-2016/fig10-11-colloid-structure/$(TIER)/summary.tsv
-# paper tier: results that reuse another experiment's simulations (reuse_run, tools/lib/exp.sh)
-results/mai-duy-2019/tab02-effective-viscosity/paper/summary.tsv \
-results/mai-duy-2019/fig04-relative-viscosity-a353/paper/summary.tsv: results/mai-duy-2019/tab01-wavelengths/paper/summary.tsv
 
 figures/%/.stamp-$(TIER): results/%/$(TIER)/summary.tsv experiments/%/plot.gp
 	@$(call PLOT,$*)
@@ -30,8 +41,12 @@ plots:
 	    if [ -f results/$$e/$(TIER)/summary.tsv ]; then ( $(call PLOT,$$e) ) || exit 1; \
 	    else echo "plots: no $(TIER) results for $$e (make figures TIER=$(TIER))"; fi; done
 
-results: $(RESULTS)
-figures: $(FIG_STAMPS)
+# EXPERIMENTS="paper/exp ..." selects experiments (default: all)
+EXPERIMENTS ?= $(EXP_IDS)
+results: $(BIN)
+	+@$(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv)
+figures: $(BIN)
+	+@$(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),figures/$(e)/.stamp-$(TIER))
 	@echo "figures ($(TIER)) in figures/; check with: make check TIER=$(TIER)"
 
 check:
@@ -50,11 +65,3 @@ paper: $(BIN)
 	@tools/render-paper
 
 .PHONY: results plots figures check reproduce paper
-
-
-# fig07 takes the exclusion radius measured by fig06 at the same tier
-results/phan-thien-2016/fig07-drag-velocity/$(TIER)/summary.tsv: results/phan-thien-2016/fig06-cylinder-exclusion/$(TIER)/summary.tsv
-# fig08 runs the m = 0 scene of fig06
-results/phan-thien-2016/fig08-compressibility/$(TIER)/summary.tsv: experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
-# fig13 takes the colloid radius and D measured by fig10-11 at the same tier
-results/phan-thien-2016/fig13-shear-thinning/$(TIER)/summary.tsv: results/phan-thien-2016/fig10-11-colloid-structure/$(TIER)/summary.tsv

@@ -219,12 +219,13 @@ rm -f "$d/trajectory-0000.h5"
 check "trajectory: missing segment: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
 check "trajectory: missing segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 of the checkpoint is missing' "$tmp/err"
 
-# the harness with the real simulator: tools/run-experiment of an experiment
-# with a rotation, a 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run,
-# --checkpoint-every --resume), each in turn SIGKILLed in the middle by a
-# wrapper (a crash): the experiment leaves no result and make check (tools/
-# check) reports it MISSING; the last attempt completes, resuming the killed
-# run, and every run equals its uninterrupted reference.
+# the harness with the real simulator: tools/run-experiment of an experiment with a rotation, a
+# 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run; the local pool runs them at once, each
+# --checkpoint-every --resume), one of them SIGKILLed in the middle by a wrapper (a crash).
+# (1) The pool retries it in the same attempt, resuming from its checkpoint. (2) With no retry
+# left (DPD_MAX_FAILURES=1) the experiment leaves no result and make check (tools/check) reports it
+# MISSING, the other simulations of the pool are complete, and the next attempt runs only the
+# killed one, resuming it. Every run equals its uninterrupted reference.
 rx=$tmp/rx
 mkdir -p "$rx/experiments/t/e"
 cp -r tools "$rx/tools"
@@ -244,10 +245,12 @@ EOF2
 cat > "$rx/crashing-dpd" <<'EOF2'
 #!/usr/bin/env bash
 # the real simulator; the run named $CRASH_RUN is SIGKILLed after its first checkpoint
+# (CRASH_ONCE=1: only the first time)
 out=; args=("$@")
 for ((i = 0; i < $#; i++)); do [ "${args[i]}" = --out ] && out=${args[i + 1]}; done
 echo "$(basename "$out")" >> "$CRASH_LOG"
 [ "$(basename "$out")" = "${CRASH_RUN:-}" ] || exec "$REAL_DPD" "$@"
+if [ "${CRASH_ONCE:-0}" = 1 ]; then [ -e "$out.crashed" ] && exec "$REAL_DPD" "$@"; : > "$out.crashed"; fi
 "$REAL_DPD" "$@" & pid=$!
 for _ in $(seq 6000); do [ -e "$out/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
 sleep "0.0$((RANDOM % 4))"; kill -KILL $pid; wait $pid
@@ -257,33 +260,41 @@ printf 'quantity\ttier\tlo\thi\tk_sigma\tpaper\tsource\n%s\n%s\n%s\n' \
     $'n_rot\tquick\t384\t384\t0\t-\tparticle count of the scene' \
     $'n_colloids\tquick\t8\t8\t0\t-\tcolloid count of the scene' \
     $'n_origins\tquick\t1\t1e9\t0\t-\tat least one origin' > "$rx/experiments/t/e/bands.tsv"
-RX() { env -u DPD_ROOT OMP_NUM_THREADS=1 DPD_BIN="$rx/crashing-dpd" REAL_DPD="$(cd "$(dirname "$DPD")" && pwd)/$(basename "$DPD")" \
+RX() { env -u DPD_ROOT -u MAKEFLAGS OMP_NUM_THREADS=1 DPD_JOBS=2 DPD_BIN="$rx/crashing-dpd" REAL_DPD="$(cd "$(dirname "$DPD")" && pwd)/$(basename "$DPD")" \
        CRASH_LOG="$tmp/crash.log" DPD_CHECKPOINT_EVERY=20 DPD_CHECKPOINT_WALL=0 "$@"; }
 part=$rx/results/t/e/.quick.partial/runs
-prev=
-for run in rot c3d tcaf; do
-    : > "$tmp/crash.log"
-    RX CRASH_RUN=$run "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
-    check "harness: $run killed: run-experiment fails" test $? -ne 0
-    check "harness: $run killed: no experiment result" test ! -e "$rx/results/t/e/quick/summary.tsv"
-    env DPD_ROOT="$rx" "$rx/tools/check" t/e > "$tmp/out" 2>&1
-    check "harness: $run killed: make check fails" test $? -ne 0
-    check "harness: $run killed: make check says MISSING" grep -q 'MISSING' "$tmp/out"
-    check "harness: $run killed: INCOMPLETE, a checkpoint, no summary" \
-        test -e "$part/$run/INCOMPLETE" -a -e "$part/$run/checkpoint.dpd" -a ! -e "$part/$run/summary.tsv"
-    check "harness: $run killed: ran only ${prev:+the one killed before ($prev) and }$run" test "$(tr '\n' ' ' < "$tmp/crash.log")" = "${prev:+$prev }$run "
-    prev=$run
-done
+same_as_references() {
+    local pair run ref
+    for pair in rot:checkpoint-rotation c3d:checkpoint-colloids3d tcaf:checkpoint-tcaf; do
+        run=${pair%%:*} ref=${pair#*:}
+        check "harness ($1): $run = uninterrupted (summary)" \
+            diff <(physics "$rx/results/t/e/quick/runs/$run/summary.tsv") <(physics "$tmp/$ref-ref/summary.tsv")
+    done
+}
+: > "$tmp/crash.log"
+RX CRASH_RUN=rot CRASH_ONCE=1 "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
+check "harness: rot killed once: the attempt completes" test $? -eq 0
+check "harness: rot killed once: retried in the same attempt" test "$(sort "$tmp/crash.log" | tr '\n' ' ')" = "c3d rot rot tcaf "
+check "harness: rot killed once: resumed from its checkpoint" grep -q '^resumed_at_step	[1-9]' "$rx/results/t/e/quick/runs/rot/provenance.tsv"
+same_as_references "rot killed once"
+rm -rf "$rx/results/t/e"
+: > "$tmp/crash.log"
+RX CRASH_RUN=tcaf DPD_MAX_FAILURES=1 "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
+check "harness: tcaf killed: run-experiment fails" test $? -ne 0
+check "harness: tcaf killed: no experiment result" test ! -e "$rx/results/t/e/quick/summary.tsv"
+env DPD_ROOT="$rx" "$rx/tools/check" t/e > "$tmp/out" 2>&1
+check "harness: tcaf killed: make check fails" test $? -ne 0
+check "harness: tcaf killed: make check says MISSING" grep -q 'MISSING' "$tmp/out"
+check "harness: tcaf killed: INCOMPLETE, a checkpoint, no summary" \
+    test -e "$part/tcaf/INCOMPLETE" -a -e "$part/tcaf/checkpoint.dpd" -a ! -e "$part/tcaf/summary.tsv"
+check "harness: tcaf killed: the rest of the pool completed" test -s "$part/rot/summary.tsv" -a -s "$part/c3d/summary.tsv"
 : > "$tmp/crash.log"
 RX "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"
 check "harness: last attempt completes" test $? -eq 0
 check "harness: only the killed run was rerun (resumed)" test "$(tr '\n' ' ' < "$tmp/crash.log")" = "tcaf "
+check "harness: the killed run resumed from its checkpoint" grep -q '^resumed_at_step	[1-9]' "$rx/results/t/e/quick/runs/tcaf/provenance.tsv"
 env DPD_ROOT="$rx" "$rx/tools/check" t/e > "$tmp/out" 2>&1
 check "harness: make check passes after the resume" test $? -eq 0
-for pair in rot:checkpoint-rotation c3d:checkpoint-colloids3d tcaf:checkpoint-tcaf; do
-    run=${pair%%:*} ref=${pair#*:}
-    check "harness: $run killed + resumed = uninterrupted (summary)" \
-        diff <(physics "$rx/results/t/e/quick/runs/$run/summary.tsv") <(physics "$tmp/$ref-ref/summary.tsv")
-done
+same_as_references "tcaf killed, resumed by the next attempt"
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

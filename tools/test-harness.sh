@@ -142,6 +142,8 @@ Calc: {{calc:%.1f:[x/y:eta]/[x/y:eta:se]}}; {{calc:%.3g:[tsv:data/t.tsv:0.4940:e
 
 Bench: {{bench:rot.tsv:cost ratio:value}}; {{bench:none.tsv:cost ratio:value}}; {{bench:rot.tsv:no such row:value}}.
 
+Quick: {{x/paperonly@quick:q}}; committed {{x/paperonly:q}}.
+
 <!-- table: x/y/rows.tsv -->
 
 # Environment
@@ -194,7 +196,9 @@ T "check: bad option" 2 "$C" --bogus
 # ---------------------------------------------------------------- mkpaper
 M="$tools/mkpaper"; G="$root/build/paper.gen.md"
 T "mkpaper: builds the fixture paper" 0 "$M"
+has "mkpaper: counts the placeholder awaiting the quick tier" '^mkpaper: 1 placeholder(s) await the quick tier of 1 experiment(s)'
 if [ -f "$G" ]; then
+    in_file "mkpaper: a quick-tier number not computed here is marked" "$G" '^Quick: \*(quick tier: run `make figures`)\*; committed 0.5 +- 0\.$'
     in_file "mkpaper: placeholders replaced" "$G" '^| experiment | verdict'
     if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
     in_file "mkpaper: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
@@ -333,15 +337,95 @@ has "mkpaper: calc refuses a non-numeric format" '{{calc:%s:1}}: expected calc:F
 has "mkpaper: calc refuses a non-finite result" '{{calc:%.1f:1/0}}: cannot evaluate'
 has "mkpaper: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
 has "mkpaper: counts every failed placeholder" '17 placeholder(s) could not be filled'
+lacks "mkpaper: no quick-tier count without such placeholders" 'await the quick tier'
+
+# the quick tier, never committed: x/paperonly has a paper tier and no quick tier; what names
+# that quick tier is marked and counted, not an error; what is filled from it once it exists
+QM='\*(quick tier: run `make figures`)\*'
+cat > "$root/quick.md" <<'EOF2'
+a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}} c {{diff:x/paperonly@quick:q-q_tol1e-10}} d {{sigmas:x/paperonly:q_tol1e-10-x/paperonly@quick#q}}.
+e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}} f {{calc:%.2f:[x/paperonly@quick:q]*2+[x/paperonly:q]}} g {{calc:%.2f:[tsv:results/x/paperonly/quick/cells.tsv:1:eta]/[x/y:eta]}}.
+h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
+
+<!-- figure: x/paperonly/plot-quick.png | q against nothing -->
+
+<!-- tsv: results/x/paperonly/quick/table.tsv -->
+EOF2
+QG="$root/build/quick.gen.md"
+T "mkpaper: placeholders of a quick tier not computed here are no error" 0 "$M" -i "$root/quick.md" -o "$QG"
+has "mkpaper: one line counts them" '^mkpaper: 10 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
+if [ "$(grep -c 'await the quick tier' "$root/out")" = 1 ]; then ok "mkpaper: the count is a single line"; else bad "mkpaper: count lines" "$root/out"; fi
+in_file "mkpaper: quick value, CPU, diff, sigmas marked" "$QG" "^a $QM b $QM c $QM d $QM\\.\$"
+in_file "mkpaper: quick tsv cell and calc operands marked" "$QG" "^e $QM f $QM g $QM\\.\$"
+in_file "mkpaper: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
+in_file "mkpaper: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
+in_file "mkpaper: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
+T "mkpaper: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
+has "mkpaper: draft counts them" '^mkpaper: 10 placeholder(s) await the quick tier'
+if grep -q 'missing' "$QG"; then bad "mkpaper: draft calls a quick placeholder missing" "$QG"; else ok "mkpaper: draft does not call them missing"; fi
+# still errors: committed tiers, a quick tier that exists, an unknown experiment, a malformed expression
+printf '%s\n' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
+    'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}} g {{calc:%.1f:[x/paperonly@quick:q]+[x/paperonly:nonesuch]}}' \
+    'h {{calc:%.1f:[x/paperonly@quick:q]+system(1)}} i {{diff:x/paperonly@quick:q-x/nonesuch#q}} j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
+    'k {{tsv:results/x/paperonly/paper/none.tsv:1:a}} l {{verdict:x/nores}}' \
+    '<!-- figure: x/paperonly/other-paper.png -->' '<!-- figure: x/y/fig-quick.png -->' '<!-- figure: x/nores/fig-reduced.png -->' \
+    '<!-- tsv: results/x/y/quick/none.tsv -->' '<!-- tsv: results/x/paperonly/paper/none.tsv -->' '<!-- tsv: results/x/nonesuch/quick/t.tsv -->' \
+    '<!-- results: x/nores -->' '<!-- table: x/paperonly/none.tsv -->' > "$root/qbad.md"
+T "mkpaper: missing results other than an uncomputed quick tier still fail" 1 "$M" -i "$root/qbad.md" -o "$root/build/qbad.gen.md"
+has "mkpaper: an unknown experiment pinned to quick fails" '{{x/nonesuch@quick:q}}: no such quantity'
+has "mkpaper: a CPU of an unknown experiment pinned to quick fails" '{{cpu:x/nonesuch@quick}}: no results'
+has "mkpaper: a quantity absent from an existing quick tier fails" '{{x/y@quick:nonesuch}}: no such quantity'
+has "mkpaper: an INCOMPLETE quick tier fails" '{{x/incomplete@quick:q}}: no such quantity'
+has "mkpaper: a missing reduced tier fails" '{{x/paperonly@reduced:q}}: no such quantity'
+has "mkpaper: a quantity absent from the paper tier fails" '{{x/paperonly:nonesuch}}: no such quantity'
+has "mkpaper: calc with a quick operand and a missing one fails" 'operand \[x/paperonly:nonesuch\]: no such quantity'
+has "mkpaper: calc with a quick operand and a bad expression fails" 'system(1)}}: expression holds something other'
+has "mkpaper: derived with a quick operand and an unknown one fails" '{{diff:x/paperonly@quick:q-x/nonesuch#q}}: no quantity'
+has "mkpaper: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
+has "mkpaper: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
+has "mkpaper: an unpinned verdict without results fails" '{{verdict:x/nores}}'
+has "mkpaper: a missing paper-tier figure fails" 'other-paper.png does not exist'
+has "mkpaper: a missing quick figure of an existing quick tier fails" 'fig-quick.png does not exist'
+has "mkpaper: a missing reduced-tier figure fails" 'fig-reduced.png does not exist'
+has "mkpaper: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
+has "mkpaper: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
+has "mkpaper: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
+has "mkpaper: counts them all as failures" '^mkpaper: 20 placeholder(s) could not be filled'
+lacks "mkpaper: none of them counted as awaiting the quick tier" 'await the quick tier'
+# once the quick tier exists, the same placeholders are filled from it (and marked as quick)
+mkres x/paperonly quick 12.4 <<EOF2
+$(tab q 0.75 0.05)
+$(tab q_tol1e-10 0.5 0.05)
+EOF2
+printf 'k\teta\n1\t3.0\n' > "$root/results/x/paperonly/quick/cells.tsv"
+printf 'a\tb\n1\t2\n' > "$root/results/x/paperonly/quick/table.tsv"
+mkdir -p "$root/figures/x/paperonly"; cp "$root/figures/x/y/fig.png" "$root/figures/x/paperonly/plot-quick.png"
+touch -d '2001-01-01' "$root"/results/x/paperonly/*/summary.tsv
+touch -d '2002-01-01' "$root/figures/x/paperonly/plot-quick.png"
+T "mkpaper: the quick tier computed, its placeholders are filled" 0 "$M" -i "$root/quick.md" -o "$QG"
+lacks "mkpaper: nothing awaits the quick tier" 'await the quick tier'
+# 0.75 +- 0.05 - 0.5 +- 0.05 = 0.25 +- 0.071; (0.25 - 0.75)/0.0707 = -7.1; 0.75 x 2 + 0.5; 3/30.9; 30.9/0.75 = 41.2 (+4020 +- 280 %)
+in_file "mkpaper: quick value, CPU, diff, sigmas filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier) c +0.25 +- 0.071 (quick tier) d -7.1 (quick tier)\.$'
+in_file "mkpaper: quick tsv cell and calc filled" "$QG" '^e 3 (quick tier) f 2.00 (quick tier) g 0.10 (quick tier)\.$'
+in_file "mkpaper: derived with another experiment's quick operand filled" "$QG" '^h +4e+03 +- 2.8e+02 % (quick tier) i 0.5 +- 0\.$'
+in_file "mkpaper: quick figure shown" "$QG" '^!\[q against nothing\](figures/x/paperonly/plot-quick.png)$'
+in_file "mkpaper: quick tsv table shown" "$QG" '^| 1 | 2 |$'
+if grep -q 'make figures' "$QG"; then bad "mkpaper: a mark left once the quick tier exists" "$QG"; else ok "mkpaper: no mark left once the quick tier exists"; fi
+touch -d '2003-01-01' "$root/results/x/paperonly/quick/summary.tsv"
+T "mkpaper: a stale quick figure stays an error" 1 "$M" -i "$root/quick.md" -o "$QG"
+has "mkpaper: stale quick figure named" 'plot-quick.png is older than results/x/paperonly/quick/summary.tsv'
+rm -rf "$root/results/x/paperonly/quick" "$root/figures/x/paperonly"
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
     T "render-paper: HTML" 0 "$tools/render-paper"
+    has "render-paper: passes on the quick-tier count" '^mkpaper: 1 placeholder(s) await the quick tier'
     H="$root/build/paper.html"
     if [ -f "$H" ]; then
         in_file "render-paper: title from front matter" "$H" '<title>Fixture paper</title>'
         in_file "render-paper: image embedded" "$H" 'data:image/png;base64'
         in_file "render-paper: table rendered" "$H" '<table'
+        in_file "render-paper: quick-tier mark rendered" "$H" '<em>(quick tier: run <code>make figures</code>)</em>'
     else bad "render-paper: no $H"; fi
 else
     echo "skip - render-paper (no pandoc)"
@@ -365,6 +449,7 @@ done
 mkdir -p "$out"; echo run > "$out/INCOMPLETE"
 echo "$(basename "$out") resume=$resume" >> "$FAKE_LOG"
 [ "$(basename "$out")" = "${FAKE_FAIL:-}" ] && exit 137
+code=FAKE_EXIT_$(basename "$out"); [ -n "${!code:-}" ] && exit "${!code}"
 sleep "${FAKE_SLEEP:-0}"
 printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
 printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
@@ -403,7 +488,7 @@ T "run-experiment: interrupted again" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment
 echo 'x = 2;' > "$rx/experiments/t/e/s.cfg"
 : > "$log"
 T "run-experiment: partial result with a changed scene completes" 0 RX "$rx/tools/run-experiment" t/e quick
-if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: a changed scene reruns the simulations that use it"
+if [ "$(sort "$log" | tr '\n' ' ')" = "a resume=1 b resume=1 " ]; then ok "run-experiment: a changed scene reruns the simulations that use it"
 else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
 # the stamp is the binary and the tier: a change of the analysis alone keeps the finished
 # simulations of an interrupted attempt; another binary starts afresh
@@ -419,7 +504,7 @@ T "run-experiment: interrupted with the old binary" 1 RX FAKE_FAIL=b "$rx/tools/
 { cat "$rx/fake-dpd"; echo '# another build'; } > "$rx/fake-dpd2"; chmod +x "$rx/fake-dpd2"
 : > "$log"
 T "run-experiment: another binary" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd2" FAKE_LOG="$log" "$rx/tools/run-experiment" t/e quick
-if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 b resume=1 " ]; then ok "run-experiment: another binary starts afresh"
+if [ "$(sort "$log" | tr '\n' ' ')" = "a resume=1 b resume=1 " ]; then ok "run-experiment: another binary starts afresh"
 else bad "run-experiment: with another binary ran: $(tr '\n' ' ' < "$log")"; fi
 # --reanalyse: the complete result's simulations, only those whose arguments changed rerun
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
@@ -436,51 +521,85 @@ else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
 T "run-experiment: unknown option refused" 1 RX "$rx/tools/run-experiment" t/e quick --reanalyze
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
 T "run-experiment --reanalyse: back to the original arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
-# dpd_run's lock: two processes asked for the same simulation at once run it once (the second
-# waits for the first, then keeps its result)
-lk="$root/lock-out"; mkdir -p "$lk"; : > "$log"
-lockrun() { ( cd "$rx/experiments/t/e" && env -u DPD_ROOT DPD="$rx/fake-dpd" OUT="$lk" TIER=quick DPD_ROOT="$rx" \
-    FAKE_LOG="$log" FAKE_SLEEP=1 bash -c '. "$DPD_ROOT/tools/lib/exp.sh"; dpd_run a s.cfg --set x=1' ) 2>> "$root/lock.err"; }
-lockrun & lockrun & wait
-if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 " ]; then ok "dpd_run: two processes, one simulation"
-else bad "dpd_run: two processes ran: $(tr '\n' ' ' < "$log")" "$root/lock.err"; fi
-in_file "dpd_run: the second process kept the first's simulation" "$root/lock.err" 'already complete, kept'
-# --side: a second process on the partial runs the simulations from the other end and stops
-# where it meets the first; the main attempt then keeps them all
-mkdir -p "$rx/experiments/t/s"
-cat > "$rx/experiments/t/s/run.sh" <<'EOF2'
+# declare, then dispatch: a plan pass records the simulations, the pool runs them at once, the
+# next pass plans again; a run.sh that interleaves simulations and analysis takes rounds
+mkdir -p "$rx/experiments/t/p"
+cat > "$rx/experiments/t/p/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
-pair_simulations() { dpd_run s_$tag s.cfg --set x=$1; }
-side_order 2 pair_simulations 3:3 4:4 5:5   # DPD_SIDE: phi0.05, phi0.03, phi0.01
-i=0
-for p in 3:3 4:4 5:5; do lattice_pair $p 2; pair_simulations $i; emit_from s_$tag q q_$tag; i=$((i + 1)); done
+for x in 1 2 3; do dpd_run p$x s.cfg --set x=$x; done
+emit_from p1 q q_p1
+dpd_run late s.cfg --set x=$(get p1 q | cut -f1)
+dpd_run late s.cfg --set x=$(get p1 q | cut -f1)
+emit_from late q q_late
 EOF2
-chmod +x "$rx/experiments/t/s/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/s/"
-T "run-experiment --side: refused without a main attempt" 1 RX "$rx/tools/run-experiment" t/s quick --side
-T "run-experiment --side: refused where run.sh has no side order" 1 RX "$rx/tools/run-experiment" t/e quick --side
-T "run-experiment --side: main attempt interrupted at the second pair" 1 RX FAKE_FAIL=s_phi0.03 "$rx/tools/run-experiment" t/s quick
+chmod +x "$rx/experiments/t/p/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/p/"
+T "plan: lists the first round without running anything" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$rx/tools/plan" t/p quick
+has "plan: the three declared simulations" '^p3	s.cfg	--set	x=3$'
+lacks "plan: not the one that needs an analysis" '^late'
+has "plan: says where the pass stopped" 'then the analysis reads them'
 : > "$log"
-T "run-experiment --side: side process" 0 RX "$rx/tools/run-experiment" t/s quick --side
-if [ "$(tr '\n' ' ' < "$log")" = "s_phi0.05 resume=1 s_phi0.03 resume=1 " ]; then ok "run-experiment --side: ran the last two pairs from the last, stopped at the first"
-else bad "run-experiment --side ran: $(tr '\n' ' ' < "$log")"; fi
-if [ ! -e "$rx/results/t/s/quick/summary.tsv" ]; then ok "run-experiment --side: publishes nothing"; else bad "run-experiment --side: published a result"; fi
+T "run-experiment: rounds until a pass plans nothing" 0 RX FAKE_SLEEP=1 "$rx/tools/run-experiment" t/p quick
+if [ "$(sort "$log" | tr '\n' ' ')" = "late resume=1 p1 resume=1 p2 resume=1 p3 resume=1 " ]; then ok "run-experiment: every simulation ran once"
+else bad "run-experiment: rounds ran: $(tr '\n' ' ' < "$log")"; fi
+in_file "run-experiment: two rounds and the analysis" "$rx/results/t/p/quick/provenance.tsv" '^rounds	3$'
+in_file "run-experiment: the late simulation's argument came from the first round" "$rx/results/t/p/quick/runs/late/.args" '^x=1.5$'
+# the pool: the first round's three one-second simulations overlap on two slots
+cat > "$root/overlap.sh" <<'EOF2'
+#!/usr/bin/env bash
+echo "start $(date +%s.%N)" >> "$FAKE_LOG.t"; "$FAKE_REAL" "$@"; st=$?; echo "end $(date +%s.%N)" >> "$FAKE_LOG.t"; exit $st
+EOF2
+chmod +x "$root/overlap.sh"; rm -rf "$rx/results/t/p"; : > "$log.t"
+T "run-experiment: a pool of two slots" 0 env -u DPD_ROOT DPD_BIN="$root/overlap.sh" FAKE_REAL="$rx/fake-dpd" FAKE_LOG="$log" FAKE_SLEEP=1 DPD_JOBS=2 "$rx/tools/run-experiment" t/p quick
+if awk '{ d = ($1 == "start") ? 1 : -1; n += d; if (n > m) m = n } END { exit !(m == 2) }' "$log.t"; then ok "pool: two simulations ran at once, never three"
+else bad "pool: concurrency not 2" "$log.t"; fi
+# a simulation that ended unstable (exit 3) is an outcome: not rerun, its status returned
+mkdir -p "$rx/experiments/t/u"
+cat > "$rx/experiments/t/u/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+dpd_run ok s.cfg --set x=1
+dpd_run bad s.cfg --set x=2 || true
+st=0; dpd_run bad s.cfg --set x=2 || st=$?
+emit bad_status $st 0
+EOF2
+chmod +x "$rx/experiments/t/u/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/u/"
 : > "$log"
-T "run-experiment --side: main attempt completes" 0 RX "$rx/tools/run-experiment" t/s quick
-if [ ! -s "$log" ]; then ok "run-experiment --side: the main attempt kept the side's simulations"; else bad "run-experiment after --side ran: $(tr '\n' ' ' < "$log")"; fi
-if [ ! -e "$rx/results/t/s/quick/.locks" ]; then ok "run-experiment: no locks left in the result"; else bad "run-experiment: .locks in the result"; fi
-# a side process resumed on another day: the end an earlier side process finished is passed
-# over, not taken for the meeting point
-rm -rf "$rx/results/t/s"
-T "run-experiment --side: main attempt interrupted at the first pair" 1 RX FAKE_FAIL=s_phi0.01 "$rx/tools/run-experiment" t/s quick
-T "run-experiment --side: side process interrupted at its second pair (the simulator's status)" 137 RX FAKE_FAIL=s_phi0.03 "$rx/tools/run-experiment" t/s quick --side
+T "run-experiment: an unstable simulation is an outcome" 0 RX FAKE_EXIT_bad=3 "$rx/tools/run-experiment" t/u quick
+if [ "$(sort "$log" | tr '\n' ' ')" = "bad resume=1 ok resume=1 " ]; then ok "run-experiment: the unstable simulation ran once"
+else bad "run-experiment: with an unstable simulation ran: $(tr '\n' ' ' < "$log")"; fi
+in_file "run-experiment: its status reaches the analysis" "$rx/results/t/u/quick/summary.tsv" '^bad_status	3	0$'
+# a failure that persists (exit 4, I/O) is retried DPD_MAX_FAILURES times, then fails the experiment
+rm -rf "$rx/results/t/e/.quick.partial"; : > "$log"
+T "run-experiment: a persistent I/O failure fails the experiment" 1 RX FAKE_EXIT_b=4 "$rx/tools/run-experiment" t/e quick
+if [ "$(grep -c '^b' "$log")" = 3 ]; then ok "run-experiment: retried three times"; else bad "run-experiment: I/O failure ran: $(tr '\n' ' ' < "$log")"; fi
 : > "$log"
-T "run-experiment --side: side process resumed" 0 RX "$rx/tools/run-experiment" t/s quick --side
-if [ "$(tr '\n' ' ' < "$log")" = "s_phi0.03 resume=1 s_phi0.01 resume=1 " ]; then ok "run-experiment --side: passes over the finished end, runs the rest"
-else bad "run-experiment --side resumed ran: $(tr '\n' ' ' < "$log")"; fi
-: > "$log"
-T "run-experiment --side: main attempt completes after the resumed side" 0 RX "$rx/tools/run-experiment" t/s quick
-if [ ! -s "$log" ]; then ok "run-experiment --side: nothing left for the main attempt"; else bad "run-experiment after resumed --side ran: $(tr '\n' ' ' < "$log")"; fi
+T "run-experiment: a new attempt retries it" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "run-experiment: the new attempt ran only the failed one"; else bad "run-experiment: new attempt ran: $(tr '\n' ' ' < "$log")"; fi
+# needs / upstream: one declaration; an undeclared read is refused; needs.awk orders make
+mkdir -p "$rx/experiments/t/n"
+cat > "$rx/experiments/t/n/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+needs any t/e
+needs paper t/p
+needs any t/p@paper
+emit up "$(awk -F'\t' '$1 == "q_a" { print $2 }' "$(upstream t/e)/summary.tsv")" 0
+[ -z "$(upstream_if t/p@paper)" ] && emit optional_absent 1 0
+upstream t/u
+EOF2
+chmod +x "$rx/experiments/t/n/run.sh"
+T "needs: an undeclared upstream result is refused" 1 RX "$rx/tools/run-experiment" t/n quick
+has "needs: says what to declare" "read but not declared (add a line 'needs quick t/u'"
+sed -i '$d' "$rx/experiments/t/n/run.sh"
+T "needs: declared upstream results read" 0 RX "$rx/tools/run-experiment" t/n quick
+in_file "needs: the same tier's result" "$rx/results/t/n/quick/summary.tsv" '^up	1.5	0$'
+in_file "needs: an absent optional result" "$rx/results/t/n/quick/summary.tsv" '^optional_absent	1	0$'
+( cd "$rx" && awk -f tools/lib/needs.awk experiments/t/n/run.sh ) > "$root/out"
+has "needs.awk: any -> the make rule at every tier" '^results/t/n/$(TIER)/summary.tsv: results/t/e/$(TIER)/summary.tsv$'
+has "needs.awk: a listed tier" '^results/t/n/paper/summary.tsv: results/t/p/paper/summary.tsv$'
+lacks "needs.awk: a fixed-tier reference orders nothing" 't/p@paper'
+
 # carry-partial: an interrupted run's finished simulations committed (not the unfinished one,
 # not run.h5 or checkpoints) and resumed from a clone of that commit on "another machine"
 T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
@@ -549,6 +668,7 @@ mkdir -p "$rx/experiments/t/r"
 cat > "$rx/experiments/t/r/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs any t/e
 reuse_run a t/e quick
 emit_from a q q_a
 EOF2

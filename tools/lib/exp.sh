@@ -5,67 +5,44 @@ set -euo pipefail
 mkdir -p "$OUT/runs"
 [ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
 
-# dpd_run NAME SCENE [--set k=v ...]: one simulation into $OUT/runs/NAME.
-# Resumable (tools/run-experiment keeps $OUT across attempts while nothing
-# changed): a simulation already complete with the same arguments and the same
-# scene file content is not rerun; an interrupted one continues from its
-# checkpoint, written every DPD_CHECKPOINT_EVERY steps (default 5000) but not
-# sooner than DPD_CHECKPOINT_WALL seconds (default 60) after the last one: a
-# checkpoint holds every sampled series and reaches hundreds of MB in long runs
-# (the result is bit-identical either way). The arguments are compared with the
-# checkout's root removed from paths (a result made in another clone or
-# worktree matches), the scene by the sha256 recorded in .scene_sha256 (runs
-# made before it was recorded are matched by their arguments alone).
-# DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run
-# marks the result stale ($OUT/.verify-stale) and stops the script.
-# One simulation at a time per name: dpd_run holds a lock ($OUT/.locks/NAME) while it decides
-# and runs, so a second process working through the same partial result waits for a simulation
-# the first is running and then keeps it instead of running it twice.
-# DPD_SIDE=1 (tools/run-experiment --side: run.sh lists its simulations in another order, to use
-# the second core with one thread each): the side process stops at the first simulation that is
-# running, or complete once it has run one itself: there it has met the main process. Complete
-# simulations before its first one (the end an earlier side process finished) are passed over.
-_SIDE_RAN=0
+# dpd_run NAME SCENE [--set k=v ...]: the simulation NAME of this experiment, in $OUT/runs/NAME.
+# A simulation already complete with the same arguments and the same scene file content is kept
+# (never rerun); one that ended with a deterministic failure (its .exit: 1 usage, 2 bad scene,
+# 3 unstable) returns that status again without rerunning; any other is (re)run, resuming from its
+# checkpoint (written every DPD_CHECKPOINT_EVERY steps, default 5000, but not sooner than
+# DPD_CHECKPOINT_WALL seconds, default 60, after the last: a checkpoint holds every sampled series
+# and reaches hundreds of MB in long runs; the result is bit-identical either way). The arguments
+# are compared with the checkout's root removed from paths (a result made in another clone or
+# worktree matches), the scene by the sha256 recorded in .scene_sha256 (runs made before it was
+# recorded are matched by their arguments alone).
+# Three modes:
+#  - DPD_PLAN=1 (tools/run-experiment, a plan pass): a simulation that must run is recorded, not
+#    run: its directory gets .args, .scene_sha256 and .cwd (all tools/run-simulation needs) and its
+#    name goes to $OUT/.plan; dpd_run returns 0 and the script goes on to the next one. The pass
+#    ends at the first analysis step that reads an unfinished simulation (a failing command under
+#    set -e); run-experiment then runs the planned simulations on its engine and plans again,
+#    until a pass plans nothing: that pass is the analysis. So a run.sh declares its simulations
+#    first and analyses after; a simulation whose arguments come from an earlier analysis is
+#    planned in a later round.
+#  - DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run marks the result
+#    stale ($OUT/.verify-stale) and stops the script.
+#  - neither: run it here and now (tools/run-simulation), as a script run by hand does.
 dpd_run() {
-    local lock
-    mkdir -p "$OUT/.locks"
-    exec {lock}>"$OUT/.locks/$1"
-    if [ "${DPD_SIDE:-0}" = 1 ]; then
-        if ! flock -n "$lock"; then
-            echo "dpd_run (side): $1 is running: the side process stops here" >&2
-            exit 0
-        fi
-        if [ -s "$OUT/runs/$1/summary.tsv" ] && [ ! -e "$OUT/runs/$1/INCOMPLETE" ]; then
-            if [ "$_SIDE_RAN" = 1 ]; then
-                echo "dpd_run (side): $1 is complete: the side process stops here" >&2
-                exit 0
-            fi
-            echo "dpd_run (side): $1 already complete, passed over" >&2
-            exec {lock}>&-
-            return 0
-        fi
-        _SIDE_RAN=1
-    else
-        flock "$lock"
-    fi
-    _dpd_run "$@"     # under set -e a failure exits here, and the lock goes with the process
-    local rc=$?
-    exec {lock}>&-
-    return $rc
-}
-_dpd_run() {
     local name=$1 scene=$2; shift 2
-    local dir=$OUT/runs/$name args sha
+    local dir=$OUT/runs/$name args sha st
     args=$(printf '%s\n' "$scene" "$@" | _args_norm)
     sha=missing; [ -f "$scene" ] && sha=$(sha256sum < "$scene" | cut -c1-64)
     if [ "$(_args_recorded "$dir")" = "$args" ] &&
        [ "$(cat "$dir/.scene_sha256" 2>/dev/null || echo "$sha")" = "$sha" ]; then
         if [ -s "$dir/summary.tsv" ] && [ ! -e "$dir/INCOMPLETE" ]; then
-            echo "dpd_run: $name already complete, kept" >&2
+            [ "${DPD_PLAN:-0}" = 1 ] || echo "dpd_run: $name already complete, kept" >&2
             return 0
         fi
-        # a kept run that stopped (e.g. unstable, deliberately): with the same
-        # arguments and seed it stops again; verification takes the recorded outcome
+        # a kept run that stopped (e.g. unstable, deliberately): with the same arguments and
+        # seed it stops again; the recorded outcome stands (verification: runs kept from before
+        # .exit was recorded count as unstable)
+        st=$(_final_status "$dir")
+        if [ -n "$st" ]; then return "$st"; fi
         if [ "${DPD_VERIFY:-0}" = 1 ] && [ -e "$dir/INCOMPLETE" ]; then return 3; fi
         _verify_refuse "$name" "it is incomplete"
     else
@@ -74,8 +51,22 @@ _dpd_run() {
         printf '%s\n' "$scene" "$@" > "$dir/.args"
         printf '%s\n' "$sha" > "$dir/.scene_sha256"
     fi
-    "$DPD" run "$scene" --out "$dir" --quiet --checkpoint-every "${DPD_CHECKPOINT_EVERY:-5000}" \
-        --checkpoint-wall "${DPD_CHECKPOINT_WALL:-60}" --resume "$@"
+    pwd > "$dir/.cwd"
+    if [ "${DPD_PLAN:-0}" = 1 ]; then
+        grep -qxF -- "$name" "$OUT/.plan" 2>/dev/null || printf '%s\n' "$name" >> "$OUT/.plan"
+        return 0
+    fi
+    "$DPD_ROOT/tools/run-simulation" "$dir"
+}
+# the status of a simulation that ended with a failure it would repeat: its .exit when that is
+# 1 (usage), 2 (bad scene) or 3 (unstable); or any failure after DPD_MAX_FAILURES (default 3)
+# attempts that failed without being stopped by a signal (tools/run-simulation counts them):
+# an I/O error that persists is not retried for ever. Empty when it may run again.
+_final_status() {
+    local st; st=$(cat "$1/.exit" 2>/dev/null) || return 0
+    case $st in 1|2|3) echo "$st"; return 0 ;; esac
+    [ "$(cat "$1/.failures" 2>/dev/null || echo 0)" -ge "${DPD_MAX_FAILURES:-3}" ] && echo "$st"
+    return 0
 }
 # the arguments a kept run was made with: .args, or for runs made before .args
 # was written, the command line the simulator recorded in provenance.tsv
@@ -98,16 +89,16 @@ _verify_refuse() {
     exit 97
 }
 
-# reuse_run NAME PAPER/EXP TIER [SOURCE_NAME]: the simulation SOURCE_NAME (default
-# NAME) of another experiment's complete result, copied into $OUT/runs/NAME
-# instead of run again (the same system and settings, e.g. Mai-Duy et al.'s
-# Tables 1 and 2 come from one set of TCAF runs). The copy records its origin
-# in REUSED_FROM; tools/run-experiment does not count its CPU time again.
+# reuse_run NAME PAPER/EXP TIER [SOURCE_NAME]: the simulation SOURCE_NAME (default NAME) of another
+# experiment's complete result (declared with needs), copied into $OUT/runs/NAME instead of run
+# again (the same system and settings, e.g. Mai-Duy et al.'s Tables 1 and 2 come from one set of
+# TCAF runs). The copy records its origin in REUSED_FROM; tools/run-experiment does not count its
+# CPU time again.
 reuse_run() {
-    [ "${DPD_SIDE:-0}" = 1 ] && return 0    # a copy, not a simulation: the main process makes it
-    local name=$1 id=$2 tier=$3 src_name=${4:-$1}
-    local src=$DPD_ROOT/results/$id/$tier/runs/$src_name dir=$OUT/runs/$1
-    if [ ! -s "$src/summary.tsv" ] || [ -e "$src/INCOMPLETE" ] || [ -e "$DPD_ROOT/results/$id/$tier/INCOMPLETE" ]; then
+    local name=$1 id=$2 tier=$3 src_name=${4:-$1} up
+    up=$(upstream "$id@$tier") || exit 1
+    local src=$up/runs/$src_name dir=$OUT/runs/$1
+    if [ ! -s "$src/summary.tsv" ] || [ -e "$src/INCOMPLETE" ]; then
         echo "reuse_run: $name needs the complete simulation $src_name of results/$id/$tier" \
              "(make results/$id/$tier/summary.tsv, or tools/run-experiment $id $tier)" >&2
         exit 1
@@ -115,6 +106,34 @@ reuse_run() {
     rm -rf "$dir"; cp -a "$src" "$dir"
     printf 'results/%s/%s/runs/%s\n' "$id" "$tier" "$src_name" > "$dir/REUSED_FROM"
 }
+# needs TIERS PAPER/EXP[@TIER]: the one declaration that this experiment reads another's complete
+# result, when it runs at one of TIERS ("any", or a comma-separated list of tiers): the result of
+# the same tier, or with @TIER that fixed tier's (a committed result read as a reference).
+# experiments.mk orders `make` by the same-tier declarations (tools/lib/needs.awk reads them from
+# run.sh: keep each on a line of its own, starting with `needs`); upstream and reuse_run refuse
+# a result that was not declared.
+_NEEDS=" "
+needs() {
+    local tiers=$1 dep=$2
+    [ "$tiers" = any ] || [[ ",$tiers," == *",$TIER,"* ]] || return 0
+    case $dep in *@*) ;; *) dep=$dep@$TIER ;; esac
+    _NEEDS="$_NEEDS$dep "
+}
+# upstream PAPER/EXP[@TIER] -> results/PAPER/EXP/TIER (TIER: this tier unless given), a declared
+# (needs) and complete result; upstream_if: the same, or nothing if that result does not exist
+upstream() {
+    local dep=$1; case $dep in *@*) ;; *) dep=$dep@$TIER ;; esac
+    local id=${dep%@*} tier=${dep#*@} dir=$DPD_ROOT/results/${dep%@*}/${dep#*@}
+    [[ "$_NEEDS" == *" $dep "* ]] ||
+        { echo "exp.sh: results/$id/$tier read but not declared (add a line 'needs $TIER $id$([ "$tier" = "$TIER" ] || echo "@$tier")' to run.sh)" >&2; return 1; }
+    if [ ! -s "$dir/summary.tsv" ] || [ -e "$dir/INCOMPLETE" ]; then
+        [ "${2:-}" = optional ] && return 0
+        echo "exp.sh: needs the complete result results/$id/$tier (make results/$id/$tier/summary.tsv)" >&2
+        return 1
+    fi
+    printf '%s\n' "$dir"
+}
+upstream_if() { upstream "$1" optional; }
 
 # get NAME QUANTITY -> "value<TAB>stderr" from a run's summary (NAME "." : the
 # experiment's own summary so far, e.g. a mean emit_mean wrote).
@@ -182,18 +201,6 @@ lattice_pair() {
     L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
     count=$((6 * kq * kq * kq))
     geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
-}
-
-# side_order DIGITS FUNCTION PAIR...: for tools/run-experiment --side (DPD_SIDE=1), run
-# FUNCTION INDEX PAIR for each lattice pair from the last down (after lattice_pair PAIR DIGITS),
-# then end the script; FUNCTION runs the simulations of one pair, which the main order runs
-# first up. Without DPD_SIDE it does nothing.
-side_order() {
-    [ "${DPD_SIDE:-0}" = 1 ] || return 0
-    local digits=$1 fn=$2 j; shift 2
-    local pairs=("$@")
-    for ((j = ${#pairs[@]} - 1; j >= 0; j--)); do lattice_pair "${pairs[j]}" "$digits"; "$fn" $j "${pairs[j]}"; done
-    exit 0
 }
 
 # emit_drag_torque ROW "F se" "T se" F_THEORY T_THEORY "U se" - the Pan et al.

@@ -9,6 +9,7 @@
 #             the same for the solvent alone (n = 4) in the same box (columns *_solvent).
 # fig05-relative-viscosity-a650 runs this script with A=6.50.
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs paper mai-duy-2019/tab01-wavelengths
 A=${A:-3.53}
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 T02=$HERE/../tab02-effective-viscosity
@@ -41,7 +42,7 @@ pair_simulations() {
     [[ " $TCAF_PAIRS " == *" $pair "* ]] || return 0
     if [ "$TIER" = paper ] && [ "$A" = 3.53 ]; then
         # the same scenes and settings as tab01-wavelengths' paper tier (the scenes' a = 3.53):
-        # its simulations, not new ones (tools/lib/exp.sh reuse_run; experiments.mk orders them)
+        # its simulations, not new ones (tools/lib/exp.sh reuse_run; `needs` above orders them)
         t01=$(lattice_pair "$pair" 4; echo "$tag")   # tab01's tag (4 decimals)
         reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper free_$t01
         reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper constrained_$t01
@@ -56,10 +57,16 @@ pair_simulations() {
     dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
         --set "box=[$L,$L,$L]" --set "measure.tcaf.axis_nmax=$nax" --set "seed=$((40501 + 2 * i))"
 }
-# tools/run-experiment --side: a second process on the same partial result runs the pairs' simulations
-# from the last pair down, until it meets the main process (tools/lib/exp.sh dpd_run)
-side_order 2 pair_simulations $PAIRS   # DPD_SIDE
+# the simulations: each lattice pair's, the solvent alone, and five colloid RDF runs
+i=0
+for pair in $PAIRS; do lattice_pair "$pair" 2; pair_simulations $i "$pair"; i=$((i + 1)); done
 dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
+rdf_name() { [ "$1" -gt 0 ] && echo rdf_r$1 || echo rdf; }
+for r in 0 1 2 3 4; do
+    seed=(); [ $r -gt 0 ] && seed=(--set "seed=$((40170 + r))")
+    dpd_run "$(rdf_name $r)" "$HERE/colloid-rdf.cfg" "${rep3[@]}" "${seed[@]}"
+done
+# the analysis
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent
 # colloid size: one colloid at rest in a 5^3 box; r_half where the solvent-constituent RDF
@@ -70,8 +77,7 @@ emit_from solvent temperature temperature_solvent
 # fit's own error would understate it).
 rdfs=""
 for r in 0 1 2 3 4; do
-    name=rdf; [ $r -gt 0 ] && name=rdf_r$r && seed=(--set "seed=$((40170 + r))") || seed=()
-    dpd_run $name "$HERE/colloid-rdf.cfg" "${rep3[@]}" "${seed[@]}"
+    name=$(rdf_name $r)
     "$DPD" fit-line "$OUT/runs/$name/rdf.tsv" --x r --y g --se g_se --range 0.1:0.6 |
         awk -F'\t' '{ v[$1] = $2 } END { printf "%.10g\n", 0.35 + (0.5 - v["value_at_centre"]) / v["slope"] }' > "$OUT/runs/$name/r_half"
     rdfs="$rdfs $(cat "$OUT/runs/$name/r_half")"
@@ -81,10 +87,8 @@ awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); for (i = 1; i <= n; i++
     for (i = 1; i <= n; i++) ss += (x[i] - m)^2; e = sqrt(ss / (n - 1) / n)
     printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", m, e, d + m, e }' >> "$OUT/summary.tsv"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
-i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 2
-    pair_simulations $i "$pair"
     np=$(get susp_$tag particles | cut -f1)
     awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
     emit_from susp_$tag viscosity eta_susp_$tag
@@ -126,5 +130,4 @@ for pair in $PAIRS; do
         END { split(v["phi_" t], p, "\t"); printf "%.6f\t%s\t%s\t%s\t%s\t%s\t%s\n", p[1], g("eta_r_original_" t), g("eta_r_tcaf_" t),
                   g("eta_r_cube_" t), g("eta_r_sphere_" t), g("eta_r_cube_solvent_" t), g("eta_r_sphere_solvent_" t) }' \
         "$OUT/summary.tsv" >> "$OUT/eta_r.tsv"
-    i=$((i + 1))
 done

@@ -12,12 +12,14 @@ paper_eta() { case $1 in 3.53) echo 29.08;; 6.50) echo 29.66;; 9.50) echo 30.22;
 k=0
 for a in $A_VALUES; do
     dpd_run a$a solvent-shear.cfg "${tier[@]}" --set "pairs.[0].a=$a" --set "seed=$((20190 + k))"
+    k=$((k + 1))
+done
+for a in $A_VALUES; do
     emit_from a$a viscosity "eta_a$a"
     emit_from a$a temperature "temperature_a$a"
     v=$(get a$a viscosity)
     printf '%s\t%s\t%s\n' "$a" "$v" "$(paper_eta $a)" >> "$OUT/eta.tsv"
     cp "$OUT/runs/a$a/profile.tsv" "$OUT/profile_a$a.tsv"
-    k=$((k + 1))
 done
 emit_diff eta_diff_a6.50_a3.53 a6.50 viscosity a3.53 viscosity
 emit_diff eta_diff_a9.50_a6.50 a9.50 viscosity a6.50 viscosity

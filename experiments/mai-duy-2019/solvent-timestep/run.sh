@@ -9,13 +9,22 @@ case $TIER in
     paper) DTS="0.0025 0.005 0.0075 0.01 0.0125 0.015 0.0175 0.02"; T_RUN=20; T_EQ=2; box=() ;;
 esac
 printf 'dt\tT\tT_se\teta\teta_se\tcpu_seconds\n' > "$OUT/dt-scan.tsv"
-best=0 k=0
-for dt in $DTS; do
+# run_dt DT K: the run at step DT (seed 40190 + K), the same simulated time at every step
+run_dt() {
+    local dt=$1 steps eq every
     steps=$(awk -v t=$T_RUN -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
     eq=$(awk -v t=$T_EQ -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
     every=$(awk -v d=$dt 'BEGIN{e = int(0.05/d + 0.5); print (e < 1 ? 1 : e)}')   # sample every 0.05 time units
-    if dpd_run dt$dt solvent-shear.cfg "${box[@]}" --set dt=$dt --set steps=$steps --set equilibration=$eq \
-        --set measure.every=$every --set "seed=$((40190 + k))"; then
+    dpd_run dt$dt solvent-shear.cfg "${box[@]}" --set dt=$dt --set steps=$steps --set equilibration=$eq \
+        --set measure.every=$every --set "seed=$((40190 + $2))"
+}
+# the simulations (an unstable one is an outcome, not a failure: the analysis records a gap)
+k=0
+for dt in $DTS; do run_dt $dt $k || true; k=$((k + 1)); done
+# the analysis (run_dt again returns each run's recorded outcome; nothing reruns)
+best=0 k=0
+for dt in $DTS; do
+    if run_dt $dt $k; then
         emit_from dt$dt temperature "T_dt$dt"
         emit_from dt$dt viscosity "eta_dt$dt"
         T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(get dt$dt cpu_seconds | cut -f1)

@@ -6,6 +6,7 @@
 # its eta(k) equals the constrained system's eta(k -> 0) (keff.awk of
 # tab02-effective-viscosity, error propagated), at the phi of the tier.
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs reduced mai-duy-2019/fig04-relative-viscosity-a353@reduced
 T02=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/../tab02-effective-viscosity
 # TCAF pairs "kp:kq": the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a
 # box 15 kq / kp (same lattice spacing, particles per colloid cell and phi)
@@ -25,12 +26,13 @@ pair_simulations() {
     dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
         --set "seed=$((60301 + 2 * $1))"
 }
-side_order 4 pair_simulations $PAIRS   # tools/run-experiment --side (DPD_SIDE): the last phi first
 "$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
+# the simulations
 i=0
+for pair in $PAIRS; do lattice_pair "$pair" 4; pair_simulations $i; i=$((i + 1)); done
+# the analysis
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
-    pair_simulations $i "$pair"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
     emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
@@ -39,12 +41,11 @@ for pair in $PAIRS; do
         awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
-    i=$((i + 1))
 done
 # reduced: phi = 0.4940 from the same construction in fig04-relative-viscosity-a353's committed
 # reduced tier (15^3, dt 0.005, equilibration 500 + 3000 steps; read-only)
-F04=$DPD_ROOT/results/mai-duy-2019/fig04-relative-viscosity-a353/reduced
-if [ "$TIER" = reduced ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
+F04=; [ "$TIER" = reduced ] && F04=$(upstream_if mai-duy-2019/fig04-relative-viscosity-a353@reduced)
+if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
     tag=phi0.4940
     awk -F'\t' -v t="$tag" '$1 == "eta_k0_free_phi0.49" { print "eta_k0_free_" t "\t" $2 "\t" $3 }
         $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"

@@ -3,6 +3,8 @@
 # system by TCAF (as fig02-length-scale), the constrained eta(k -> 0) = eta_eff and the free
 # system's k at which eta_free(k) equals it = k_eff (keff.awk).
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs paper mai-duy-2019/tab01-wavelengths
+needs any mai-duy-2019/fig01-viscosity-wavenumber@paper
 # PAIRS: "kp:kq" = the paper's k^3 colloids in 15^3 (names the phi) run as kq^3 colloids in a box
 # 15 kq / kp: the same lattice spacing, particles per colloid cell and phi as the paper's.
 case $TIER in
@@ -12,18 +14,24 @@ case $TIER in
     paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; tier=() ;;
 esac
 printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\n' > "$OUT/table2_data.tsv"
+# the simulations: free and constrained at each phi
 i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
     if [ "$TIER" = paper ]; then
         # the paper's Tables 1 and 2 come from one set of TCAF runs: so do ours (tab01-wavelengths
-        # runs these scenes with the same settings; its paper tier must exist, see experiments.mk)
+        # runs these scenes with the same settings; its paper tier must exist: needs, above)
         reuse_run free_$tag mai-duy-2019/tab01-wavelengths paper
         reuse_run constrained_$tag mai-duy-2019/tab01-wavelengths paper
     else
         dpd_run free_$tag free.cfg "${tier[@]}" "${geo[@]}" --set "seed=$((50300 + 2 * i))"
         dpd_run constrained_$tag constrained.cfg "${tier[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" --set "seed=$((50301 + 2 * i))"
     fi
+    i=$((i + 1))
+done
+# the analysis
+for pair in $PAIRS; do
+    lattice_pair "$pair" 4
     np=$(get free_$tag particles | cut -f1)
     awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
@@ -39,7 +47,6 @@ for pair in $PAIRS; do
         { v[$1] = $2; s[$1] = $3 }
         END { printf "%s\t%s\t%s\t%s\t%s\t%s\n", kp, v["phi_" t], g("k_eff_" t), g("lambda_eff_" t), g("eta_eff_" t), g("eta_k0_free_" t) }' \
         "$OUT/summary.tsv" >> "$OUT/table2_data.tsv"
-    i=$((i + 1))
 done
 # Table 2 beside the paper's values (rows of the phi run; value +- stderr)
 awk -F'\t' 'NR == FNR { if ($1 !~ /^#/ && $1 != "k") { pk[$1] = $3; pl[$1] = $4; pe[$1] = $5 }; next }
@@ -49,7 +56,7 @@ awk -F'\t' 'NR == FNR { if ($1 !~ /^#/ && $1 != "k") { pk[$1] = $3; pl[$1] = $4;
     paper-table2.tsv "$OUT/table2_data.tsv" > "$OUT/table2.tsv"
 # Side check (not a reproduction): the paper's (k_eff, eta_eff) pairs against the eta(k) of the
 # pure solvent (n = 4) of fig01-viscosity-wavenumber's committed paper tier, read-only.
-F01=$DPD_ROOT/results/mai-duy-2019/fig01-viscosity-wavenumber/paper/tcaf_eta.tsv
+F01=$(upstream_if mai-duy-2019/fig01-viscosity-wavenumber@paper)/tcaf_eta.tsv
 if [ -f "$F01" ]; then
     printf 'phi\tk_eff, paper\teta_eff, paper\tsolvent eta(k_eff, paper) (fig01)\tse\n' > "$OUT/solvent_at_paper_keff.tsv"
     awk -F'\t' '$1 !~ /^#/ && $1 != "k" { print $2 "\t" $3 "\t" $4 "\t" $5 }' paper-table2.tsv | \

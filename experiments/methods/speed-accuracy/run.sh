@@ -9,6 +9,7 @@
 #     the eq. 27 tolerance of PCG and of the consistent Scheme 2 (error against the
 #     fig03 paper-tier value).
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs any phan-thien-2016/fig03-couette-profile@paper
 case $TIER in
     quick) GW_DTS="0.02 0.03 0.04 0.05 0.06"; GW_T=20; GW_BOX=8
            MD_DTS="0.01 0.015 0.0175 0.02"; MD_T=8; MD_BOX=5
@@ -25,17 +26,41 @@ esac
 case $TIER in quick) T_EQ=2 ;; paper) T_EQ=5 ;; esac
 nsteps() { awk -v t=$1 -v d=$2 'BEGIN{printf "%d", t/d + 0.5}'; }
 
-# ---- 1-3: temperature against dt -------------------------------------------
-printf 'fluid\tlambda\tdt\tT\tT_se\tT_rot\tT_rot_se\tcpu_seconds\tcost\n' > "$OUT/ladder-dt.tsv"
-# dt_ladder FLUID SCENE BOX T_RUN "LAMBDAS" "DTS": cost = CPU seconds per 1000 particles per time unit
-dt_ladder() {
-    local fluid=$1 scene=$2 box=$3 trun=$4 lambdas=$5 dts=$6 k=0 name l dt T Tr cpu np rot
+# ---- the simulations -----------------------------------------------------------
+# 1-3: ladder_simulations FLUID SCENE BOX T_RUN "LAMBDAS" "DTS": a run per lambda and dt; one the
+# simulator stops as unstable (dpd_run fails) is a gap in the ladder
+declare -A unstable=()
+ladder_simulations() {
+    local fluid=$1 scene=$2 box=$3 trun=$4 lambdas=$5 dts=$6 k=0 name l dt
     for l in $lambdas; do for dt in $dts; do
         name=${fluid}_l${l}_dt$dt
         k=$((k + 1))
-        if ! dpd_run $name $scene --set "box=[$box.0,$box.0,$box.0]" --set lambda=$l --set dt=$dt \
+        dpd_run $name $scene --set "box=[$box.0,$box.0,$box.0]" --set lambda=$l --set dt=$dt \
             --set equilibration=$(nsteps $T_EQ $dt) --set steps=$(nsteps $trun $dt) \
-            --set measure.every=$(awk -v d=$dt 'BEGIN{e=int(0.05/d+0.5); print e<1?1:e}') --set seed=$((7000 + k - 1)); then
+            --set measure.every=$(awk -v d=$dt 'BEGIN{e=int(0.05/d+0.5); print e<1?1:e}') --set seed=$((7000 + k - 1)) ||
+            unstable[$name]=1
+    done; done
+}
+ladder_simulations gw gw-fluid.cfg $GW_BOX $GW_T "0.5 0.65" "$GW_DTS"
+ladder_simulations maiduy maiduy-solvent.cfg $MD_BOX $MD_T "0.5 0.65" "$MD_DTS"
+ladder_simulations pan pan-fluid.cfg $PAN_BOX $PAN_T "0.5" "$PAN_DTS"
+# 4: the m = 0 Couette channel (fig03's scene) per solver and tolerance
+couette=../../phan-thien-2016/fig03-couette-profile/couette.cfg
+for solver in pcg scheme2_consistent; do
+    for tol in ${OD_TOLS[$solver]}; do
+        dpd_run ${solver}_$tol $couette --set equilibration=$OD_EQ --set steps=$OD_STEPS --set measure.blocks=10 \
+            --set measure.profile.per_block=true --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
+    done
+done
+
+# ---- the analysis. 1-3: temperature against dt --------------------------------
+printf 'fluid\tlambda\tdt\tT\tT_se\tT_rot\tT_rot_se\tcpu_seconds\tcost\n' > "$OUT/ladder-dt.tsv"
+# ladder_analysis FLUID T_RUN "LAMBDAS" "DTS": cost = CPU seconds per 1000 particles per time unit
+ladder_analysis() {
+    local fluid=$1 trun=$2 lambdas=$3 dts=$4 name l dt T Tr cpu np
+    for l in $lambdas; do for dt in $dts; do
+        name=${fluid}_l${l}_dt$dt
+        if [ -n "${unstable[$name]:-}" ]; then
             echo "$name: unstable (dpd exited non-zero); a gap in the ladder" >&2
             printf '%s\t%s\t%s\tnan\tnan\tnan\tnan\tnan\tnan\n' $fluid $l $dt >> "$OUT/ladder-dt.tsv"
             continue
@@ -48,9 +73,9 @@ dt_ladder() {
             $(awk -v c=$cpu -v n=$np -v t=$((trun + T_EQ)) 'BEGIN{printf "%.5g", c/(n/1000)/t}') >> "$OUT/ladder-dt.tsv"
     done; done
 }
-dt_ladder gw gw-fluid.cfg $GW_BOX $GW_T "0.5 0.65" "$GW_DTS"
-dt_ladder maiduy maiduy-solvent.cfg $MD_BOX $MD_T "0.5 0.65" "$MD_DTS"
-dt_ladder pan pan-fluid.cfg $PAN_BOX $PAN_T "0.5" "$PAN_DTS"
+ladder_analysis gw $GW_T "0.5 0.65" "$GW_DTS"
+ladder_analysis maiduy $MD_T "0.5 0.65" "$MD_DTS"
+ladder_analysis pan $PAN_T "0.5" "$PAN_DTS"
 # cost_per_dt: the CPU cost per particle-step of each fluid averaged over its ladder (one run's
 # CPU time is noisy on a shared machine), times the steps per time unit 1/dt: CPU seconds per
 # 1000 particles per time unit
@@ -93,15 +118,12 @@ awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -
     "$OUT/ladder-dt.tsv" | sort >> "$OUT/summary.tsv"
 
 # ---- 4: the m = 0 Couette viscosity against the solver tolerance -------------
-couette=../../phan-thien-2016/fig03-couette-profile/couette.cfg
-ref=$DPD_ROOT/results/phan-thien-2016/fig03-couette-profile/paper/summary.tsv
+ref=$(upstream phan-thien-2016/fig03-couette-profile@paper)/summary.tsv
 read -r eta_ref eta_ref_se < <(awk -F'\t' '$1=="eta"{print $2, $3}' "$ref")
 printf 'solver\ttolerance\teta\teta_se\terror\terror_se\titerations\tcpu_per_step\ttrue_rel_error\n' > "$OUT/ladder-tolerance.tsv"
 for solver in pcg scheme2_consistent; do
     for tol in ${OD_TOLS[$solver]}; do
         name=${solver}_$tol
-        dpd_run $name $couette --set equilibration=$OD_EQ --set steps=$OD_STEPS --set measure.blocks=10 \
-            --set measure.profile.per_block=true --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
         # viscosity from the wall shear stress over the bulk shear rate (as fig03)
         read -r _ _ _ _ eta etase < <(couette_viscosity $name 10 2:10)
         emit eta_${name} $eta $etase
@@ -119,6 +141,4 @@ awk -F'\t' 'NR>1 && $9 > 0 { s=$1; n[s]++; x=log($2); y=log($9); sx[s]+=x; sy[s]
     END { for (s in n) { k=n[s]; d=k*sxx[s]-sx[s]^2; b=(k*sxy[s]-sx[s]*sy[s])/d; a=(sy[s]-b*sx[s])/k
           for (i=1;i<=k;i++) r+= (Y[s,i]-a-b*X[s,i])^2; se=(k>2)?sqrt(r/(k-2)*k/d):0; r=0
           printf "true_error_slope_%s\t%.6g\t%.4g\n", s, b, se } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
-# CPU of every run, the unstable ones included (run-experiment counts only completed runs)
-times > "$OUT/times.txt"
-emit cpu_seconds $(awk 'NR==2{split($1,a,"m"); split($2,b,"m"); printf "%.3f", a[1]*60+a[2]+b[1]*60+b[2]}' "$OUT/times.txt") 0
+# (CPU of every run, the unstable ones included: tools/run-experiment sums runs/*/.cpu_seconds)

@@ -7,6 +7,8 @@
 # a = 6.50 and 3.53, with the solvent sheared alike (eta_r = eta_susp / eta_solvent, eq. 11 for both).
 # Paper tier: rate 0.1 is fig04's and fig05's own paper-tier runs (reuse_run), not new ones.
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs paper mai-duy-2019/fig04-relative-viscosity-a353
+needs paper mai-duy-2019/fig05-relative-viscosity-a650
 FIG04=$DPD_ROOT/experiments/mai-duy-2019/fig04-relative-viscosity-a353
 case $TIER in
     # quick: fig04's quick box for phi = 0.49 (13^3 colloids' lattice spacing, 7^3 colloids), short runs
@@ -14,26 +16,16 @@ case $TIER in
     paper) PAIR=13:13; LSOLV=15; CASES="6.50:0.01 3.53:0.01 6.50:0.03"; PROD=50; run=() ;;
 esac
 lattice_pair "$PAIR" 2
-# the suspension and the solvent at repulsion $1 (every pair) and rate $2; the side process
-# (tools/run-experiment --side) runs the solvent first, so at the case where it meets the main
-# process the two run different simulations
+# the simulations: per case a:rate (repulsion a between every pair), the suspension and the solvent
 case_simulations() {
     local a=${1%:*} rate=${1#*:} n=$2
-    [ "${DPD_SIDE:-0}" = 1 ] && solvent_simulation "$a" "$rate" "$n"
     dpd_run susp_a${a}_rate$rate "$FIG04/suspension-shear.cfg" "${run[@]}" "${geo[@]}" \
         --set "pairs.[0].a=$a" --set "pairs.[1].a=$a" --set "pairs.[2].a=$a" --set "shear_rate=$rate" \
         --set "colloids.per_axis=$kq" --set "seed=$((40600 + 2 * n))"
-    [ "${DPD_SIDE:-0}" = 1 ] || solvent_simulation "$a" "$rate" "$n"
-}
-solvent_simulation() {
-    dpd_run solvent_a$1_rate$2 "$FIG04/solvent-shear.cfg" "${run[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]" \
-        --set "pairs.[0].a=$1" --set "shear_rate=$2" --set "seed=$((40601 + 2 * $3))"
+    dpd_run solvent_a${a}_rate$rate "$FIG04/solvent-shear.cfg" "${run[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]" \
+        --set "pairs.[0].a=$a" --set "shear_rate=$rate" --set "seed=$((40601 + 2 * n))"
 }
 cases=($CASES)
-if [ "${DPD_SIDE:-0}" = 1 ]; then   # tools/run-experiment --side: the cases from the last down
-    for ((j = ${#cases[@]} - 1; j >= 0; j--)); do case_simulations "${cases[j]}" $j; done
-    exit 0
-fi
 for ((j = 0; j < ${#cases[@]}; j++)); do case_simulations "${cases[j]}" $j; done
 if [ "$TIER" = paper ]; then
     reuse_run susp_a6.50_rate0.1 mai-duy-2019/fig05-relative-viscosity-a650 paper susp_$tag
@@ -42,6 +34,7 @@ if [ "$TIER" = paper ]; then
     reuse_run solvent_a3.53_rate0.1 mai-duy-2019/fig04-relative-viscosity-a353 paper solvent
     cases+=(6.50:0.1 3.53:0.1)
 fi
+# the analysis
 # strain: rate x the production time (the strain the averaged stress was sampled over)
 printf 'a\trate\teta_r\tse\teta_susp\tse\teta_solvent\tse\tstrain\n' > "$OUT/eta_r.tsv"
 for c in $(printf '%s\n' "${cases[@]}" | LC_ALL=C sort -t: -k1,1 -k2,2g); do

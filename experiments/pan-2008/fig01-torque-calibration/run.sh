@@ -13,19 +13,24 @@ esac
 # banded ratio to eq. 18 and runs 1500 time units (torque noise: variance x run length about 1.4 in
 # torque^2 x time, so a stderr near 4 % of eq. 18); the other four runs 200 time units each.
 run_steps() { [ "$TIER" = paper ] && [ "$1" = 0.0:5.5 ] && echo 150000 || true; }
-T18=$(awk -v m=$MU -v r=$R -v w=$OMEGA 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
-emit torque_eq18 "$T18" 0
-printf 'gammaC\tgammaS\ttorque\ttorque_se\n' > "$OUT/torque.tsv"
+# the simulations: one per (gamma^C_cf, gamma^S_cf)
 k=0
 for run in $RUNS; do
     gC=${run%%:*} gS=${run##*:}
-    name=gC${gC}_gS${gS}
     len=(); [ -n "$(run_steps $run)" ] && len=(--set "steps=$(run_steps $run)")
-    dpd_run $name rotating-sphere.cfg "${tier[@]}" "${len[@]}" --set "pairs.[1].gamma=$gC" --set "pairs.[1].gamma_shear=$gS" \
+    dpd_run gC${gC}_gS${gS} rotating-sphere.cfg "${tier[@]}" "${len[@]}" --set "pairs.[1].gamma=$gC" --set "pairs.[1].gamma_shear=$gS" \
         --set "seed=$((8001 + k))"
+    k=$((k + 1))
+done
+# the analysis
+T18=$(awk -v m=$MU -v r=$R -v w=$OMEGA 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
+emit torque_eq18 "$T18" 0
+printf 'gammaC\tgammaS\ttorque\ttorque_se\n' > "$OUT/torque.tsv"
+for run in $RUNS; do
+    gC=${run%%:*} gS=${run##*:}
+    name=gC${gC}_gS${gS}
     emit_from $name torque_on_colloid_z "torque_$name"
     printf '%s\t%s\t%s\n' "$gC" "$gS" "$(get $name torque_on_colloid_z)" >> "$OUT/torque.tsv"
-    k=$((k + 1))
 done
 # torque ratio to eq. 18 at the calibrated gamma^S_cf = 5.5, gamma^C_cf = 0
 get gC0.0_gS5.5 torque_on_colloid_z | awk -F'\t' -v t=$T18 '{printf "torque_ratio_gS5.5\t%.10g\t%.4g\n", $1/t, $2/t}' >> "$OUT/summary.tsv"

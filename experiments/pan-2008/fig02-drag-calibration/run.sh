@@ -9,6 +9,15 @@ case $TIER in
     quick) RUNS="3.5:2000:15000" ;;                                   # gammaC:equil:steps
     paper) RUNS="3.5:5000:300000 0.0:10000:30000 7.0:10000:30000" ;;
 esac
+# the simulations: one per gamma^C_cf
+k=0
+for run in $RUNS; do
+    IFS=: read -r gC eq st <<< "$run"
+    dpd_run gC$gC drag-sphere.cfg --set "pairs.[1].gamma=$gC" --set "equilibration=$eq" --set "steps=$st" \
+        --set "seed=$((2001 + k))"
+    k=$((k + 1))
+done
+# the analysis
 # eq. 19: F_ext = 6 pi mu u R with F_ext = N_f g; Hasimoto: F = 6 pi mu u R / K(phi)
 read -r U19 UH PHI < <(awk -v m=$MU -v r=$R -v n=$NF -v g=$G -v L=$L 'BEGIN{pi = 3.141592653589793
     u19 = n*g/(6*pi*m*r); phi = 4*pi*r^3/(3*L^3)
@@ -17,12 +26,9 @@ emit u_eq19 "$U19" 0
 emit u_hasimoto "$UH" 0
 emit phi "$PHI" 0
 printf 'gammaC\tu\tu_se\tu_se_blocks\tu_se_ou\tforce_x\tforce_x_se\n' > "$OUT/superficial.tsv"
-k=0
 for run in $RUNS; do
-    IFS=: read -r gC eq st <<< "$run"
+    IFS=: read -r gC _ st <<< "$run"
     name=gC$gC
-    dpd_run $name drag-sphere.cfg --set "pairs.[1].gamma=$gC" --set "equilibration=$eq" --set "steps=$st" \
-        --set "seed=$((2001 + k))"
     # superficial velocity = mean fluid velocity (the colloid's volume fraction 8.6e-5 is neglected).
     # Its error: the larger of the block estimate and the Ornstein-Uhlenbeck value sqrt(2 kBT / (zeta T))
     # of the fluid's total momentum relaxing through the colloid (zeta = N_f g / u), because the
@@ -32,7 +38,6 @@ for run in $RUNS; do
         printf "%.10g\t%.4g\t%.4g\t%.4g", $1, se, $2, ou }')
     printf '%s\t%s\t%s\n' "$gC" "$line" "$(get $name force_on_colloid_x)" >> "$OUT/superficial.tsv"
     echo "$line" | awk -F'\t' -v q="u_gC$gC" '{printf "%s\t%s\t%s\n", q, $1, $2}' >> "$OUT/summary.tsv"
-    k=$((k + 1))
 done
 # ratio of the calibrated point to eq. 19 and to Hasimoto's value
 awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { printf "u_ratio_eq19_gC3.5\t%.10g\t%.4g\nu_ratio_hasimoto_gC3.5\t%.10g\t%.4g\n", $2/a, $3/a, $2/h, $3/h }' \

@@ -7,12 +7,16 @@ case $TIER in
     quick) NS="1 8"; len=(--set steps=6000 --set measure.every=2) ;;
     paper) NS="1 2 3 4 5 6 7 8"; len=() ;;
 esac
-printf 'N\tTs\tTs_se\ttorque\ttorque_se\n' > "$OUT/shape_factor.tsv"
+# the simulations: one chain of N spheres per N
 for N in $NS; do
     pos=$(awk -v n=$N -v R=$R -v c=$C 'BEGIN{ s = "("; for (k = 0; k < n; k++)
         s = s sprintf("%s[%.4f,%.4f,%.4f]", k ? "," : "", c + (k - (n - 1)/2) * 2*R, c, c); print s ")" }')
     dpd_run N$N chain.cfg "${len[@]}" --set "types.[1].positions=$pos" --set "types.[1].spin=[$OMEGA,0.0,0.0]" \
         --set "seed=$((2400 + N))"
+done
+# the analysis
+printf 'N\tTs\tTs_se\ttorque\ttorque_se\n' > "$OUT/shape_factor.tsv"
+for N in $NS; do
     Ts=$(get N$N torque_on_chain_x | awk -F'\t' -v m=$MU -v R=$R -v w=$OMEGA -v n=$N '{
         d = -8*3.141592653589793*m*w*n*R^3; printf "%.10g\t%.4g", $1/d, $2/d }')
     emit "Ts_N$N" $Ts

@@ -17,13 +17,18 @@ row_steps() { case $TIER in quick) ;; paper) case $1 in 1) echo 250000;; 2|3) ec
 row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
 row_curl()  { case $1 in 1|3) echo 0.2;; 2|4) echo 0.4;; esac; }
 paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) echo 1.0659;; esac; }
-printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
+# the simulations: one per row
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
     len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
     dpd_run row$r couette-sphere.cfg "${tier[@]}" "${len[@]}" --set "types.[1].velocity=[-$V,0.0,0.0]" \
         --set "types.[2].velocity=[$V,0.0,0.0]" --set "types.[3].spin=[0.0,$W,0.0]" --set "seed=$((9000 + r))"
+done
+# the analysis
+printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
+for r in $ROWS; do
+    W=$(row_omega $r) C=$(row_curl $r)
     # undisturbed vorticity: slope of the plane-averaged v_x(z) over the central 4 rc, fitted per
     # block (the bins of one profile share the flow's fluctuations: not independent)
     c2=$(block_slope row$r 3.0:7.0 | awk -F'\t' '{printf "%.10g\t%.4g", $1/2, $2/2}')

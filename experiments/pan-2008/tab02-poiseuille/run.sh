@@ -15,11 +15,17 @@ row_steps() { [ "$TIER" = paper ] || return 0; case $1 in 1) echo 2100000;; 2) e
 row_g()     { case $1 in 1) echo 0.05;; 2) echo 0.10;; 3) echo 0.20;; esac; }
 paper_F()   { case $1 in 1) echo 4.4881;; 2) echo 9.689;; 3) echo 18.881;; esac; }
 paper_T()   { case $1 in 1) echo 0.0838;; 2) echo 0.163;; 3) echo 0.313;; esac; }
+# the simulations: the channel without the colloid at g = GREF, then one with it per row
+dpd_run empty poiseuille-empty.cfg "${emp[@]}" --set "types.[0].body_force=[$GREF,0.0,0.0]" --set seed=2200 \
+    --set measure.profile.per_block=true
+for r in $ROWS; do
+    len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
+    dpd_run row$r poiseuille-sphere.cfg "${sph[@]}" "${len[@]}" --set "types.[0].body_force=[$(row_g $r),0.0,0.0]" --set "seed=$((2200 + r))"
+done
+# the analysis
 # undisturbed channel at g = GREF: u at z = 3 (mean of the two 0.25-wide bins either side, per
 # block; error from the blocks: the two bins' errors are not independent), scaled linearly to
 # each row's g (Stokes flow; the largest g gives the smallest relative error)
-dpd_run empty poiseuille-empty.cfg "${emp[@]}" --set "types.[0].body_force=[$GREF,0.0,0.0]" --set seed=2200 \
-    --set measure.profile.per_block=true
 cp "$OUT/runs/empty/profile.tsv" "$OUT/profile_empty.tsv"
 UREF=$(block_mean empty $(awk -v z=$ZH 'BEGIN { printf "%g:%g", z - 0.25, z + 0.25 }'))
 emit u_h_gref $UREF
@@ -27,8 +33,6 @@ printf 'row\tg\tu_h\tu_h_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttor
 printf 'row\tRe (paper)\tu_h\tF paper\tF ours\tF eq. 22\tF verdict@\tT paper\tT ours\tT eq. 22\tT verdict@\n' > "$OUT/table2.tsv"
 for r in $ROWS; do
     g=$(row_g $r)
-    len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
-    dpd_run row$r poiseuille-sphere.cfg "${sph[@]}" "${len[@]}" --set "types.[0].body_force=[$g,0.0,0.0]" --set "seed=$((2200 + r))"
     uh=$(echo "$UREF" | awk -F'\t' -v g=$g -v g0=$GREF '{printf "%.10g\t%.4g", $1*g/g0, $2*g/g0}')
     emit "u_h_row$r" $uh
     # eq. 22 (paper mu and R, h = 2 from the reflection plane z = 1)

@@ -20,6 +20,15 @@ row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
 NF=$(awk -v L=$L 'BEGIN{printf "%d", 3*L^3}')
+# the simulations: one per row, the spheres at y = L/2 -+ l/2 on the line x = z = L/2
+for r in $ROWS; do
+    l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
+    ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
+    dpd_run row$r two-spheres.cfg "${len[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
+        --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
+        --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
+done
+# the analysis
 eq23() {  # l u -> F_the T_the (eq. 23)
     awk -v l=$1 -v u=$2 -v m=$MU -v R=$R 'BEGIN{pi = 3.141592653589793; q = R/l
         F = 6*pi*m*R*u * (1 - 3*q/4 + 9*q^2/16 - 59*q^3/64 + 465*q^4/256 - 15813*q^5/7168)
@@ -51,11 +60,7 @@ column_mean() {
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
 printf 'l\tu\tF paper\tF ours\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"
 for r in $ROWS; do
-    l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
-    ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
-    dpd_run row$r two-spheres.cfg "${len[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
-        --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
-        --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
+    l=$(row_l $r)
     u="$U	0"
     emit "u_row$r" $u
     # drag per sphere (without the zero-mean random part) and the antisymmetric torque

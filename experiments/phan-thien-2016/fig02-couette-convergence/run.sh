@@ -8,8 +8,13 @@ case $TIER in
     quick) tier=(--set equilibration=20 --set steps=60) ;;
     paper) tier=() ;;
 esac
-for solver in scheme1 scheme2_paper scheme2_consistent pcg; do
+solvers="scheme1 scheme2_paper scheme2_consistent pcg"
+# the simulations
+for solver in $solvers; do
     dpd_run $solver couette.cfg "${tier[@]}" --set "overdamped.solver=\"$solver\""
+done
+# the analysis
+for solver in $solvers; do
     emit_from $solver solver_iterations "iterations_$solver"
     emit_from $solver solver_true_rel_error "true_error_$solver"
     emit_from $solver solver_seconds_per_step "seconds_per_step_$solver"

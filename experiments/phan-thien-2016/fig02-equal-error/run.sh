@@ -15,12 +15,19 @@ case $TIER in
 esac
 declare -A ladder=([scheme1]="1e-7 1e-8 1e-9" [scheme2_paper]="1e-6 1e-7 1e-8"
                    [scheme2_consistent]="1e-6 1e-7 1e-8" [pcg]="1e-5 1e-6 1e-7 1e-8" [pcg_2level]="1e-5 1e-6 1e-7 1e-8")
+solvers="scheme1 scheme2_paper scheme2_consistent pcg pcg_2level"
+# the simulations
+for solver in $solvers; do
+    for tol in ${ladder[$solver]}; do
+        dpd_run ${solver}_$tol $scene "${len[@]}" --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol \
+            --set overdamped.reference_own_fixed_point=true
+    done
+done
+# the analysis
 printf 'solver\ttolerance\titerations\titerations_se\ttrue_error\tcpu_seconds\tcpu_seconds_se\n' > "$OUT/ladder.tsv"
-for solver in scheme1 scheme2_paper scheme2_consistent pcg pcg_2level; do
+for solver in $solvers; do
     for tol in ${ladder[$solver]}; do
         name=${solver}_$tol
-        dpd_run $name $scene "${len[@]}" --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol \
-            --set overdamped.reference_own_fixed_point=true
         printf '%s\t%s\t%s\t%s\t%s\n' $solver $tol "$(get $name solver_iterations)" "$(get $name solver_true_rel_error | cut -f1)" \
             "$(get $name solver_cpu_seconds_per_step)" >> "$OUT/ladder.tsv"
     done

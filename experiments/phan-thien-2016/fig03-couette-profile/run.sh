@@ -11,10 +11,14 @@ case $TIER in
                            [le]="--set equilibration=300 --set steps=3000") ;;
     paper) declare -A len=([pcg]="" [scheme2_paper]="--set steps=5000" [le]="--set equilibration=1000 --set steps=12000") ;;
 esac
+# the simulations (the Lees-Edwards cross-check below takes its density and rate from their analysis)
 for solver in pcg scheme2_paper; do
-    sfx=; [ $solver = pcg ] || sfx=_scheme2
     # shellcheck disable=SC2086
     dpd_run $solver couette.cfg ${len[$solver]} --set "overdamped.solver=\"$solver\"" --set measure.profile.per_block=true
+done
+# the analysis
+for solver in pcg scheme2_paper; do
+    sfx=; [ $solver = pcg ] || sfx=_scheme2
     p=$OUT/runs/$solver/profile.tsv
     cp "$p" "$OUT/profile$sfx.tsv"
     "$DPD" fit-line "$p" --x pos --y vx --se vx_se --range $BULK > "$OUT/runs/$solver/fit.tsv"
@@ -52,6 +56,7 @@ read -r rho rhose < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="po
     $1>=r[1] && $1<=r[2] {s+=$2; e+=$3^2; n++} END{printf "%.6f\t%.4g\n", s/n, sqrt(e)/n}' "$OUT/profile.tsv")
 emit density_bulk "$rho" "$rhose"
 read -r g _ < <(awk -F'\t' '$1=="shear_rate"{print $2 "\t" $3}' "$OUT/summary.tsv")
+# a simulation after the analysis: its density and shear rate are the measured rho and g
 # shellcheck disable=SC2086
 dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg" ${len[le]} \
     --set "types.[0].density=$rho" --set "shear_rate=$g" --set dt=0.01 --set seed=2017

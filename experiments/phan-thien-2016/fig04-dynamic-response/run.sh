@@ -8,16 +8,26 @@ case $TIER in
     quick) seeds=(1 2 3); len=(--set equilibration=200 --set steps=2000); b0=500; b1=200; ts=15 ;;
     paper) seeds=(1 2 3 4 5 6 7 8); len=(); b0=1000; b1=400; ts=30 ;;
 esac
+# the simulations
 for m in m0 m1; do
-    files=()
     for seed in "${seeds[@]}"; do
         if [ $m = m0 ]; then blk=(--set measure.every=1 --set measure.blocks=$b0)   # blocks of 4 steps
         else blk=(--set measure.blocks=$b1); fi                                    # blocks of 0.1 time units
         dpd_run ${m}_s$seed $m.cfg "${len[@]}" "${blk[@]}" --set seed=$seed
+    done
+done
+# the analysis
+for m in m0 m1; do
+    files=()
+    for seed in "${seeds[@]}"; do
         # the columns growth.awk reads, kept compressed (profile_blocks.tsv is not committed:
-        # ~0.5 MB per run), so that the analysis can be redone from the committed files
+        # ~0.5 MB per run), so that the analysis can be redone from the committed files; written
+        # under another name first, so that a failed attempt leaves no empty file to be kept
         vb=$OUT/runs/${m}_s$seed/vx_blocks.tsv.gz
-        [ -f "$vb" ] || cut -f1,2,3,5 "$OUT/runs/${m}_s$seed/profile_blocks.tsv" | gzip -9n > "$vb"
+        if [ ! -f "$vb" ]; then
+            cut -f1,2,3,5 "$OUT/runs/${m}_s$seed/profile_blocks.tsv" | gzip -9n > "$vb.part"
+            mv "$vb.part" "$vb"
+        fi
         files+=("$vb")
     done
     zcat "${files[@]}" | awk -v ts=$ts -v name=$m -v out="$OUT" -f growth.awk >> "$OUT/summary.tsv"

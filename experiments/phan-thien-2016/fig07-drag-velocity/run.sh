@@ -5,33 +5,26 @@
 # eta measured here by Lees-Edwards shear of the same fluid and a the exclusion
 # radius measured in fig06-cylinder-exclusion (same tier).
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs any phan-thien-2016/fig06-cylinder-exclusion
 scene=$DPD_ROOT/experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
-fig06=$DPD_ROOT/results/phan-thien-2016/fig06-cylinder-exclusion/$TIER/summary.tsv
-[ -f "$fig06" ] || { echo "fig07: needs $fig06 (make results/phan-thien-2016/fig06-cylinder-exclusion/$TIER/summary.tsv)" >&2; exit 1; }
+fig06=$(upstream phan-thien-2016/fig06-cylinder-exclusion)/summary.tsv
 case $TIER in
     quick) Ps="0.1 0.5 1.0"; tier=(--set equilibration=500 --set steps=8000); shear=(--set equilibration=300 --set steps=3000) ;;
     paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; tier=(--set equilibration=1000 --set steps=50000)
            shear=(--set equilibration=1000 --set steps=20000) ;;
 esac
+# the simulations
 dpd_run shear shear.cfg "${shear[@]}"
+for P in $Ps; do   # sampled every step: the m = 0 velocities are nearly white in time
+    dpd_run "P$P" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
+        --set seed=$((7000 + 10#${P/./}))
+done
+# the analysis
 emit_from shear viscosity eta_solvent
 a=$(awk -F'\t' '$1=="exclusion_radius"{print $2 "\t" $3}' "$fig06")
 emit exclusion_radius "${a%%$'\t'*}" "${a##*$'\t'}"
 nfluid=144; h=6.0
 printf 'P\tdrag\tdrag_se\tU\tU_se\thasimoto_drag\thasimoto_drag_se\n' > "$OUT/drag.tsv"
-# the m = 0 runs are serial: two at a time
-run_P() {   # sampled every step: the m = 0 velocities are nearly white in time
-    dpd_run "P$1" "$scene" "${tier[@]}" --set "types.[0].body_force=[$1,0.0]" --set measure.every=1 \
-        --set seed=$((7000 + 10#${1/./}))
-}
-set -- $Ps
-while [ $# -gt 0 ]; do
-    run_P "$1" & p1=$!; p2=
-    [ $# -gt 1 ] && { run_P "$2" & p2=$!; }
-    wait $p1 || exit 1
-    [ -z "$p2" ] || wait $p2 || exit 1
-    shift; [ $# -gt 0 ] && shift
-done
 for P in $Ps; do
     emit_from "P$P" force_on_cylinder_x "drag_P$P"
     emit_from "P$P" mean_velocity_fluid_x "velocity_P$P"

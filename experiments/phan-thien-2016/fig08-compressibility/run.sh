@@ -11,15 +11,24 @@ case $TIER in
     quick) Ps="0.1 1.0"; seeds="1 2"; tier=(--set equilibration=1000 --set steps=10000) ;;
     paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; seeds="1 2 3"; tier=(--set equilibration=1000 --set steps=20000) ;;
 esac
-printf 'P\tm\tresidual\tresidual_se\tdivu\tdivu_se\tU\tU_se\n' > "$OUT/fields.tsv"
+# the simulations: the flows, and the equation of state of the m = 1 fluid (Mach number, below)
 for m in 0 1; do
     scene=$m0; [ $m = 1 ] && scene=$m1
+    for P in $Ps; do
+        for k in $seeds; do
+            dpd_run "m${m}_P${P}_s$k" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
+                --set 'measure.density_map.bins=[12,12]' --set seed=$((8000 + 100 * k + 10#${P/./} + 1000 * m))
+        done
+    done
+done
+for N in 137 151; do dpd_run "eos_N$N" eos-m1.cfg --set "types.[0].count=$N" --set seed=$((8500 + N)); done
+# the analysis
+printf 'P\tm\tresidual\tresidual_se\tdivu\tdivu_se\tU\tU_se\n' > "$OUT/fields.tsv"
+for m in 0 1; do
     for P in $Ps; do
         rows=""
         for k in $seeds; do
             name="m${m}_P${P}_s$k"
-            dpd_run "$name" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
-                --set 'measure.density_map.bins=[12,12]' --set seed=$((8000 + 100 * k + 10#${P/./} + 1000 * m))
             rows+="$(awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
         done
         # mean and standard error over the seeds
@@ -37,8 +46,7 @@ for m in 0 1; do
     done
 done
 # Mach number of the m = 1 runs: U / c_T with the isothermal speed of sound
-# c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %), central difference
-for N in 137 151; do dpd_run "eos_N$N" eos-m1.cfg --set "types.[0].count=$N" --set seed=$((8500 + N)); done
+# c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %, runs eos_N137 and eos_N151), central difference
 c2=$(awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
         split(lo, a, "\t"); split(hi, b, "\t"); dn = (151 - 137) / 36.0
         c2 = (b[1] - a[1]) / dn; printf "%.10g\t%.4g", c2, sqrt(a[2]^2 + b[2]^2) / dn }')

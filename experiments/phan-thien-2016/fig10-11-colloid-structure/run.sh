@@ -8,9 +8,11 @@ case $TIER in
     quick) tier=(--set equilibration=1000 --set steps=12000) ;;
     paper) tier=(--set equilibration=2000 --set steps=150000) ;;
 esac
+# the simulations
 dpd_run field triangle.cfg
-cp "$OUT/runs/field/force_map.tsv" "$OUT/force_map.tsv"
 dpd_run colloid colloid.cfg "${tier[@]}"
+# the analysis
+cp "$OUT/runs/field/force_map.tsv" "$OUT/force_map.tsv"
 emit_from colloid colloid_radius
 emit_from colloid D D_solvent
 emit_from colloid D_colloid

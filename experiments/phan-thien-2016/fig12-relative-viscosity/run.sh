@@ -8,12 +8,17 @@ case $TIER in
     quick) tier=(--set equilibration=300 --set steps=6000) ;;
     paper) tier=(--set equilibration=1000 --set steps=40000) ;;
 esac
+ks="1 2 3 4 6 8"
+# the simulations: the solvent alone (k = 0) and the suspensions
 dpd_run k0 shear.cfg "${tier[@]}" --set colloids2d.count=0 --set types.[1].count=0 --set seed=1200
-emit_from k0 viscosity eta_solvent
-printf 'k\tphi\teta\teta_se\teta_r\teta_r_se\teta_r_minus_1\teta_spring\teta_spring_se\n' > "$OUT/eta_r.tsv"
-for k in 1 2 3 4 6 8; do
+for k in $ks; do
     dpd_run "k$k" shear.cfg "${tier[@]}" --set colloids2d.count=$k --set "types.[1].count=$((3 * k))" \
         --set seed=$((1200 + k))
+done
+# the analysis
+emit_from k0 viscosity eta_solvent
+printf 'k\tphi\teta\teta_se\teta_r\teta_r_se\teta_r_minus_1\teta_spring\teta_spring_se\n' > "$OUT/eta_r.tsv"
+for k in $ks; do
     emit_from "k$k" viscosity "eta_k$k"
     emit_ratio "eta_r_k$k" "k$k" viscosity k0 viscosity
     e=$(get "k$k" viscosity) e0=$(get k0 viscosity) es=$(get "k$k" viscosity_spring)

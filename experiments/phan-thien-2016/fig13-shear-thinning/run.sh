@@ -5,23 +5,27 @@
 # same tier), Lees-Edwards shear at rates 0.25 ... 33, m = 0; the solvent alone at the
 # same rates separates the solvent's own rate dependence from the colloid's.
 . "$DPD_ROOT/tools/lib/exp.sh"
+needs any phan-thien-2016/fig10-11-colloid-structure
 scene=$DPD_ROOT/experiments/phan-thien-2016/fig12-relative-viscosity/shear.cfg
-f1011=$DPD_ROOT/results/phan-thien-2016/fig10-11-colloid-structure/$TIER/summary.tsv
-[ -f "$f1011" ] || { echo "fig13: needs $f1011" >&2; exit 1; }
+f1011=$(upstream phan-thien-2016/fig10-11-colloid-structure)/summary.tsv
 case $TIER in
     quick) rates="0.25 1 4 33"; tier=(--set equilibration=300 --set steps=8000) ;;
     paper) rates="0.25 0.5 1 2 4 8 16 33"; tier=(--set equilibration=1000 --set steps=40000) ;;
 esac
-a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
-emit colloid_radius "$a" 0
-emit D_colloid "$D" 0
-printf 'rate\tPe\teta\teta_se\teta_solvent\teta_solvent_se\teta_r\teta_r_se\n' > "$OUT/thinning.tsv"
+# the simulations: the suspension (k1) and the solvent alone (k0) at each rate
 n=0
 for r in $rates; do
     n=$((n + 1))
     dpd_run "k1_rate$r" "$scene" "${tier[@]}" --set shear_rate=$r --set seed=$((1300 + n))
     dpd_run "k0_rate$r" "$scene" "${tier[@]}" --set shear_rate=$r --set seed=$((1400 + n)) \
         --set colloids2d.count=0 --set types.[1].count=0
+done
+# the analysis
+a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
+emit colloid_radius "$a" 0
+emit D_colloid "$D" 0
+printf 'rate\tPe\teta\teta_se\teta_solvent\teta_solvent_se\teta_r\teta_r_se\n' > "$OUT/thinning.tsv"
+for r in $rates; do
     emit_from "k1_rate$r" viscosity "eta_rate$r"
     emit_from "k0_rate$r" viscosity "eta_solvent_rate$r"
     emit_ratio "eta_r_rate$r" "k1_rate$r" viscosity "k0_rate$r" viscosity

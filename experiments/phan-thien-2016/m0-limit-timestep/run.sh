@@ -22,15 +22,24 @@ analyse() {
         END{m=s/n; for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>b){b=x; be=e[k]/m}} printf "%.10g\t%.4g", b, be}' "$p")
     emit_from $1 temperature "temperature_$2"
 }
-# 1. m -> 0
+mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
+# the simulations: 1. the m = 0 solve and the inertial runs at decreasing m; 2. the m = 0 time steps
 dpd_run m0 $od --set measure.profile.per_block=true --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
-analyse m0 m0
-printf 'm\tdt\tshear_rate\tshear_rate_se\ttemperature\n' > "$OUT/m-limit.tsv"
 for m in $masses; do
-    dt=$(awk -v m=$m 'BEGIN{printf "%.6g", m/30}')
+    dt=$(mdt $m)
     every=$(awk -v dt=$dt 'BEGIN{e=int(0.05/dt+0.5); printf "%d", e<1?1:e}')
     dpd_run m$m inertial.cfg --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$every $(for t in 0 1 2 3 4; do printf -- '--set types.[%d].mass=%s ' $t $m; done)
+done
+for dt in $dts; do
+    dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
+        --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
+done
+# 1. m -> 0
+analyse m0 m0
+printf 'm\tdt\tshear_rate\tshear_rate_se\ttemperature\n' > "$OUT/m-limit.tsv"
+for m in $masses; do
+    dt=$(mdt $m)
     analyse m$m m$m
     printf '%s\t%s\t%s\t%s\n' $m $dt "$(awk -F'\t' -v q=shear_rate_m$m '$1==q{print $2 "\t" $3}' "$OUT/summary.tsv")" \
         "$(get m$m temperature | cut -f1)" >> "$OUT/m-limit.tsv"
@@ -40,11 +49,7 @@ emit shear_rate_m_smallest_minus_m0 $(awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x
     END{printf "%.10g\t%.4g", x-y, sqrt(xs^2+ys^2)}' "$OUT/summary.tsv")
 # 2. time step of the m = 0 run
 printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OUT/dt-scan.tsv"
-for dt in $dts; do
-    dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
-        --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
-    analyse dt$dt dt$dt
-done
+for dt in $dts; do analyse dt$dt dt$dt; done
 awk -F'\t' -v dts="$dts" 'BEGIN{n=split(dts,D," ")} {v[$1]=$2; s[$1]=$3}
     END{e0=v["eta_dt" D[1]]; best=D[1]
         for(i=1;i<=n;i++){d=D[i]; e=v["eta_dt" d]; dd=v["density_bulk_max_rel_dev_dt" d]

@@ -14,13 +14,21 @@ amp() { local lo hi; lo=$(get "$1" "com_${2}_min" | cut -f1); hi=$(get "$1" "com
 emit_list() { local q=$1; shift
     awk -v q="$q" -v v="$*" 'BEGIN{k=split(v,x," "); s=0; for(i=1;i<=k;i++) s+=x[i]; m=s/k;
         ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; printf "%s\t%.10g\t%.4g\n", q, m, (k>1)?sqrt(ss/(k-1)/k):0}' >> "$OUT/summary.tsv"; }
+# the simulations
+for solver in scheme1 scheme2_paper; do
+    for seed in "${seeds[@]}"; do
+        dpd_run "${solver}_s$seed" com.cfg "${tier[@]}" --set seed=$seed --set "overdamped.solver=\"$solver\""
+    done
+done
+if [ "$TIER" = paper ]; then
+    # the published Scheme 2's velocity sum is a solver-tolerance effect: one run at 1e-10
+    dpd_run scheme2_tol1e-10 com.cfg --set seed=1 --set 'overdamped.solver="scheme2_paper"' --set overdamped.tolerance=1e-10
+fi
+# the analysis
 for solver in scheme1 scheme2_paper; do
     short=${solver%_paper}
     runs=()
-    for seed in "${seeds[@]}"; do
-        dpd_run "${solver}_s$seed" com.cfg "${tier[@]}" --set seed=$seed --set "overdamped.solver=\"$solver\""
-        runs+=("${solver}_s$seed")
-    done
+    for seed in "${seeds[@]}"; do runs+=("${solver}_s$seed"); done
     for q in vx vy x y; do
         vals=""; for r in "${runs[@]}"; do vals="$vals $(amp "$r" "$q")"; done
         emit_list "com_${q}_amplitude_$short" $vals
@@ -36,8 +44,6 @@ done
 emit_ratio com_speed_ratio_scheme1_scheme2 scheme1_s1 com_speed_max scheme2_paper_s1 com_speed_max
 sed -i '/^com_speed_ratio_scheme1_scheme2\t/s/\t[^\t]*$/\t0/' "$OUT/summary.tsv"   # extremes of one run each: no error
 if [ "$TIER" = paper ]; then
-    # the published Scheme 2's velocity sum is a solver-tolerance effect: one run at 1e-10
-    dpd_run scheme2_tol1e-10 com.cfg --set seed=1 --set 'overdamped.solver="scheme2_paper"' --set overdamped.tolerance=1e-10
     emit_from scheme2_tol1e-10 velocity_sum_max velocity_sum_max_scheme2_tol1e-10
     emit_from scheme2_tol1e-10 com_displacement_max com_displacement_max_scheme2_tol1e-10
 fi
