@@ -24,7 +24,7 @@ SRC := $(filter-out src/main.c,$(wildcard src/*.c))
 OBJ := $(patsubst src/%.c,$(BUILD)/%.o,$(SRC))
 BIN := bin/dpd
 
-.PHONY: all deps test figures check reproduce paper paper-pdf bench bench-peer clean
+.PHONY: all deps test test-slurm figures check reproduce paper paper-pdf bench bench-peer clean
 all: $(BIN)
 
 # Install any missing Debian package (idempotent, fast when all present).
@@ -82,6 +82,11 @@ include experiments/experiments.mk
 paper-pdf: paper
 	@tools/deps pdf
 	@weasyprint -q build/paper.html build/paper.pdf && echo "paper-pdf: wrote build/paper.pdf"
+
+# the Slurm engine against a real Slurm: a one-node cluster started here (tools/slurm-local)
+test-slurm: $(BIN)
+	@tools/deps slurm
+	@tests/slurm.sh
 
 bench: $(BIN) $(BARE)
 	@bench/bench.sh
