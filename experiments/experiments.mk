@@ -19,6 +19,11 @@ results/phan-thien-2016/fig13-shear-thinning/$(TIER)/summary.tsv: results/phan-t
 # paper tier: results that reuse another experiment's simulations (reuse_run, tools/lib/exp.sh)
 results/mai-duy-2019/tab02-effective-viscosity/paper/summary.tsv \
 results/mai-duy-2019/fig04-relative-viscosity-a353/paper/summary.tsv: results/mai-duy-2019/tab01-wavelengths/paper/summary.tsv
+results/mai-duy-2019/tab02-readings/paper/summary.tsv: results/mai-duy-2019/tab01-wavelengths/paper/summary.tsv
+results/mai-duy-2019/tab02-readings/paper/summary.tsv: results/mai-duy-2019/fig01-viscosity-wavenumber/paper/summary.tsv
+results/mai-duy-2019/tab02-readings/paper/summary.tsv: results/mai-duy-2019/fig02-length-scale/paper/summary.tsv
+results/mai-duy-2019/tab02-readings/paper/summary.tsv: results/mai-duy-2019/fig04-relative-viscosity-a353/paper/summary.tsv
+results/mai-duy-2019/tab02-readings/paper/summary.tsv: results/mai-duy-2019/fig05-relative-viscosity-a650/paper/summary.tsv
 
 figures/%/.stamp-$(TIER): results/%/$(TIER)/summary.tsv experiments/%/plot.gp
 	@$(call PLOT,$*)
