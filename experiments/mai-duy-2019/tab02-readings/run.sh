@@ -244,7 +244,7 @@ for rd in $READINGS; do
         { V[$1] = $2; S[$1] = $3 }
         END { printf "k\tphi\tk_eff (%s)\tk_eff, paper\teta_eff (%s)\teta_eff, paper\n", rd, rd
               n = split(tags, t, "\n"); for (i = 1; i <= n; i++) { g = "_a3.53_" t[i]
-                  printf "%d\t%.4f\t%s\t%s\t%s\t%s\n", (i + 2), V["phi_" t[i]], pm("reading_" rd "_k_eff" g), pk[t[i]],
+                  p = V["phi_" t[i]]; printf "%d\t%.4f\t%s\t%s\t%s\t%s\n", int((13500 * p / (6 * (1 - p)))^(1 / 3) + 0.5), p, pm("reading_" rd "_k_eff" g), pk[t[i]],
                          pm("reading_" rd "_eta_eff" g), pe[t[i]] } }' "$PAPER2" "$OUT/summary.tsv" > "$OUT/table2_reading_$rd.tsv"
     awk -F'\t' -v rd="$rd" -v tags="$tags" "$pmstr"'
         { V[$1] = $2; S[$1] = $3 }
@@ -281,7 +281,7 @@ paste <(grep -v '^#' "$OUT/runs/$cr/tcaf.tsv" | cut -f1-3) <(grep -v '^#' "$OUT/
     awk -F'\t' 'NR == 1 { print "t\tconstrained\tse\ttwo_mode_fit\tfree\tfree_se"; next } { print }' > "$OUT/curve_phi0.4940.tsv"
 # the readings side by side: how many of Table 2's values each gives within 10 %, and eta_r(0.49)
 awk -F'\t' -v tags="$tags" -v rds="$READINGS" "$pmstr"'
-    NR == FNR { if ($1 !~ /^#/ && $1 != "k") { t = sprintf("phi%.4f", $2); pk[t] = $3; pe[t] = $5 }; next }
+    NR == FNR { if ($1 !~ /^#/ && $1 != "k") { key = sprintf("phi%.4f", $2); pk[key] = $3; pe[key] = $5 }; next }
     { V[$1] = $2; S[$1] = $3 }
     function off(q, p) { return V[q] / p - 1 < 0 ? 1 - V[q] / p : V[q] / p - 1 }
     END {
