@@ -206,6 +206,25 @@ if [ "$TIER" = quick ]; then
     put temperature_constrained_$t "$(get constrained_a3.53_$t temperature)"
     put spring_extension_rms_$t "$(get constrained_a3.53_$t colloid_spring_extension_rms)"
 fi
+# the propagated errors against the blocks': eq. 28's fit of every shell of the free and constrained
+# runs at a = 3.53 by `dpd tcaf-fit --model exp` (the simulator's own fit of the mean curve, errors
+# propagated from the per-lag errors) against the run's tcaf_eta.tsv (the same fit block by block);
+# the geometric mean of the ratios over the shells, its error from their scatter (shells independent)
+for kind in propagated bound; do
+    col=4; [ $kind = bound ] && col=5
+    for pair in $PAIRS; do
+        lattice_pair "$pair" 4
+        for sys in free constrained; do
+            r=${sys}_a3.53_$tag
+            fit $r exp "$(get $r tcaf_mass_density | cut -f1)" "$L"
+            awk -F'\t' -v c=$col 'NR == FNR { if ($1 !~ /^#/ && $1 != "k" && $5 != "nan" && $5 > 0) b[$2] = $5; next }
+                $1 !~ /^#/ && $1 != "k" && ($2 in b) && $c != "nan" && $c > 0 { print log($c / b[$2]) }' \
+                "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/runs/$r/tcaf_fit_exp.tsv"
+        done
+    done | awk -v q="exp_se_${kind}_over_blocks_a3.53" -v kind=$kind '{ n++; s += $1; ss += $1 * $1 }
+        END { m = s / n; e = sqrt((ss / n - m * m) / (n - 1)); printf "%s\t%.6g\t%.3g\n", q, exp(m), exp(m) * e
+              if (kind == "propagated") printf "exp_se_ratio_shells_a3.53\t%d\t0\n", n }' >> "$OUT/summary.tsv"
+done
 # paper: the eta_0 (1 - phi) test of Table 2 and the CPU that reading (b) at every phi would take
 if [ "$TIER" = paper ]; then
     e0=$(get solvent_shear_a3.53 viscosity)
