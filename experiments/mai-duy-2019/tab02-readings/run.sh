@@ -180,6 +180,20 @@ for A in $AS; do
             # the same trajectory's particle current (quick: this pair's; paper: fig02's)
             same=$cr; [ "$TIER" = paper ] && same=fig02_constrained_a${A}_$tag
             put constrained_integral_particles_minus_bodies_a${A}_$tag "$(pm minus "$(fq $same integral eta_k0)" "$(fq $br integral eta_k0)")"
+            if [ "$TIER" = paper ]; then
+                # fig02's three runs by each estimator, and its free minus constrained by them
+                f2=fig02_free_a${A}_$tag c2r=fig02_constrained_a${A}_$tag
+                fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"
+                fit $c2r two-mode "$(get $c2r tcaf_mass_density | cut -f1)" "$L"
+                put fig02_eta_k0_free_exp_a${A}_$tag "$(get $f2 tcaf_eta_k0)"
+                put fig02_eta_k0_free_integral_a${A}_$tag "$(fq $f2 integral eta_k0)"
+                put fig02_eta_k0_constrained_exp_a${A}_$tag "$(get $c2r tcaf_eta_k0)"
+                put fig02_eta_k0_constrained_integral_a${A}_$tag "$(fq $c2r integral eta_k0)"
+                put fig02_eta_k0_constrained_two_mode_a${A}_$tag "$(fq $c2r two-mode eta_k0)"
+                put fig02_eta_k0_bodies_exp_a${A}_$tag "$(get $br tcaf_eta_k0)"
+                put fig02_free_minus_constrained_integral_a${A}_$tag "$(pm minus "$(fq $f2 integral eta_k0)" "$(fq $c2r integral eta_k0)")"
+                put fig02_free_minus_constrained_two_mode_a${A}_$tag "$(pm minus "$(get $f2 tcaf_eta_k0)" "$(fq $c2r two-mode eta_k0)")"
+            fi
         fi
         for rd in a b c d; do
             v=$(val reading_${rd}_eta_eff_a${A}_$tag) || continue
