@@ -220,6 +220,13 @@ if [ "$TIER" = quick ]; then
     put temperature_constrained_$t "$(get constrained_a3.53_$t temperature)"
     put spring_extension_rms_$t "$(get constrained_a3.53_$t colloid_spring_extension_rms)"
 fi
+# the largest |difference| / stderr over every phi and repulsion: the new estimators against today's
+# fit on the free systems, and the total-density slow mode against the integral on the constrained ones
+for q in free_integral_minus_exp free_two_mode_minus_exp constrained_slow_mode_total_density_minus_integral; do
+    awk -F'\t' -v q="$q" 'index($1, q "_a") == 1 && $3 > 0 { x = $2 / $3; x = x < 0 ? -x : x; if (x > m) m = x; n++ }
+        END { printf "largest_sigmas_%s\t%.3g\t0\nlargest_sigmas_%s_cases\t%d\t0\n", q, m, q, n }' "$OUT/summary.tsv" > "$OUT/.rows"
+    cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+done
 # the propagated errors against the blocks': eq. 28's fit of every shell of the free and constrained
 # runs at a = 3.53 by `dpd tcaf-fit --model exp` (the simulator's own fit of the mean curve, errors
 # propagated from the per-lag errors) against the run's tcaf_eta.tsv (the same fit block by block);
