@@ -161,6 +161,20 @@ static void check_ensemble(const char *what, const double *est, double *se, int 
     }
 }
 
+/* realisation r of a curve by the three estimators: est[e][r] and err[e][r], the propagated error
+ * or (bound) the any-correlation bound; eq. 28 (e = 0) only for one mode (with_exp) */
+static void estimate(const double *t, const double *c, const double *se, int n, int with_exp, int bound, int r,
+                     double est[3][R], double err[3][R])
+{
+    const RelaxationModel models[3] = {RELAXATION_EXP, RELAXATION_TWO_MODE, RELAXATION_INTEGRAL};
+    for (int e = with_exp ? 0 : 1; e < 3; e++) {
+        ShellViscosity o;
+        assert_int_equal(shell_viscosity(models[e], t, c, se, n, K2, RHO, 0.3, &o), 0);
+        est[e][r] = o.eta;
+        err[e][r] = bound ? o.eta_se_bound : o.eta_se;
+    }
+}
+
 /* white noise of known size on exact one- and two-mode curves */
 static void white_noise_within_the_bound(void **state)
 {
@@ -176,19 +190,7 @@ static void white_noise_within_the_bound(void **state)
             double t[201], c[201], se[201];
             exact_curve(m, n, t, c, se, SIGMA);
             for (int l = 1; l < n; l++) c[l] += SIGMA * gauss(&rng);
-            ShellViscosity o;
-            if (k == 0) {   /* eq. 28 is not for two modes */
-                assert_int_equal(shell_viscosity(RELAXATION_EXP, t, c, se, n, K2, RHO, 0.3, &o), 0);
-                est[0][r] = o.eta;
-                bound[0][r] = o.eta_se_bound;
-            }
-            /* one fit gives both: the slow mode (two-mode's eta = rho rate / k^2) and the integral */
-            assert_int_equal(shell_viscosity(RELAXATION_INTEGRAL, t, c, se, n, K2, RHO, 0.3, &o), 0);
-            est[2][r] = o.eta;
-            bound[2][r] = o.eta_se_bound;
-            assert_int_equal(shell_viscosity(RELAXATION_TWO_MODE, t, c, se, n, K2, RHO, 0.3, &o), 0);
-            est[1][r] = o.eta;
-            bound[1][r] = o.eta_se_bound;
+            estimate(t, c, se, n, k == 0, 1, r, est, bound);   /* eq. 28 is not for two modes */
         }
         const double slow = RHO * m->rate / K2;
         double t0[201], c0[201], s0[201];
@@ -284,18 +286,7 @@ static void measured_current_errors_propagate(void **state)
         for (int r = 0; r < R; r++) {
             double t[121], c[121], se[121];
             measured_curve(&m, n, samples, &rng, t, c, se);
-            ShellViscosity o;
-            if (k == 0) {
-                assert_int_equal(shell_viscosity(RELAXATION_EXP, t, c, se, n, K2, RHO, 0.3, &o), 0);
-                est[0][r] = o.eta;
-                err[0][r] = o.eta_se;
-            }
-            /* the integral's fit also gives the slow mode: two-mode's eta = rho rate / k^2, se likewise */
-            assert_int_equal(shell_viscosity(RELAXATION_INTEGRAL, t, c, se, n, K2, RHO, 0.3, &o), 0);
-            est[2][r] = o.eta;
-            err[2][r] = o.eta_se;
-            est[1][r] = RHO * o.rate / K2;
-            err[1][r] = RHO * o.rate_se / K2;
+            estimate(t, c, se, n, k == 0, 0, r, est, err);
         }
         const double slow = RHO * m.rate / K2, zero_frequency = RHO / (K2 * modes_integral(&m));
         if (k == 0) check_ensemble("measured current, one mode, exp", est[0], err[0], R, slow, 0);
