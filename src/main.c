@@ -7,6 +7,7 @@
 #include "linefit.h"
 #include "lengthscale.h"
 #include "poiseuille.h"
+#include "transverse_relaxation.h"
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -32,6 +33,11 @@ static void usage(FILE *f)
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
         "  dpd fit-line TABLE --x COL --y COL --se COL [--range LO:HI] [--origin]\n"
         "      weighted straight-line fit (GSL) of a result table, e.g. a velocity profile\n"
+        "  dpd tcaf-fit TCAF_TSV --rho R --box L [--model exp|two-mode|integral] [--fit-min F]\n"
+        "               [--kmax 2] [--order 1] [--table FILE] [--curves FILE]\n"
+        "      eta(k) of every shell of a run's tcaf.tsv and its k -> 0 limit: eq. 28's single\n"
+        "      exponential, a slow mode beside a damped oscillation (eta from the slow mode),\n"
+        "      or rho / (k^2 integral C/C0 dt); errors propagated from the per-lag errors\n"
         "  dpd wavelengths [--box 15] [--n 4] [--p 6] [--kmin 3] [--kmax 13]\n"
         "      phi of k^3 colloids of p particles among n L^3 solvent particles and the\n"
         "      cube (eq. 31) and sphere (eq. 32) length scales (Mai-Duy et al. 2019, Table 1)\n"
@@ -91,6 +97,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "params")) return cmd_params(argc - 2, argv + 2);
     if (!strcmp(argv[1], "fit-line")) return cmd_fit_line(argc - 2, argv + 2);
     if (!strcmp(argv[1], "wavelengths")) return cmd_wavelengths(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "tcaf-fit")) return cmd_tcaf_fit(argc - 2, argv + 2);
     if (!strcmp(argv[1], "fit-poiseuille")) return poiseuille_command(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};

@@ -288,6 +288,12 @@ int tcaf_fit_eta(const double *t, const double *c, int n, double k2, double rho,
 
 int tcaf_extrapolate(const double *k, const double *eta, const double *w, int n, int order, double *coef)
 {
+    return tcaf_extrapolate_cov(k, eta, w, n, order, coef, NULL, NULL);
+}
+
+int tcaf_extrapolate_cov(const double *k, const double *eta, const double *w, int n, int order, double *coef,
+                         double *covariance, double *chi2_out)
+{
     const int p = order + 1;
     for (int j = 0; j < p; j++) coef[j] = NAN;
     if (n < p || order < 0) return -1;
@@ -305,6 +311,10 @@ int tcaf_extrapolate(const double *k, const double *eta, const double *w, int n,
         double chi2;
         if (gsl_multifit_wlinear(X, wv, y, c, cov, &chi2, ws) == GSL_SUCCESS) {
             for (int j = 0; j < p; j++) coef[j] = gsl_vector_get(c, j);
+            if (covariance)
+                for (int a = 0; a < p; a++)
+                    for (int b = 0; b < p; b++) covariance[a * p + b] = gsl_matrix_get(cov, (size_t)a, (size_t)b);
+            if (chi2_out) *chi2_out = chi2;
             rc = 0;
         }
     }

@@ -82,6 +82,11 @@ int  tcaf_fit_eta(const double *t, const double *c, int n, double k2, double rho
  * eta_i) with weights w_i: coefficients c[0..order] (c[0] = eta(k -> 0)). */
 int  tcaf_extrapolate(const double *k, const double *eta, const double *w, int n, int order,
                       double *coef);
+/* The same, also giving the covariance of the coefficients ((order + 1)^2,
+ * row-major, (X^T W X)^-1: the weights taken as 1/se^2) and the weighted chi^2;
+ * either may be NULL. */
+int  tcaf_extrapolate_cov(const double *k, const double *eta, const double *w, int n, int order,
+                          double *coef, double *covariance, double *chi2);
 /* tcaf.tsv (normalised TCAF per shell), tcaf_eta.tsv (eta(k)) and the
  * summary rows tcaf_eta_k0, tcaf_eta_k2_coefficient, tcaf_eta_drop, ... */
 int  tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir);

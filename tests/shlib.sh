@@ -8,3 +8,12 @@ trap 'rm -rf "$tmp"' EXIT
 pass=0 fail=0
 ok()  { pass=$((pass + 1)); echo "PASS $1"; }
 bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
+# refuse NAME EXPECTED-MESSAGE COMMAND ARGS...: the command fails, says EXPECTED-MESSAGE on stderr
+# and writes nothing on stdout
+refuse() {
+    local name=$1 msg=$2; shift 2
+    if "$@" > "$tmp/out" 2> "$tmp/err"; then bad "$name" "exit 0"
+    elif ! grep -q -e "$msg" "$tmp/err"; then bad "$name" "message: $(cat "$tmp/err")"
+    elif [ -s "$tmp/out" ]; then bad "$name" "wrote a table"
+    else ok "$name"; fi
+}
