@@ -94,6 +94,10 @@ static void provenance_text(char **buf, size_t *len, const RunOptions *opt, cons
     fprintf(m, "compiler\t%s\n", __VERSION__);
     fprintf(m, "flags\t%s\n", DPD_CFLAGS);
     fprintf(m, "threads\t%d\n", st->threads);
+    {   /* how idle threads wait (tools/lib/omp.sh): it changes the speed, never the numbers */
+        const char *wp = getenv("OMP_WAIT_POLICY"), *sc = getenv("GOMP_SPINCOUNT");
+        fprintf(m, "omp_wait\tOMP_WAIT_POLICY=%s GOMP_SPINCOUNT=%s\n", wp ? wp : "", sc ? sc : "");
+    }
     fprintf(m, "seed\t%u\n", s->seed);
     if (st->resumed_at >= 0) fprintf(m, "resumed_at_step\t%lld\n", st->resumed_at);
     fprintf(m, "cpu_seconds\t%.3f\n", cpu_now() - st->cpu0);

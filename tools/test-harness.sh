@@ -687,6 +687,20 @@ T "reuse_run: fails clearly without the other result" 1 RX "$rx/tools/run-experi
 has "reuse_run: names what to make" 'make results/t/e/quick/summary.tsv'
 mv "$rx/results/t/e.away" "$rx/results/t/e"
 
+# a paper tier never run whose reduced tier is committed: NOTRUN, not a failure; a paper tier
+# that was started and left incomplete still fails (MISSING)
+mkdir -p "$root/experiments/x/nr"
+{ tab quantity tier lo hi k_sigma paper source; tab q paper 1 2 0 1.5 fixture; tab q reduced 1 2 1 1.5 fixture; } > "$root/experiments/x/nr/bands.tsv"
+mkres x/nr reduced 1 <<< "$(tab q 1.6 0.1)"
+T "check: paper tier not run, reduced committed: exit 0" 0 "$C" --tier paper x/nr
+has "check: NOTRUN shown" "NOTRUN"
+has "check: NOTRUN counted apart" "1 not run"
+T "check: the reduced tier itself" 0 "$C" --tier reduced x/nr
+mkdir -p "$root/results/x/nr/paper"; : > "$root/results/x/nr/paper/INCOMPLETE"
+T "check: a paper tier left incomplete fails" 1 "$C" --tier paper x/nr
+has "check: MISSING, not NOTRUN" "MISSING"
+rm -rf "$root/results/x/nr/paper"
+
 # known non-reproductions: expect = fail (8th column) -> XFAIL, not a failure; XPASS is one
 mkdir -p "$root/experiments/x/xf" "$root/experiments/x/xp"
 { tab quantity tier lo hi k_sigma paper source expect; tab q quick 0 inf 0 '>0' 'paper claim' fail; } > "$root/experiments/x/xf/bands.tsv"

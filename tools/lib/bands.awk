@@ -5,7 +5,7 @@
 #   sfile empty or unreadable -> every row MISSING.
 # Output, one line per band row of the tier, tab-separated:
 #   eid quantity value stderr lo hi k paper verdict dist source note
-# verdict: PASS | FAIL | MISSING | UNRESOLVED (inside a two-sided band only
+# verdict: PASS | FAIL | MISSING | NOTRUN (notrun=1: a tier never run, see common.sh evaluate) | UNRESOLVED (inside a two-sided band only
 #   because k*stderr is wider than the band lo < hi itself: no test (a zero-width
 #   band "equals X within k stderr" is a test and stays PASS/FAIL); not counted as a
 #   failure by tools/check, not as a pass by the verdicts), or XFAIL | XPASS for a row whose optional 8th
@@ -60,7 +60,7 @@ FNR == 1 && trim($1) == "quantity" { next }
     if (paper == "") paper = "-"
     if (t != tier && t != "*" && t != "any") next
 
-    if (!have)        { emit(q, "-", "-", slo, shi, sk, paper, "MISSING", "-", src, (why != "" ? why : "no summary.tsv")); next }
+    if (!have)        { emit(q, "-", "-", slo, shi, sk, paper, (notrun ? "NOTRUN" : "MISSING"), "-", src, (why != "" ? why : "no summary.tsv")); next }
     if (!(q in sval)) { emit(q, "-", "-", slo, shi, sk, paper, "MISSING", "-", src, "quantity absent from summary.tsv"); next }
 
     v = sval[q]; sse_ = sse[q]
