@@ -60,8 +60,15 @@ reproduce:
 # verify-results: every result must still be what its current inputs give (it fails on a stale one)
 paper: $(BIN)
 	@tools/verify-results
+	@$(MAKE) --no-print-directory build/cost.tsv
 	@$(MAKE) --no-print-directory plots TIER=paper
 	@set -o pipefail; $(MAKE) --no-print-directory plots TIER=reduced 2>&1 | { grep -v '^plots: no reduced results' || true; }
 	@tools/render-paper
+
+# paper.md's cost table of the paper tier (tools/cost): remade when a plan, a scene or a committed
+# result's cost changes
+build/cost.tsv: $(BIN) tools/cost tools/plan $(wildcard experiments/*/*/run.sh experiments/*/*/*.cfg) \
+                $(wildcard results/*/*/paper/provenance.tsv results/*/*/reduced/provenance.tsv)
+	@mkdir -p build && tools/cost table paper > $@.part && mv $@.part $@
 
 .PHONY: results plots figures check reproduce paper
