@@ -8,7 +8,8 @@
 # colloid with far too stiff springs (displacement per step). Controls: the same
 # scenes at a small dt complete (so each check has power). Pairs at r -> 0: two
 # particles at the same position, and 1e-12 apart, give finite results (inertial
-# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). DPD selects the binary. Prints "N passed, M failed".
+# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). A nan
+# position or velocity put into a checkpoint stops the resumed run at its first step. DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh blowup
@@ -93,6 +94,37 @@ control spins-ok "$tmp/spins.cfg"
 blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
 control colloid-ok "$tmp/colloid.cfg"
 blowup colloid "$tmp/colloid.cfg" "largest displacement per step" --set colloids2d.H=1e6 --set dt=0.05
+
+# a non-finite position or velocity stops the run on the step it appears (issue 24, bug 3; before,
+# a nan position was dropped from every pair and kept by the wrap, and the run completed).
+# poison NAME SCENE FIELD WHAT ARGS...: a run SIGKILLed after its first checkpoint (at a step S, a
+# multiple of 20), the checkpoint's particle 0 given FIELD (x or v) = nan, then resumed: status 3 at
+# step S + 1 (the first step run; the periodic check would wait for step S + 10), the message naming
+# WHAT (a regex), INCOMPLETE, no summary.tsv
+poison() {
+    local name=$1 scene=$2 field=$3 what=$4; shift 4
+    local out=$tmp/$name st step n off
+    "$DPD" run "$scene" --out "$out" --quiet --threads 1 --checkpoint-every 20 "$@" 2>/dev/null &
+    local pid=$!
+    wait_for "$out/checkpoint.dpd" $pid; kill -KILL $pid 2>/dev/null; wait $pid 2>/dev/null
+    if [ ! -s "$out/checkpoint.dpd" ]; then bad "$name: checkpoint" "none written"; return; fi
+    step=$(od -An -t u8 -j 24 -N 8 "$out/checkpoint.dpd" | tr -d ' ')
+    n=$(od -An -t u4 -j 20 -N 4 "$out/checkpoint.dpd" | tr -d ' ')
+    if [ "$field" = x ]; then off=56; else off=$((64 + 24 * n)); fi
+    reseal "$out/checkpoint.dpd" "" $off 7ff8000000000000
+    "$DPD" run "$scene" --out "$out" --quiet --threads 1 --resume "$@" 2>"$tmp/$name.err"; st=$?
+    local msg; msg=$(cat "$tmp/$name.err")
+    if [ $st -ne 3 ]; then bad "$name: exit status" "expected 3 (unstable), got $st: $msg"; return; fi
+    ok "$name: exit status 3"
+    if grep -Eq "unstable at step $((step + 1)) \(t = [0-9.e+-]+\): $what [^ ]+ is not finite \(limit [^)]+\); reduce dt" <<<"$msg"
+    then ok "$name: stopped at step $((step + 1)), the first after the nan, naming it"
+    else bad "$name: step $((step + 1)) and quantity" "$msg"; fi
+    if [ ! -e "$out/summary.tsv" ] && grep -q "unstable at step" "$out/INCOMPLETE" 2>/dev/null; then ok "$name: INCOMPLETE, no summary.tsv"
+    else bad "$name: result files" "$(ls "$out")"; fi
+}
+poison nan-position "$tmp/fluid.cfg" x "position [xyz] of particle [0-9]+" --set steps=2000 --set output.trajectory_every=0
+poison nan-velocity "$tmp/fluid.cfg" v "kinetic temperature" --set steps=2000 --set output.trajectory_every=0
+poison nan-position-m0 "$tmp/colloid.cfg" x "position [xyz] of particle [0-9]+" --set steps=2000
 
 # pairs at r -> 0: finite forces (the pair has no direction and is skipped)
 for sep in 0 1e-12; do

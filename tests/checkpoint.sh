@@ -43,8 +43,6 @@ same_run() {   # same_run REF DIR: bit-identical results
 }
 incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1/run.h5" ]; }
 
-# wait_for FILE PID: until FILE exists or the process ended (at most 60 s)
-wait_for() { for _ in $(seq 6000); do [ -e "$1" ] && return; kill -0 "$2" 2>/dev/null || return; sleep 0.01; done; }
 # kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-30 ms more
 kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 4))"; kill -"$3" "$2" 2>/dev/null; }
 
@@ -137,22 +135,7 @@ check "checkpoint of another scene: message" grep -q 'written for another scene'
 # spins, rigid bodies, TCAF or trajectory (the 2D colloid scene) still resumes
 # (same layout); one of a rotation scene cannot (version 1 had no spins), nor a
 # version 2 one of an MSD scene (version 3 keeps the MSD per particle group),
-# nor one of a future format
-# reseal FILE VERSION: set the format version and recompute the FNV-1a checksum
-reseal() {
-    perl -e '
-        local $/; open my $f, "<:raw", $ARGV[0] or die; my $b = <$f>; close $f;
-        $b = substr($b, 0, length($b) - 8);
-        substr($b, 8, 4) = pack("V", $ARGV[1]);
-        my ($hi, $lo) = (0x14650fb0, 0x739d0383);            # basis 1469598103934665603 of checkpoint.c
-        for my $c (unpack("C*", $b)) {                       # h = (h ^ c) * (2^40 + 435)
-            $lo ^= $c;
-            my $l = $lo * 435; my $carry = int($l / 4294967296);
-            $hi = ($hi * 435 + $carry + (($lo * 256) % 4294967296)) % 4294967296;
-            $lo = $l % 4294967296;
-        }
-        open $f, ">:raw", $ARGV[0] or die; print $f $b, pack("VV", $lo, $hi); close $f;' "$1" "$2"
-}
+# nor one of a future format (reseal: tests/shlib.sh)
 c=checkpoint-colloids2d
 rm -rf "$tmp/old"
 "$DPD" run tests/$c.cfg --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
