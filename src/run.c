@@ -417,7 +417,7 @@ int run_scene(const RunOptions *opt)
     ForceWork fw;
     Output out;
     int status = 0, wrote_summary = 0;
-    if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, s.n, m.prof_on ? m.prof_bins : 0)
+    if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, &s, m.prof_on ? m.prof_bins : 0)
         || measure_init(&m, &s) || neighbor_build(&nl, &s)) {
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
