@@ -603,16 +603,16 @@ int run_scene(const RunOptions *opt)
         for (int t = 0; t < T_COUNT; t++) fprintf(f, "time_%s_seconds\t%.4f\t0\n", TIMER_NAMES[t], st.timers[t]);
         fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
         if (rc.overdamped) {
-            /* per-step solver record for plots */
+            /* per-step solver record for plots; cpu_seconds last (plots read true_rel_error as column 5) */
             char path[1100];
             snprintf(path, sizeof path, "%s/solver.tsv", opt->outdir);
             FILE *sf = fopen(path, "w");
             if (sf) {
-                fprintf(sf, "step\titerations\trel_residual\tseconds%s\n", ss.true_error.n ? "\ttrue_rel_error" : "");
+                fprintf(sf, "step\titerations\trel_residual\tseconds%s\tcpu_seconds\n", ss.true_error.n ? "\ttrue_rel_error" : "");
                 for (size_t k = 0; k < ss.iterations.n; k++) {
                     fprintf(sf, "%zu\t%g\t%.4g\t%.4g", k, ss.iterations.v[k], ss.residual.v[k], ss.seconds.v[k]);
                     if (ss.true_error.n) fprintf(sf, "\t%.4g", ss.true_error.v[k]);
-                    fputc('\n', sf);
+                    fprintf(sf, "\t%.4g\n", k < ss.cpu_seconds.n ? ss.cpu_seconds.v[k] : NAN);
                 }
                 if (fclose(sf)) status = 4;
             } else status = 4;
