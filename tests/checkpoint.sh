@@ -12,6 +12,7 @@
 #   term  SIGTERM: status 143, a checkpoint, INCOMPLETE; then --resume
 # Threads (ref kill resume): 1 1 2 (results do not depend on the thread count;
 # 2 2 2 for the TCAF scene, which test_threads checks on 1 and 2 threads).
+# The resumed m = 0 run keeps every solver CPU-time sample (solver.tsv cpu_seconds, issue 24).
 # Every resumed run must equal ref bit for bit: /results/final_state
 # (positions, images, velocities by particle id) and /observables of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
@@ -42,6 +43,13 @@ same_run() {   # same_run REF DIR: bit-identical results
     diff <(physics "$r/summary.tsv") <(physics "$d/summary.tsv") >/dev/null || { echo "  summary.tsv differs"; return 1; }
 }
 incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1/run.h5" ]; }
+# cpu_samples DIR: the m = 0 solver's CPU-time samples in solver.tsv (rows whose cpu_seconds is a number)
+cpu_samples() { awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "cpu_seconds") c = i; next }
+                              c && $c != "nan" && $c != "" { n++ } END { print n + 0 }' "$1/solver.tsv" 2>/dev/null; }
+same_cpu_samples() {   # same_cpu_samples REF DIR: as many as the uninterrupted run, one per production step
+    local r d; r=$(cpu_samples "$1") d=$(cpu_samples "$2")
+    [ "$r" -gt 0 ] && [ "$r" = "$d" ] || { echo "  cpu_seconds samples: $d, uninterrupted $r"; return 1; }
+}
 
 # kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-30 ms more
 kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 4))"; kill -"$3" "$2" 2>/dev/null; }
@@ -69,6 +77,7 @@ for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2"
     check "$s: resume after SIGKILL (status $st)" test $st -eq 0
     check "$s: the resume started from a checkpoint" grep -q 'dpd: resuming .* at step [1-9]' "$tmp/err"
     check "$s: killed ($tkill threads) + resumed ($tres threads) = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-kill"
+    [ $s = checkpoint-overdamped ] && check "$s: SIGKILL + resumed keeps every solver CPU-time sample" same_cpu_samples "$tmp/$s-ref" "$tmp/$s-kill"
     check "$s: no checkpoint left after completion" test ! -e "$tmp/$s-kill/checkpoint.dpd"
 
     # SIGTERM: checkpoint written at the end of the current step
@@ -88,6 +97,7 @@ for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2"
     "$DPD" run "$scene" --out "$tmp/$s-term" --threads "$tres" --quiet --resume 2>"$tmp/err"
     check "$s: resume after SIGTERM" test $? -eq 0
     check "$s: SIGTERM + resumed = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-term"
+    [ $s = checkpoint-overdamped ] && check "$s: SIGTERM + resumed keeps every solver CPU-time sample" same_cpu_samples "$tmp/$s-ref" "$tmp/$s-term"
 done
 
 s=checkpoint-shear scene=tests/checkpoint-shear.cfg
