@@ -449,6 +449,7 @@ int run_scene(const RunOptions *opt)
     free(scene_txt);
     CheckpointExtra cx = {.timers = st.timers, .ntimers = T_COUNT, .nsolver = 4,
                           .solver = {&ss.iterations, &ss.residual, &ss.seconds, &ss.true_error},
+                          .solver_cpu = rc.overdamped ? &ss.cpu_seconds : NULL,
                           .unconverged = &ss.unconverged, .bonds = rc.bonds, .colloids = rc.colloids,
                           .threads = st.threads, .trajectory = rc.trajectory_every > 0};
     int resumed = 0;
