@@ -329,7 +329,7 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
     if (g) {
         if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
         m->every = (int)v;
-        if (scene_int(sc, g, "blocks", &v, 20, 2, 1000, 0) < 0) return -1;
+        if (scene_int(sc, g, "blocks", &v, 20, 2, MAX_BLOCKS, 0) < 0) return -1;
         m->nblocks = (int)v;
     }
     m->nsamples_expected = steps / m->every + 1;
