@@ -30,8 +30,8 @@ void block_stats(const double *v, size_t n, int nblocks, double *mean, double *s
     *stderr_ = NAN;
     if (nblocks < 2 || n < (size_t)nblocks) return;
     const size_t len = n / (size_t)nblocks, skip = n - len * (size_t)nblocks;
-    double bm[1024];
-    if (nblocks > 1024) nblocks = 1024;
+    double bm[MAX_BLOCKS];
+    if (nblocks > MAX_BLOCKS) return;   /* more than bm holds */
     for (int b = 0; b < nblocks; b++) bm[b] = gsl_stats_mean(v + skip + (size_t)b * len, 1, len);
     *mean = gsl_stats_mean(bm, 1, (size_t)nblocks);
     *stderr_ = gsl_stats_sd(bm, 1, (size_t)nblocks) / sqrt((double)nblocks);

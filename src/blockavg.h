@@ -6,6 +6,11 @@
 
 #include <stddef.h>
 
+/* The most blocks a run's errors come from: the scene's limit on measure.blocks
+ * (setup.c) and the size of the per-block arrays of the writers (blockavg.c,
+ * measure.c, tcaf.c), which refuse more (their check sits beside each array). */
+#define MAX_BLOCKS 1000
+
 typedef struct {
     double *v;
     size_t n, cap;
@@ -14,8 +19,8 @@ typedef struct {
 int    series_push(Series *s, double x);
 void   series_free(Series *s);
 /* Mean and the standard error from nblocks equal contiguous blocks (the
- * remainder at the start is dropped). With fewer samples than blocks the
- * error is nan. */
+ * remainder at the start is dropped). With fewer samples than blocks, or more
+ * blocks than MAX_BLOCKS, the error is nan. */
 void   series_stats(const Series *s, int nblocks, double *mean, double *stderr_);
 /* Same for a plain array. */
 void   block_stats(const double *v, size_t n, int nblocks, double *mean, double *stderr_);

@@ -53,11 +53,12 @@ static inline double box_stream_vx(const Box *b, double y)
 }
 
 /* Wrap one particle into the box; crossing y applies the Lees-Edwards shift
- * to x and to every velocity given. img counts crossings. */
-void box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+ * to x and to every velocity given. img counts crossings. Returns 1 if the
+ * position is not finite (then left as it is: the run must stop), else 0. */
+int box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 /* The same for a box with (shear) and without (plain) Lees-Edwards shear: the
  * integrator picks one per step, not per particle. */
-void box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
-void box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+int box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+int box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 
 #endif

@@ -5,12 +5,13 @@
  * reference positions of its rebuild test), so the resumed run rebuilds at
  * the same steps and sums the forces in the same order; every measurement
  * accumulator (series, profile and RDF blocks, MSD origins and curves); the
- * m = 0 solver statistics (the solver's warm start is v); the timers;
+ * m = 0 solver statistics with its CPU time per step (the solver's warm start
+ * is v); the timers;
  * in rotation scenes the angular velocities, their prediction and the torques;
  * the rigid bodies of 3D spring colloids (centre, velocity, quaternion,
  * angular momentum, last reactions) with their extension record; the TCAF
  * time origins in flight and its accumulators; how many trajectory segment
- * files (output.h) were complete. Format version 2 (checkpoint.c).
+ * files (output.h) were complete. Format version 4 (checkpoint.c).
  * One binary file DIR/checkpoint.dpd, written to a temporary name, fsynced
  * and renamed; a 64-bit FNV-1a checksum over the content and a hash of the
  * scene as run reject a truncated file or one of another scene. */
@@ -33,6 +34,7 @@ typedef struct {
     long long steps_done;
     Series *solver[4];        /* the m = 0 solver series (nsolver of them) */
     int nsolver;
+    Series *solver_cpu;       /* m = 0 scenes: the solver's CPU time per step (format 4); else NULL */
     long long *unconverged;
     struct Bonds *bonds;      /* 2D spring colloids' records (bonds.h), NULL if none */
     struct Colloids *colloids;   /* 3D spring colloids' rigid bodies (colloid.h), NULL if none */

@@ -8,12 +8,15 @@
 
 #define R_EPSILON 1e-10   /* pairs closer than this have no direction: skipped */
 
-int forces_init(ForceWork *w, int n, int nbins)
+int forces_init(ForceWork *w, const System *s, int nbins)
 {
+    const int n = s->n;
+    const size_t chunk_bytes = (size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1;
     memset(w, 0, sizeof *w);
     w->n = n;
     w->nbins = nbins;
-    w->buf = malloc((size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1);
+    w->buf = malloc(chunk_bytes);
+    if (s->rotation && !(w->tbuf = malloc(chunk_bytes))) { forces_free(w); return -1; }
     w->nblk = (n >> FORCE_BLOCK_SHIFT) + 1;
     w->mask_stride = (w->nblk + 63) / 64 * 64;   /* each chunk's mask on its own cache lines */
     w->touched = calloc((size_t)FORCE_CHUNKS * w->mask_stride, 1);

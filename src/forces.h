@@ -59,7 +59,9 @@ unsigned char *forces_chunk_mask(ForceWork *w, int c);
  * untouched blocks skipped: the same sums); the same for t0/trest if not NULL. */
 void forces_sum_chunks(const ForceWork *w, double *f0, const double *rest, double *t0, const double *trest);
 
-int  forces_init(ForceWork *w, int n, int nbins);
+/* Work buffers for the s->n particles of s, and torque buffers if s->rotation
+ * (allocated here, never in the force call). Returns 0, or -1 if out of memory. */
+int  forces_init(ForceWork *w, const System *s, int nbins);
 void forces_free(ForceWork *w);
 /* f = pair forces (with v_pred as the velocity) + body forces. If pv != NULL
  * the virial is accumulated into it (zeroed first; pv->Wbin must hold

@@ -1,13 +1,16 @@
 /* integrator.c - Groot-Warren velocity Verlet. The particle loops are compiled
  * once per module state (constants `walls` and `le`, Lees-Edwards): a scene
  * without frozen particles or shear runs no test for them (src/modules.h). */
+#include <math.h>
 #include "integrator.h"
 #include "rotation.h"
 
-static inline __attribute__((always_inline)) void predict_loop(System *s, const int walls, const int le)
+/* Returns the number of particles whose position is not finite (box_wrap). */
+static inline __attribute__((always_inline)) int predict_loop(System *s, const int walls, const int le)
 {
     const double dt = s->dt, lam = s->lambda;
-    #pragma omp parallel for schedule(static)
+    int bad = 0;
+    #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
@@ -22,14 +25,15 @@ static inline __attribute__((always_inline)) void predict_loop(System *s, const 
                 v[d] += 0.5 * dt * f[d] * im;
             }
         }
-        if (le) box_wrap_shear(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
-        else box_wrap_plain(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        if (le) bad += box_wrap_shear(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
+        else bad += box_wrap_plain(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
+    return bad;
 }
-static void predict_plain(System *s) { predict_loop(s, 0, 0); }
-static void predict_walls(System *s) { predict_loop(s, 1, 0); }
-static void predict_shear(System *s) { predict_loop(s, 0, 1); }
-static void predict_walls_shear(System *s) { predict_loop(s, 1, 1); }
+static int predict_plain(System *s) { return predict_loop(s, 0, 0); }
+static int predict_walls(System *s) { return predict_loop(s, 1, 0); }
+static int predict_shear(System *s) { return predict_loop(s, 0, 1); }
+static int predict_walls_shear(System *s) { return predict_loop(s, 1, 1); }
 
 double integrate_predict(System *s)
 {
@@ -40,29 +44,35 @@ double integrate_predict(System *s)
     if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
     else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
     const int walls = MOD_ON(s->n_frozen > 0), le = MOD_SHEAR(&s->box);
-    if (walls && le) predict_walls_shear(s);
-    else if (walls) predict_walls(s);
-    else if (le) predict_shear(s);
-    else predict_plain(s);
+    /* a non-finite x means a non-finite v or f: the run stops (run.c) */
+    if (walls && le) s->nonfinite = predict_walls_shear(s);
+    else if (walls) s->nonfinite = predict_walls(s);
+    else if (le) s->nonfinite = predict_shear(s);
+    else s->nonfinite = predict_plain(s);
     if (MOD_ROTATION(s)) rotation_predict(s);
     s->step++;
     s->time += dt;
     return doff;
 }
 
-static inline __attribute__((always_inline)) void correct_loop(System *s, const int walls)
+/* Returns the number of particles whose velocity is not finite. */
+static inline __attribute__((always_inline)) int correct_loop(System *s, const int walls)
 {
     const double dt = s->dt;
-    #pragma omp parallel for schedule(static)
+    int bad = 0;
+    #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         if (walls && t->frozen) continue;
         const double h = 0.5 * dt / t->mass;
-        for (int d = 0; d < 3; d++) s->v[3 * i + d] += h * s->f[3 * i + d];
+        double *v = s->v + 3 * i;
+        for (int d = 0; d < 3; d++) v[d] += h * s->f[3 * i + d];
+        bad += !isfinite(v[0] + v[1] + v[2]);   /* a nan or inf in any; or an overflow, a blow-up too */
     }
+    return bad;
 }
-static void correct_walls(System *s) { correct_loop(s, 1); }
-static void correct_plain(System *s) { correct_loop(s, 0); }
+static int correct_walls(System *s) { return correct_loop(s, 1); }
+static int correct_plain(System *s) { return correct_loop(s, 0); }
 
 /* hold_mean_velocity: each holding type's velocities shifted by one vector so
  * that their mean is the held one (a uniform force on the type, whatever the
@@ -88,8 +98,7 @@ static void hold_mean_velocities(System *s)
 
 void integrate_correct(System *s)
 {
-    if (MOD_ON(s->n_frozen > 0)) correct_walls(s);
-    else correct_plain(s);
+    s->nonfinite += MOD_ON(s->n_frozen > 0) ? correct_walls(s) : correct_plain(s);
     if (MOD_ROTATION(s)) rotation_correct(s);
     if (MOD_ON(s->has_held_velocity)) hold_mean_velocities(s);
 }

@@ -11,9 +11,11 @@
 #include "system.h"
 
 /* Positions, half-kick and prediction; advances the Lees-Edwards offset and
- * wraps. Returns the change of the offset. */
+ * wraps. Returns the change of the offset; s->nonfinite = the number of
+ * particles whose position is not finite. */
 double integrate_predict(System *s);
-/* Second half-kick with the new forces. */
+/* Second half-kick with the new forces; adds to s->nonfinite the number of
+ * mobile particles whose velocity is not finite. */
 void integrate_correct(System *s);
 
 #endif

@@ -299,6 +299,7 @@ static void over_blocks(const double *v, int nb, double *mean, double *se)
 
 static int write_profile(const Measure *m, const System *s, const char *dir)
 {
+    if (m->nblocks > MAX_BLOCKS) return -1;   /* more than col[] below holds */
     char path[1024];
     snprintf(path, sizeof path, "%s/profile.tsv", dir);
     FILE *f = fopen(path, "w");
@@ -337,8 +338,8 @@ static int write_profile(const Measure *m, const System *s, const char *dir)
         }
         double mean[10], se[10];
         for (int c = 0; c < 10; c++) {
-            double col[1024];
-            for (int k = 0; k < nbk && k < 1024; k++) col[k] = tmp[10 * k + c];
+            double col[MAX_BLOCKS];
+            for (int k = 0; k < nbk; k++) col[k] = tmp[10 * k + c];
             over_blocks(col, nbk, &mean[c], &se[c]);
         }
         fprintf(f, "%.6g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.8g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\n",
@@ -415,6 +416,7 @@ static int write_com(const Measure *m, const System *s, FILE *summary, const cha
 
 static int write_rdf(const Measure *m, const System *s, const char *dir)
 {
+    if (m->nblocks > MAX_BLOCKS) return -1;   /* more than g[] below holds */
     char path[1024];
     snprintf(path, sizeof path, "%s/rdf.tsv", dir);
     FILE *f = fopen(path, "w");
@@ -426,9 +428,9 @@ static int write_rdf(const Measure *m, const System *s, const char *dir)
         const double r0 = b * dr, r1 = r0 + dr;
         const double shell = s->box.dim == 3 ? 4.0 / 3.0 * M_PI * (r1 * r1 * r1 - r0 * r0 * r0)
                                              : M_PI * (r1 * r1 - r0 * r0);
-        double g[1024];
+        double g[MAX_BLOCKS];
         int nbk = 0;
-        for (int k = 0; k < B && nbk < 1024; k++) {
+        for (int k = 0; k < B; k++) {
             if (m->rdf_samples[k] == 0) continue;
             g[nbk++] = m->rdf_hist[(size_t)k * m->rdf_bins + b] / (m->rdf_samples[k] * m->rdf_norm_pairs * shell);
         }

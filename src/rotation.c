@@ -1,6 +1,5 @@
 /* rotation.c - pair forces and torques of Pan, Pivkin & Karniadakis (2008) and
  * the angular-velocity integration. */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
@@ -232,10 +231,6 @@ void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, Pa
 {
     const int n = s->n;
     const size_t stride = 3 * (size_t)n;
-    if (!w->tbuf) {   /* first call: torque buffers (a failed allocation is fatal) */
-        w->tbuf = malloc((size_t)(FORCE_CHUNKS - 1) * stride * sizeof(double) + 1);
-        if (!w->tbuf) { fprintf(stderr, "dpd: out of memory for torque buffers\n"); exit(4); }
-    }
     /* contiguous chunks per thread (thread 0: the first half of the particles
      * on 2 threads), as the particle loops of the integrator: each thread
      * reads and writes mostly the particles it will move */

@@ -15,7 +15,8 @@ int  rotation_alloc(System *s);
 
 /* Forces and torques of eqs 13-15 and eq. 1 for every pair, deterministic for
  * any thread count (FORCE_CHUNKS fixed chunks summed in a fixed order), plus the
- * virial by part when pv != NULL (full asymmetric r_a F_b). No body forces. */
+ * virial by part when pv != NULL (full asymmetric r_a F_b). No body forces.
+ * w comes from forces_init of this rotation system (its torque buffers). */
 void rotation_forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv);
 
 /* One pair: force F_ij on i (F_ji = -F_ij) and torque tau on each of i and j

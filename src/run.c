@@ -241,12 +241,14 @@ static void overdamped_move(System *s)
 {
     const double dt = s->dt;
     box_advance(&s->box, dt);
-    #pragma omp parallel for schedule(static)
+    int bad = 0;
+    #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
         double *x = s->x + 3 * i, *v = s->v + 3 * i;
         for (int d = 0; d < 3; d++) x[d] += dt * v[d];   /* eq. 28 */
-        box_wrap(&s->box, x, s->img + 3 * i, &v[0], &s->v_pred[3 * i]);
+        bad += box_wrap(&s->box, x, s->img + 3 * i, &v[0], &s->v_pred[3 * i]);
     }
+    s->nonfinite = bad;   /* the run stops */
     s->step++;
     s->time += dt;
 }
@@ -263,24 +265,48 @@ static void set_walls_moving(System *s, const double (*vwall)[3], int moving)
             for (int d = 0; d < 3; d++) s->v[3 * i + d] = s->v_pred[3 * i + d] = s->types[s->type[i]].wall_velocity[d];
 }
 
-/* Blow-up detection. Returns 1 if the state is sound; else names the quantity
- * that ran away (*what), its value and the limit it broke. Checks: the kinetic
+/* What ran away: quantity, value and the limit it broke. */
+typedef struct {
+    char what[64];
+    double value, limit;
+} Instability;
+
+/* After a step whose particle loops counted a non-finite position or velocity
+ * (s->nonfinite): the first non-finite position (velocities: the checks of
+ * check_stable). Returns 1 if there is one. */
+static int find_nonfinite_position(const System *s, Instability *u)
+{
+    for (int i = 0; i < s->n; i++)
+        for (int d = 0; d < 3; d++) {
+            const double x = s->x[3 * i + d];
+            if (isfinite(x)) continue;
+            snprintf(u->what, sizeof u->what, "position %c of particle %u", "xyz"[d], s->id[i]);
+            u->value = x;
+            u->limit = s->box.L[d];   /* positions are wrapped into [0, L) */
+            return 1;
+        }
+    return 0;
+}
+
+/* Blow-up detection. Returns 1 if the state is sound; else *u names the
+ * quantity that ran away, its value and the limit it broke. Checks: the kinetic
  * (and rotational) temperature against max_temperature_ratio x kBT (inertial
  * runs), and in every run the largest displacement per step of a mobile
  * particle against half the smallest box side (beyond it the minimum image
- * and the pair forces lose their meaning; m = 0 runs have no temperature). */
-static int check_stable(const System *s, const RunConfig *rc, const char **what, double *value, double *limit)
+ * and the pair forces lose their meaning; m = 0 runs have no temperature), and
+ * after a step that made a position or velocity non-finite, that value. */
+static int check_stable(const System *s, const RunConfig *rc, Instability *u)
 {
     const double kT = s->kBT > 0 ? s->kBT : 1.0;
     if (!rc->overdamped) {
-        *what = "kinetic temperature";
-        *value = system_kinetic_temperature(s);
-        *limit = rc->max_temperature_ratio * kT;
-        if (!isfinite(*value) || *value > *limit) return 0;
+        snprintf(u->what, sizeof u->what, "kinetic temperature");
+        u->value = system_kinetic_temperature(s);
+        u->limit = rc->max_temperature_ratio * kT;
+        if (!isfinite(u->value) || u->value > u->limit) return 0;
         if (MOD_ROTATION(s)) {   /* spins can blow up first (too small an inertia for the step) */
-            *what = "rotational temperature";
-            *value = rotation_temperature(s);
-            if (!isfinite(*value) || *value > *limit) return 0;
+            snprintf(u->what, sizeof u->what, "rotational temperature");
+            u->value = rotation_temperature(s);
+            if (!isfinite(u->value) || u->value > u->limit) return 0;
         }
     }
     double v2max = 0.0, lmin = INFINITY;
@@ -291,10 +317,29 @@ static int check_stable(const System *s, const RunConfig *rc, const char **what,
         if (!(v2 <= v2max)) v2max = v2;   /* NaN propagates */
     }
     for (int d = 0; d < s->box.dim; d++) lmin = fmin(lmin, s->box.L[d]);
-    *what = "largest displacement per step";
-    *value = sqrt(v2max) * s->dt;
-    *limit = 0.5 * lmin;
-    return isfinite(*value) && *value <= *limit;
+    snprintf(u->what, sizeof u->what, "largest displacement per step");
+    u->value = sqrt(v2max) * s->dt;
+    u->limit = 0.5 * lmin;
+    if (!isfinite(u->value) || u->value > u->limit) return 0;
+    return !(s->nonfinite && find_nonfinite_position(s, u));
+}
+
+/* The stability check; if it fails, the message (step, quantity, value, a
+ * smaller dt) and the reason in INCOMPLETE. Returns 0, or 3 (unstable). */
+static int stop_if_unstable(const System *s, const RunConfig *rc, const RunOptions *opt, int show)
+{
+    Instability u;
+    if (check_stable(s, rc, &u)) return 0;
+    if (show) fputc('\n', stderr);
+    char why[512];
+    snprintf(why, sizeof why, "unstable at step %llu (t = %g): %s %g is %s (limit %g); reduce dt "
+             "(now %g), e.g. to %g\n", (unsigned long long)s->step, s->time, u.what, u.value,
+             isfinite(u.value) ? "too high" : "not finite", u.limit, s->dt, 0.5 * s->dt);
+    fprintf(stderr, "dpd: %s", why);
+    fprintf(stderr, "dpd: the output written so far is kept; '%s' is marked incomplete (INCOMPLETE)\n",
+            opt->outdir);
+    write_file_atomic(opt->outdir, "INCOMPLETE", why, strlen(why));   /* the reason, for the record */
+    return 3;
 }
 
 /* SIGINT and SIGTERM: finish the step, write a checkpoint, stop incomplete. */
@@ -372,7 +417,7 @@ int run_scene(const RunOptions *opt)
     ForceWork fw;
     Output out;
     int status = 0, wrote_summary = 0;
-    if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, s.n, m.prof_on ? m.prof_bins : 0)
+    if (neighbor_init(&nl, &s, rc.skin) || forces_init(&fw, &s, m.prof_on ? m.prof_bins : 0)
         || measure_init(&m, &s) || neighbor_build(&nl, &s)) {
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
@@ -404,6 +449,7 @@ int run_scene(const RunOptions *opt)
     free(scene_txt);
     CheckpointExtra cx = {.timers = st.timers, .ntimers = T_COUNT, .nsolver = 4,
                           .solver = {&ss.iterations, &ss.residual, &ss.seconds, &ss.true_error},
+                          .solver_cpu = rc.overdamped ? &ss.cpu_seconds : NULL,
                           .unconverged = &ss.unconverged, .bonds = rc.bonds, .colloids = rc.colloids,
                           .threads = st.threads, .trajectory = rc.trajectory_every > 0};
     int resumed = 0;
@@ -465,6 +511,7 @@ int run_scene(const RunOptions *opt)
             if (prod >= 0 && rc.bonds) bonds_sample(rc.bonds, &s, prod);
             overdamped_move(&s);
             confine(&s, &rc);
+            if (s.nonfinite && (status = stop_if_unstable(&s, &rc, opt, show))) break;   /* before it spreads */
             t1 = wall_now();
             if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
             t2 = wall_now();
@@ -477,6 +524,7 @@ int run_scene(const RunOptions *opt)
             double doff = integrate_predict(&s);
             neighbor_note_shear(&nl, doff);
             confine(&s, &rc);
+            if (s.nonfinite && (status = stop_if_unstable(&s, &rc, opt, show))) break;   /* before it spreads */
             t1 = wall_now();
             if (neighbor_update(&nl, &s) < 0) { fprintf(stderr, "dpd: out of memory\n"); status = 4; break; }
             t2 = wall_now();
@@ -491,24 +539,11 @@ int run_scene(const RunOptions *opt)
         }
         if (prod >= 0) measure_sample(&m, &s, &nl, want ? &pv : NULL, prod);
         /* every 10 steps; every step for spins (they can run away within a few steps) and at m = 0 (the
-         * check costs nothing beside the solve, and a runaway would otherwise first show as a failed solve) */
-        if (s.step % 10 == 0 || want || MOD_ROTATION(&s) || MOD_ON(rc.overdamped)) {
-            const char *what;
-            double val, lim;
-            if (!check_stable(&s, &rc, &what, &val, &lim)) {
-                if (show) fputc('\n', stderr);
-                char why[512];
-                snprintf(why, sizeof why, "unstable at step %llu (t = %g): %s %g is %s (limit %g); reduce dt "
-                         "(now %g), e.g. to %g\n", (unsigned long long)s.step, s.time, what, val,
-                         isfinite(val) ? "too high" : "not finite", lim, s.dt, 0.5 * s.dt);
-                fprintf(stderr, "dpd: %s", why);
-                fprintf(stderr, "dpd: the output written so far is kept; '%s' is marked incomplete (INCOMPLETE)\n",
-                        opt->outdir);
-                write_file_atomic(opt->outdir, "INCOMPLETE", why, strlen(why));   /* the reason, for the record */
-                status = 3;
-                break;
-            }
-        }
+         * check costs nothing beside the solve, and a runaway would otherwise first show as a failed solve);
+         * at once after a step that made a velocity non-finite (integrate_correct counts them) */
+        if ((s.step % 10 == 0 || want || MOD_ROTATION(&s) || MOD_ON(rc.overdamped) || s.nonfinite)
+            && (status = stop_if_unstable(&s, &rc, opt, show)))
+            break;
         double t5 = wall_now();
         if (rc.trajectory_every > 0 && s.step % rc.trajectory_every == 0 && output_frame(&out, &s)) {
             fprintf(stderr, "dpd: writing the trajectory failed at step %llu\n", (unsigned long long)s.step);
@@ -569,16 +604,16 @@ int run_scene(const RunOptions *opt)
         for (int t = 0; t < T_COUNT; t++) fprintf(f, "time_%s_seconds\t%.4f\t0\n", TIMER_NAMES[t], st.timers[t]);
         fprintf(f, "neighbor_builds\t%ld\t0\n", st.builds);
         if (rc.overdamped) {
-            /* per-step solver record for plots */
+            /* per-step solver record for plots; cpu_seconds last (plots read true_rel_error as column 5) */
             char path[1100];
             snprintf(path, sizeof path, "%s/solver.tsv", opt->outdir);
             FILE *sf = fopen(path, "w");
             if (sf) {
-                fprintf(sf, "step\titerations\trel_residual\tseconds%s\n", ss.true_error.n ? "\ttrue_rel_error" : "");
+                fprintf(sf, "step\titerations\trel_residual\tseconds%s\tcpu_seconds\n", ss.true_error.n ? "\ttrue_rel_error" : "");
                 for (size_t k = 0; k < ss.iterations.n; k++) {
                     fprintf(sf, "%zu\t%g\t%.4g\t%.4g", k, ss.iterations.v[k], ss.residual.v[k], ss.seconds.v[k]);
                     if (ss.true_error.n) fprintf(sf, "\t%.4g", ss.true_error.v[k]);
-                    fputc('\n', sf);
+                    fprintf(sf, "\t%.4g\n", k < ss.cpu_seconds.n ? ss.cpu_seconds.v[k] : NAN);
                 }
                 if (fclose(sf)) status = 4;
             } else status = 4;

@@ -329,7 +329,7 @@ static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
     if (g) {
         if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
         m->every = (int)v;
-        if (scene_int(sc, g, "blocks", &v, 20, 2, 1000, 0) < 0) return -1;
+        if (scene_int(sc, g, "blocks", &v, 20, 2, MAX_BLOCKS, 0) < 0) return -1;
         m->nblocks = (int)v;
     }
     m->nsamples_expected = steps / m->every + 1;
@@ -424,6 +424,10 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
     if (scene_bool(sc, NULL, "walls_start_at_production", &rc->walls_start_at_production, 0) < 0) return -1;
     if (scene_bool(sc, NULL, "rotation", &s->rotation, 0) < 0) return -1;
+    /* the spins and the shear noise are 3-vectors: in 2D they push particles out of the plane */
+    if (s->rotation && dim == 2)
+        return scene_fail(sc, config_lookup(&sc->cfg, "rotation"), "rotation = true needs dimension = 3 "
+                          "(allowed in 2D: false); 2D rotation would keep omega_z only, which is not implemented");
     TypeInit ti[DPD_MAX_TYPES];
     memset(ti, 0, sizeof ti);
     const int r = read_types(sc, s, ti) ? -1 : setup_particles(sc, s, m, rc, ti);

@@ -58,6 +58,8 @@ typedef struct {
     int has_body_force;
     int has_held_velocity;    /* some type holds its mean velocity (integrator.c) */
     int n_frozen;
+    int nonfinite;            /* particles whose position or velocity the last step made non-finite
+                               * (counted by the integrator's particle loops; the run then stops) */
     /* rotational degrees of freedom (Pan et al. 2008), only when the scene asks:
      * NULL otherwise. Angular velocity, its Groot-Warren prediction, torque: 3 n each */
     int rotation;

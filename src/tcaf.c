@@ -10,6 +10,7 @@
 #include <omp.h>
 #endif
 #include "tcaf.h"
+#include "blockavg.h"
 
 static int selected(const Tcaf *t, const System *s, int i)
 {
@@ -323,13 +324,48 @@ int tcaf_extrapolate_cov(const double *k, const double *eta, const double *w, in
     return rc;
 }
 
+/* Mean and standard error of the finite values among n <= MAX_BLOCKS. */
 static double mean_se(const double *v, int n, double *se)
 {
     int m = 0;
-    double buf[1024];
-    for (int i = 0; i < n && m < 1024; i++) if (isfinite(v[i])) buf[m++] = v[i];
+    double buf[MAX_BLOCKS];
+    if (n > MAX_BLOCKS) { *se = NAN; return NAN; }   /* more than buf holds */
+    for (int i = 0; i < n; i++) if (isfinite(v[i])) buf[m++] = v[i];
     *se = m > 1 ? gsl_stats_sd(buf, 1, (size_t)m) / sqrt((double)m) : NAN;
     return m > 0 ? gsl_stats_mean(buf, 1, (size_t)m) : NAN;
+}
+
+/* eta(k -> 0): the polynomial in k^2 weighted by 1/se^2 over the shells with
+ * |k| <= extrap_kmax and a finite error (coef), its error from the same fit of
+ * each of the B blocks (coef_se), and the largest |k| used. Returns the number
+ * of shells used, or -1 (out of memory, or B or the order beyond the arrays). */
+static int extrapolate_k0(const Tcaf *t, const double *eta, const double *eta_se, const double *etab, int B,
+                          double *coef, double *coef_se, double *kend)
+{
+    const int ns = t->nshell;
+    double cb_all[MAX_BLOCKS], coefb[TCAF_MAX_ORDER + 1];
+    if (B > MAX_BLOCKS || t->extrap_order > TCAF_MAX_ORDER) return -1;
+    double *kx = calloc((size_t)ns + 1, sizeof(double)), *ex = calloc((size_t)ns + 1, sizeof(double));
+    double *wx = calloc((size_t)ns + 1, sizeof(double)), *eb = calloc((size_t)ns + 1, sizeof(double));
+    int *idx = calloc((size_t)ns + 1, sizeof(int)), nx = 0;
+    if (!kx || !ex || !wx || !eb || !idx) { free(kx); free(ex); free(wx); free(eb); free(idx); return -1; }
+    for (int q = 0; q < ns; q++)
+        if (t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
+            kx[nx] = t->shell_k[q]; ex[nx] = eta[q]; wx[nx] = 1.0 / (eta_se[q] * eta_se[q]); idx[nx] = q; nx++;
+        }
+    tcaf_extrapolate(kx, ex, wx, nx, t->extrap_order, coef);
+    for (int p = 0; p <= t->extrap_order; p++) {
+        for (int j = 0; j < B; j++) {
+            for (int i = 0; i < nx; i++) eb[i] = etab[(size_t)j * ns + idx[i]];
+            tcaf_extrapolate(kx, eb, wx, nx, t->extrap_order, coefb);
+            cb_all[j] = coefb[p];
+        }
+        mean_se(cb_all, B, &coef_se[p]);
+    }
+    *kend = 0.0;
+    for (int i = 0; i < nx; i++) *kend = fmax(*kend, kx[i]);
+    free(kx); free(ex); free(wx); free(eb); free(idx);
+    return nx;
 }
 
 int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
@@ -337,8 +373,9 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     const int ns = t->nshell, L = t->nlags, dim = s->box.dim, npol = dim - 1;
     const double dts = t->every * s->dt;
     /* blocks that completed at least one origin */
-    int B = 0, blk[1024];
-    for (int b = 0; b < t->nblocks && B < 1024; b++) if (t->acc_n[b] > 0) blk[B++] = b;
+    int B = 0, blk[MAX_BLOCKS];
+    if (t->nblocks > MAX_BLOCKS) return -1;   /* more than blk and the per-block statistics hold */
+    for (int b = 0; b < t->nblocks; b++) if (t->acc_n[b] > 0) blk[B++] = b;
     /* mean 1/m of the selection: equipartition C(k,0) = k^2 kBT <1/m> */
     double invm = 0.0;
     for (int i = 0; i < s->n; i++) if (selected(t, s, i)) invm += 1.0 / s->types[s->type[i]].mass;
@@ -349,7 +386,7 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     double *etab = malloc((size_t)(B > 0 ? B : 1) * ns * sizeof(double));
     double *c0r = malloc((size_t)ns * sizeof(double)), *c0r_se = malloc((size_t)ns * sizeof(double));
     int *nfit = calloc((size_t)ns, sizeof(int));
-    double *tt = malloc((size_t)L * sizeof(double)), *cc = malloc((size_t)L * sizeof(double)), *tmp = malloc(1024 * sizeof(double));
+    double *tt = malloc((size_t)L * sizeof(double)), *cc = malloc((size_t)L * sizeof(double)), *tmp = malloc(MAX_BLOCKS * sizeof(double));
     if (!Cb || !C || !eta || !eta_se || !etab || !c0r || !c0r_se || !nfit || !tt || !cc || !tmp) {
         free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
         return -1;
@@ -397,22 +434,11 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     }
     /* k -> 0: weighted polynomial in k^2 over the shells with |k| <= extrap_kmax */
     const int P = t->extrap_order + 1;
-    double kx[1024] = {0}, ex[1024] = {0}, wx[1024] = {0}, coef[8], coefb[8], cb_all[1024];
-    int nx = 0, idx[1024];
-    for (int q = 0; q < ns && nx < 1024; q++)
-        if (t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
-            kx[nx] = t->shell_k[q]; ex[nx] = eta[q]; wx[nx] = 1.0 / (eta_se[q] * eta_se[q]); idx[nx] = q; nx++;
-        }
-    tcaf_extrapolate(kx, ex, wx, nx, t->extrap_order, coef);
-    double coef_se[8];
-    for (int p = 0; p < P; p++) {
-        for (int j = 0; j < B; j++) {
-            double eb[1024];
-            for (int i = 0; i < nx; i++) eb[i] = etab[(size_t)j * ns + idx[i]];
-            tcaf_extrapolate(kx, eb, wx, nx, t->extrap_order, coefb);
-            cb_all[j] = coefb[p];
-        }
-        mean_se(cb_all, B, &coef_se[p]);
+    double coef[TCAF_MAX_ORDER + 1], coef_se[TCAF_MAX_ORDER + 1], kend = 0.0;
+    const int nx = extrapolate_k0(t, eta, eta_se, etab, B, coef, coef_se, &kend);
+    if (nx < 0) {
+        free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
+        return -1;
     }
     /* eta(first shell) - eta(last fitted shell), block by block */
     int qlast = -1;
@@ -492,8 +518,6 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     snprintf(path, sizeof path, "%s/tcaf_extrapolation.tsv", dir);
     f = fopen(path, "w");
     if (f) {
-        double kend = 0.0;
-        for (int i = 0; i < nx; i++) kend = fmax(kend, kx[i]);
         fprintf(f, "k\teta_fit\n");
         for (int i = 0; i <= 40; i++) {
             const double k = kend * i / 40.0;
@@ -532,7 +556,7 @@ int tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *
     if (scene_bool(sc, g, "include_bodies", &t->include_bodies, 0) < 0) return -1;
     if (scene_double(sc, g, "fit_min", &t->fit_min, 0.3, 1e-6, 0.99, 0) < 0) return -1;
     if (scene_double(sc, g, "extrapolate_kmax", &t->extrap_kmax, 1e9, 0.0, 1e9, 0) < 0) return -1;
-    if (scene_int(sc, g, "extrapolate_order", &v, 1, 0, 3, 0) < 0) return -1;
+    if (scene_int(sc, g, "extrapolate_order", &v, 1, 0, TCAF_MAX_ORDER, 0) < 0) return -1;
     t->extrap_order = (int)v;
     const char *tn;
     if (scene_string(sc, g, "type", &tn, NULL, NULL, 0) < 0) return -1;

@@ -18,6 +18,7 @@
 #define DPD_TCAF_H
 
 #define TCAF_NMAX 31              /* largest |i|, |j|, |l| of a wave vector */
+#define TCAF_MAX_ORDER 3          /* largest extrapolate_order (validator and coefficient arrays) */
 
 #include <stdio.h>
 #include <complex.h>

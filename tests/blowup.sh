@@ -8,7 +8,8 @@
 # colloid with far too stiff springs (displacement per step). Controls: the same
 # scenes at a small dt complete (so each check has power). Pairs at r -> 0: two
 # particles at the same position, and 1e-12 apart, give finite results (inertial
-# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). DPD selects the binary. Prints "N passed, M failed".
+# and m = 0). A run far past its limit stops at once (no hang on huge coordinates). A nan
+# position or velocity put into a checkpoint stops the resumed run at its first step. DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh blowup
@@ -49,23 +50,31 @@ colloids2d = { type = "colloid"; count = 1; side = 0.25; H = 1000.0; every = 5; 
 overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };
 CFG
 
-# blowup NAME SCENE QUANTITY ARGS...: the run must stop as unstable, naming things
+# stopped NAME OUT STATUS STEP WHAT HOW: status 3; stderr ($tmp/NAME.err) names step STEP, the
+# quantity WHAT and its value, which is HOW, and a suggested dt (each a regex); no summary.tsv or
+# provenance.tsv; INCOMPLETE records the reason. Returns 1 if the status is not 3.
+stopped() {
+    local name=$1 out=$2 st=$3 step=$4 what=$5 how=$6
+    local msg; msg=$(cat "$tmp/$name.err")
+    if [ $st -ne 3 ]; then bad "$name: exit status" "expected 3 (unstable), got $st: $msg"; return 1; fi
+    ok "$name: exit status 3"
+    if grep -Eq "unstable at step $step \(t = [0-9.e+-]+\): $what [^ ]+ is $how \(limit [^)]+\); reduce dt \(now [0-9.e-]+\), e\.g\. to [0-9.e-]+" <<<"$msg"
+    then ok "$name: message names the step, the $what and a suggested dt"
+    else bad "$name: message" "$msg"; fi
+    if [ ! -e "$out/summary.tsv" ] && [ ! -e "$out/provenance.tsv" ]; then ok "$name: no summary.tsv or provenance.tsv"
+    else bad "$name: result files" "$(ls "$out")"; fi
+    local why; why=$(sed -n 's/^dpd: \(unstable at step .*\)/\1/p' <<<"$msg" | head -1)
+    if [ -n "$why" ] && grep -qF "$why" "$out/INCOMPLETE" 2>/dev/null; then ok "$name: INCOMPLETE records the reason"
+    else bad "$name: INCOMPLETE" "$(cat "$out/INCOMPLETE" 2>&1)"; fi
+}
+# blowup NAME SCENE QUANTITY ARGS...: the run must stop as unstable, naming things, before its end
 blowup() {
     local name=$1 scene=$2 what=$3; shift 3
     local out=$tmp/$name st
     "$DPD" run "$scene" --out "$out" --quiet "$@" 2>"$tmp/$name.err"; st=$?
-    local msg; msg=$(cat "$tmp/$name.err")
-    if [ $st -ne 3 ]; then bad "$name: exit status" "expected 3 (unstable), got $st: $msg"; return; fi
-    ok "$name: exit status 3"
-    if grep -Eq "unstable at step [0-9]+ \(t = [0-9.e+-]+\): $what [^ ]+ is (too high|not finite) \(limit [^)]+\); reduce dt \(now [0-9.e-]+\), e\.g\. to [0-9.e-]+" <<<"$msg"
-    then ok "$name: message names the step, the $what and a suggested dt"
-    else bad "$name: message" "$msg"; fi
-    local step; step=$(sed -n 's/.*unstable at step \([0-9]*\).*/\1/p' <<<"$msg" | head -1)
+    stopped "$name" "$out" $st "[0-9]+" "$what" "(too high|not finite)" || return
+    local step; step=$(sed -n 's/.*unstable at step \([0-9]*\).*/\1/p' "$tmp/$name.err" | head -1)
     if [ -n "$step" ] && [ "$step" -lt 200 ]; then ok "$name: stopped at step $step, before the end"; else bad "$name: step" "'$step'"; fi
-    if [ ! -e "$out/summary.tsv" ] && [ ! -e "$out/provenance.tsv" ]; then ok "$name: no summary.tsv or provenance.tsv"
-    else bad "$name: result files" "$(ls "$out")"; fi
-    if grep -q "unstable at step $step" "$out/INCOMPLETE" 2>/dev/null; then ok "$name: INCOMPLETE records the reason"
-    else bad "$name: INCOMPLETE" "$(cat "$out/INCOMPLETE" 2>&1)"; fi
 }
 # control NAME SCENE ARGS...: the same scene at a sound step completes
 control() {
@@ -93,6 +102,29 @@ control spins-ok "$tmp/spins.cfg"
 blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
 control colloid-ok "$tmp/colloid.cfg"
 blowup colloid "$tmp/colloid.cfg" "largest displacement per step" --set colloids2d.H=1e6 --set dt=0.05
+
+# a non-finite position or velocity stops the run on the step it appears (issue 24, bug 3; before,
+# a nan position was dropped from every pair and kept by the wrap, and the run completed).
+# poison NAME SCENE FIELD WHAT ARGS...: a run SIGKILLed after its first checkpoint (at a step S, a
+# multiple of 20), the checkpoint's particle 0 given FIELD (x or v) = nan, then resumed: stopped at
+# step S + 1 (the first step run; the periodic check would wait for step S + 10), naming WHAT
+poison() {
+    local name=$1 scene=$2 field=$3 what=$4; shift 4
+    local out=$tmp/$name st step n off
+    "$DPD" run "$scene" --out "$out" --quiet --threads 1 --checkpoint-every 20 "$@" 2>/dev/null &
+    local pid=$!
+    wait_for "$out/checkpoint.dpd" $pid; kill -KILL $pid 2>/dev/null; wait $pid 2>/dev/null
+    if [ ! -s "$out/checkpoint.dpd" ]; then bad "$name: checkpoint" "none written"; return; fi
+    step=$(od -An -t u8 -j 24 -N 8 "$out/checkpoint.dpd" | tr -d ' ')
+    n=$(od -An -t u4 -j 20 -N 4 "$out/checkpoint.dpd" | tr -d ' ')
+    if [ "$field" = x ]; then off=56; else off=$((64 + 24 * n)); fi
+    reseal "$out/checkpoint.dpd" "" $off 7ff8000000000000
+    "$DPD" run "$scene" --out "$out" --quiet --threads 1 --resume "$@" 2>"$tmp/$name.err"; st=$?
+    stopped "$name" "$out" $st $((step + 1)) "$what" "not finite"
+}
+poison nan-position "$tmp/fluid.cfg" x "position [xyz] of particle [0-9]+" --set steps=2000 --set output.trajectory_every=0
+poison nan-velocity "$tmp/fluid.cfg" v "kinetic temperature" --set steps=2000 --set output.trajectory_every=0
+poison nan-position-m0 "$tmp/colloid.cfg" x "position [xyz] of particle [0-9]+" --set steps=2000
 
 # pairs at r -> 0: finite forces (the pair has no direction and is skipped)
 for sep in 0 1e-12; do

@@ -12,6 +12,7 @@
 #   term  SIGTERM: status 143, a checkpoint, INCOMPLETE; then --resume
 # Threads (ref kill resume): 1 1 2 (results do not depend on the thread count;
 # 2 2 2 for the TCAF scene, which test_threads checks on 1 and 2 threads).
+# The resumed m = 0 run keeps every solver CPU-time sample (solver.tsv cpu_seconds, issue 24).
 # Every resumed run must equal ref bit for bit: /results/final_state
 # (positions, images, velocities by particle id) and /observables of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
@@ -42,9 +43,14 @@ same_run() {   # same_run REF DIR: bit-identical results
     diff <(physics "$r/summary.tsv") <(physics "$d/summary.tsv") >/dev/null || { echo "  summary.tsv differs"; return 1; }
 }
 incomplete() { [ -e "$1/INCOMPLETE" ] && [ ! -e "$1/summary.tsv" ] && [ ! -e "$1/run.h5" ]; }
+# cpu_samples DIR: the m = 0 solver's CPU-time samples in solver.tsv (rows whose cpu_seconds is a number)
+cpu_samples() { awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "cpu_seconds") c = i; next }
+                              c && $c != "nan" && $c != "" { n++ } END { print n + 0 }' "$1/solver.tsv" 2>/dev/null; }
+same_cpu_samples() {   # same_cpu_samples REF DIR: as many as the uninterrupted run, one per production step
+    local r d; r=$(cpu_samples "$1") d=$(cpu_samples "$2")
+    [ "$r" -gt 0 ] && [ "$r" = "$d" ] || { echo "  cpu_seconds samples: $d, uninterrupted $r"; return 1; }
+}
 
-# wait_for FILE PID: until FILE exists or the process ended (at most 60 s)
-wait_for() { for _ in $(seq 6000); do [ -e "$1" ] && return; kill -0 "$2" 2>/dev/null || return; sleep 0.01; done; }
 # kill_later DIR PID SIG: SIG once DIR has a checkpoint, after 0-30 ms more
 kill_later() { wait_for "$1/checkpoint.dpd" "$2"; sleep "0.0$((RANDOM % 4))"; kill -"$3" "$2" 2>/dev/null; }
 
@@ -71,6 +77,7 @@ for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2"
     check "$s: resume after SIGKILL (status $st)" test $st -eq 0
     check "$s: the resume started from a checkpoint" grep -q 'dpd: resuming .* at step [1-9]' "$tmp/err"
     check "$s: killed ($tkill threads) + resumed ($tres threads) = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-kill"
+    [ $s = checkpoint-overdamped ] && check "$s: SIGKILL + resumed keeps every solver CPU-time sample" same_cpu_samples "$tmp/$s-ref" "$tmp/$s-kill"
     check "$s: no checkpoint left after completion" test ! -e "$tmp/$s-kill/checkpoint.dpd"
 
     # SIGTERM: checkpoint written at the end of the current step
@@ -90,6 +97,7 @@ for spec in "shear 1 1 2" "overdamped 1 1 2" "colloids2d 1 1 2" "rotation 1 1 2"
     "$DPD" run "$scene" --out "$tmp/$s-term" --threads "$tres" --quiet --resume 2>"$tmp/err"
     check "$s: resume after SIGTERM" test $? -eq 0
     check "$s: SIGTERM + resumed = uninterrupted, bit for bit" same_run "$tmp/$s-ref" "$tmp/$s-term"
+    [ $s = checkpoint-overdamped ] && check "$s: SIGTERM + resumed keeps every solver CPU-time sample" same_cpu_samples "$tmp/$s-ref" "$tmp/$s-term"
 done
 
 s=checkpoint-shear scene=tests/checkpoint-shear.cfg
@@ -133,55 +141,50 @@ check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/
 check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/foreign/summary.tsv"
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
 
-# checkpoint format versions: a version 1 or 2 file of a scene without MSD,
-# spins, rigid bodies, TCAF or trajectory (the 2D colloid scene) still resumes
-# (same layout); one of a rotation scene cannot (version 1 had no spins), nor a
-# version 2 one of an MSD scene (version 3 keeps the MSD per particle group),
-# nor one of a future format
-# reseal FILE VERSION: set the format version and recompute the FNV-1a checksum
-reseal() {
-    perl -e '
-        local $/; open my $f, "<:raw", $ARGV[0] or die; my $b = <$f>; close $f;
-        $b = substr($b, 0, length($b) - 8);
-        substr($b, 8, 4) = pack("V", $ARGV[1]);
-        my ($hi, $lo) = (0x14650fb0, 0x739d0383);            # basis 1469598103934665603 of checkpoint.c
-        for my $c (unpack("C*", $b)) {                       # h = (h ^ c) * (2^40 + 435)
-            $lo ^= $c;
-            my $l = $lo * 435; my $carry = int($l / 4294967296);
-            $hi = ($hi * 435 + $carry + (($lo * 256) % 4294967296)) % 4294967296;
-            $lo = $l % 4294967296;
-        }
-        open $f, ">:raw", $ARGV[0] or die; print $f $b, pack("VV", $lo, $hi); close $f;' "$1" "$2"
-}
-c=checkpoint-colloids2d
+# checkpoint format versions: a version 1, 2 or 3 file of a scene without MSD,
+# spins, rigid bodies, TCAF, trajectory or m = 0 solver (the shear scene without
+# its MSD) still resumes (same layout); one of a rotation scene cannot (version 1
+# had no spins), nor a version 2 one of an MSD scene (version 3 keeps the MSD per
+# particle group), nor a version 3 one of an m = 0 scene (version 4 keeps the
+# solver's CPU time per step), nor one of a future format (reseal: tests/shlib.sh)
+sed '/msd = {/d; s/rdf = { rmax = 1.0; bins = 20; every = 10; };/&  };/' "$scene" > "$tmp/plain.cfg"
+"$DPD" run "$tmp/plain.cfg" --out "$tmp/plain-ref" --threads 1 --quiet 2>"$tmp/err"
+check "plain scene (shear, no MSD): reference run" test $? -eq 0
 rm -rf "$tmp/old"
-"$DPD" run tests/$c.cfg --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+"$DPD" run "$tmp/plain.cfg" --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/old/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-for v in 3 2 1; do
+for v in 4 3 2 1; do
     rm -rf "$tmp/v$v"; cp -r "$tmp/old" "$tmp/v$v"
     reseal "$tmp/v$v/checkpoint.dpd" $v
-    "$DPD" run tests/$c.cfg --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
+    "$DPD" run "$tmp/plain.cfg" --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
 done
-check "reseal control: the rewritten version 3 checkpoint resumes (checksum right)" same_run "$tmp/$c-ref" "$tmp/v3"
-check "version 2 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v2"
-check "version 1 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v1"
+check "reseal control: the rewritten version 4 checkpoint resumes (checksum right)" same_run "$tmp/plain-ref" "$tmp/v4"
+for v in 3 2 1; do
+    check "version $v checkpoint of a scene without MSD or m = 0: resumes, bit for bit" same_run "$tmp/plain-ref" "$tmp/v$v"
+done
+# refused_version NAME SCENE DIR VERSION: the checkpoint in DIR resealed as VERSION is refused
+refused_version() {
+    reseal "$3/checkpoint.dpd" $4
+    "$DPD" run "$2" --out "$3" --quiet --resume 2>"$tmp/err"; st=$?
+    check "version $4 checkpoint of $1: status 2, no result" test $st -eq 2 -a ! -e "$3/summary.tsv"
+    check "version $4 checkpoint of $1: message" grep -q "format version $4, which this dpd (format 4) cannot resume" "$tmp/err"
+}
 rm -rf "$tmp/v2m"; cp -r "$tmp/foreign" "$tmp/v2m"
-reseal "$tmp/v2m/checkpoint.dpd" 2
-"$DPD" run "$scene" --out "$tmp/v2m" --quiet --resume 2>"$tmp/err"; st=$?
-check "version 2 checkpoint of an MSD scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v2m/summary.tsv"
-check "version 2 checkpoint of an MSD scene: message" grep -q 'format version 2, which this dpd (format 3) cannot resume' "$tmp/err"
-rm -rf "$tmp/v1r" "$tmp/v4"
+refused_version "an MSD scene" "$scene" "$tmp/v2m" 2
+c=checkpoint-colloids2d
+rm -rf "$tmp/v3m0"
+"$DPD" run tests/$c.cfg --out "$tmp/v3m0" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$tmp/v3m0/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
+refused_version "an m = 0 scene" tests/$c.cfg "$tmp/v3m0" 3
+rm -rf "$tmp/v1r" "$tmp/v5"
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-cp -r "$tmp/v1r" "$tmp/v4"
-reseal "$tmp/v1r/checkpoint.dpd" 1
-"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --quiet --resume 2>"$tmp/err"; st=$?
-check "version 1 checkpoint of a rotation scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v1r/summary.tsv"
-check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 3) cannot resume' "$tmp/err"
-reseal "$tmp/v4/checkpoint.dpd" 4
-"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v4" --quiet --resume 2>"$tmp/err"; st=$?
-check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v4/summary.tsv"
-check "future checkpoint format: message" grep -q 'format version 4' "$tmp/err"
+cp -r "$tmp/v1r" "$tmp/v5"
+refused_version "a rotation scene" tests/checkpoint-rotation.cfg "$tmp/v1r" 1
+reseal "$tmp/v5/checkpoint.dpd" 5
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v5" --quiet --resume 2>"$tmp/err"; st=$?
+check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v5/summary.tsv"
+check "future checkpoint format: message" grep -q 'format version 5' "$tmp/err"
 
 # trajectory output (H5MD) across interruptions: frames go to segment files
 # closed at each checkpoint and are copied into run.h5 when the run completes

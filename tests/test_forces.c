@@ -56,7 +56,7 @@ static void first_forces(System *s, NeighborList *nl, ForceWork *fw)
 {
     assert_int_equal(neighbor_init(nl, s, SKIN), 0);
     assert_int_equal(neighbor_build(nl, s), 0);
-    assert_int_equal(forces_init(fw, s->n, 0), 0);
+    assert_int_equal(forces_init(fw, s, 0), 0);
     forces_compute(s, nl, fw, NULL);
 }
 
@@ -523,7 +523,7 @@ static void ik_bins_sum_to_virial(void **state)
     for (int axis = 0; axis < 3; axis++) {
         const int nbins = 7 + axis;
         ForceWork fw;
-        assert_int_equal(forces_init(&fw, s.n, nbins), 0);
+        assert_int_equal(forces_init(&fw, &s, nbins), 0);
         double *wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double));
         assert_non_null(wbin);
         PairVirial pv = {.bin_axis = axis, .nbins = nbins, .Wbin = wbin};

@@ -247,7 +247,7 @@ static void check_assembly(int dim, const double *L, double shear, uint64_t seed
     od_matvec(od, v, Av);
     memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
     ForceWork fw;
-    assert_int_equal(forces_init(&fw, s->n, 0), 0);
+    assert_int_equal(forces_init(&fw, s, 0), 0);
     forces_compute(s, &c.nl, &fw, NULL);
     double dF = 0.0, Fmax = 0.0;
     for (int r = 0; r < od->nm; r++)

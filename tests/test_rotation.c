@@ -179,8 +179,11 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
     ForceWork fw;
     assert_int_equal(neighbor_init(&nl, &s, 0.3), 0);
     assert_int_equal(neighbor_build(&nl, &s), 0);
-    assert_int_equal(forces_init(&fw, s.n, 0), 0);
+    assert_int_equal(forces_init(&fw, &s, 0), 0);
+    double *tbuf = fw.tbuf;   /* the torque buffers come from forces_init: the force call allocates nothing */
+    CHECK_TRUE(tbuf != NULL, "forces_init of a rotation system made no torque buffers");
     forces_compute(&s, &nl, &fw, NULL);
+    CHECK_TRUE(fw.tbuf == tbuf, "the force call replaced the torque buffers");
     double P[3] = {0, 0, 0}, J[3] = {0, 0, 0}, fmaxv = 0.0;
     for (int i = 0; i < s.n; i++) {
         double c[3];

@@ -286,6 +286,32 @@ static void bodies_join_the_current(void **state)
     system_free(&s);
 }
 
+/* More blocks than tcaf_write's per-block arrays hold (issue 24, bug 4c; the
+ * validator allows 1000): refused, not silently cut to the first ones. */
+static void too_many_blocks_are_refused(void **state)
+{
+    (void)state;
+    System s; lattice(&s);
+    const int nblocks = 1100;
+    Tcaf t; configure(&t, 1, 2, 1, nblocks, nblocks + 2, &s);
+    for (int b = 0; b < nblocks; b++) t.acc_n[b] = 1;   /* one complete origin per block */
+    t.ndone = nblocks;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    char dir[] = "/tmp/dpd-test-tcaf-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const int rc = tcaf_write(&t, &s, f, dir);
+    fclose(f);
+    free(buf);
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0) fprintf(stderr, "warning: could not remove %s\n", dir);
+    CHECK_TRUE(rc != 0, "tcaf_write of %d blocks returned %d: it must refuse more blocks than it holds", nblocks, rc);
+    tcaf_free(&t);
+    system_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -297,6 +323,7 @@ int main(void)
         cmocka_unit_test(extrapolation_exact_for_polynomials),
         cmocka_unit_test(sampled_decaying_mode_gives_its_viscosity),
         cmocka_unit_test(bodies_join_the_current),
+        cmocka_unit_test(too_many_blocks_are_refused),
     };
     return cmocka_run_group_tests_name("tcaf", tests, NULL, NULL);
 }
