@@ -280,6 +280,9 @@ check "harness: rot killed once: the attempt completes" test $? -eq 0
 check "harness: rot killed once: retried in the same attempt" test "$(sort "$tmp/crash.log" | tr '\n' ' ')" = "c3d rot rot tcaf "
 check "harness: rot killed once: resumed from its checkpoint" grep -q '^resumed_at_step	[1-9]' "$rx/results/t/e/quick/runs/rot/provenance.tsv"
 same_as_references "rot killed once"
+check "harness: the experiment's CPU time is the sum of its simulations' attempts (> 0)" \
+    awk -F'\t' '$1 == "cpu_seconds" && $2 > 0 { f = 1 } END { exit !f }' "$rx/results/t/e/quick/provenance.tsv"
+check "harness: every attempt of the killed run counted" test "$(grep -c . "$rx/results/t/e/quick/runs/rot/.cpu_seconds")" = 2
 rm -rf "$rx/results/t/e"
 : > "$tmp/crash.log"
 RX CRASH_RUN=tcaf DPD_MAX_FAILURES=1 "$rx/tools/run-experiment" t/e quick 2>"$tmp/err"

@@ -46,6 +46,9 @@ evaluate() {
         # a paper tier never run (too long for the machine that made the package's results): its
         # reduced tier is committed and checked with TIER=reduced; paper.md gives the paper tier's cost
         notrun=1; why="paper tier not run: the reduced tier is committed (make check TIER=reduced)"
+    elif [ "$tier" = reduced ] && [ ! -e "$DPD_ROOT/results/$id/reduced" ]; then
+        # a reduced tier is optional: most experiments have none
+        notrun=1; why="this experiment has no reduced tier"
     fi
     awk -v eid="$id" -v tier="$tier" -v sfile="$s" -v why="$why" -v notrun="$notrun" -f "$BANDS_AWK" "$b"
 }
