@@ -9,13 +9,16 @@ MU=3.6388 R=0.2737 U=0.3        # paper mu and R; u: Re = rho u R / mu = 0.068 (
 B=20                            # blocks of the drag and torque series
 case $TIER in
     quick) L=8;  ROWS="1 3"; len=() ;;
-    # paper: the paper's box; 50 + 600 time units per row (blocks of 30, above the box's slowest
-    # shear mode L^2 / (4 pi^2 nu) = 19), about 1.2 CPU-hours per row
-    paper) L=30; ROWS="1 2 3"; len=(--set equilibration=5000 --set steps=60000) ;;
-    # reduced: the paper's rows in a 16^3 box (12288 particles), 20 + 200 time units each,
-    # about 4 CPU-minutes per row
-    reduced) L=16; ROWS="1 2 3"; len=(--set equilibration=2000 --set steps=20000) ;;
+    # reduced (the committed result, README): the paper's box; 50 + 600 time units per row (blocks
+    # of 30, above the box's slowest shear mode L^2 / (4 pi^2 nu) = 19), about 1.2 CPU-hours per row
+    reduced) L=30; ROWS="1 2 3"; len=(--set equilibration=5000 --set steps=60000) ;;
+    # paper (not run): the paper's box, each row long enough for the paper's 0.5 % on its torque
+    # (paper_steps; README)
+    paper) L=30; ROWS="1 2 3"; len=(--set equilibration=5000) ;;
 esac
+# the paper tier's production per row: 4.7e7, 1.27e7 and 2.5e6 time units (the reduced tier's torque
+# stderr, 0.037, 0.033 and 0.030 in 600 time units, scaled to 0.5 % of eq. 23's torque)
+paper_steps() { case $1 in 1) echo 4700000000L;; 2) echo 1270000000;; 3) echo 250000000;; esac; }   # L: a 64-bit integer (libconfig)
 row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
@@ -24,7 +27,8 @@ NF=$(awk -v L=$L 'BEGIN{printf "%d", 3*L^3}')
 for r in $ROWS; do
     l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
     ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
-    dpd_run row$r two-spheres.cfg "${len[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
+    rl=(); [ "$TIER" = paper ] && rl=(--set "steps=$(paper_steps $r)")
+    dpd_run row$r two-spheres.cfg "${len[@]}" "${rl[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
         --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
         --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
 done
