@@ -11,7 +11,7 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any phan-thien-2016/fig03-couette-profile@paper
 case $TIER in
-    quick) GW_DTS="0.02 0.03 0.04 0.05 0.06"; GW_T=20; GW_BOX=8
+    quick) GW_DTS="0.005 0.01 0.02 0.03 0.04 0.05 0.06"; GW_T=20; GW_BOX=8
            MD_DTS="0.01 0.015 0.0175 0.02"; MD_T=8; MD_BOX=5
            PAN_DTS="0.005 0.01 0.015 0.02"; PAN_T=10; PAN_BOX=6
            OD_STEPS=500 OD_EQ=100
