@@ -226,9 +226,11 @@ static void centre(const Bonds *b, const System *s, int c, double u[2], double w
         box_min_image(&s->box, d, NULL);
         off[0] += d[0]; off[1] += d[1];
     }
+    double shift[3];
+    box_image_shift(&s->box, s->img + 3 * i0, shift);
     for (int a = 0; a < 2; a++) {
         w[a] = s->x[3 * i0 + a] + off[a] / BOND_P;
-        u[a] = w[a] + s->img[3 * i0 + a] * s->box.L[a];
+        u[a] = w[a] + shift[a];
         w[a] -= floor(w[a] / s->box.L[a]) * s->box.L[a];
     }
 }

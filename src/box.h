@@ -5,6 +5,7 @@
 #define DPD_BOX_H
 
 #include <math.h>
+#include <stdint.h>
 #include "modules.h"
 
 typedef struct {
@@ -50,6 +51,21 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
 static inline double box_stream_vx(const Box *b, double y)
 {
     return DPD_MODULES ? b->shear_rate * (y - b->half[1]) : 0.0;
+}
+
+/* The displacement from the wrapped to the unwrapped position of a particle
+ * with image counters img, and that position: what the measurements of
+ * displacements (MSD, centre of mass, colloid centres) use. */
+static inline void box_image_shift(const Box *b, const int32_t img[3], double s[3])
+{
+    for (int d = 0; d < 3; d++) s[d] = img[d] * b->L[d];
+}
+
+static inline void box_unwrap(const Box *b, const double x[3], const int32_t img[3], double u[3])
+{
+    double s[3];
+    box_image_shift(b, img, s);
+    for (int d = 0; d < 3; d++) u[d] = x[d] + s[d];
 }
 
 /* Wrap one particle into the box; crossing y applies the Lees-Edwards shift
