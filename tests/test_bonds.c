@@ -13,6 +13,7 @@
  *    mode relaxes at lambda = (H + a) / (gamma w_D(r*)) and Euler (eq. 28) is
  *    stable for dt < 2 / lambda (at H = 1000: 0.00758). */
 #include "testutil.h"
+#include "runutil.h"
 #include "system.h"
 #include "box.h"
 #include "neighbor.h"
@@ -324,6 +325,51 @@ static void colloid_on_a_frozen_body_is_pushed_out(void **state)
     free_col(&c);
 }
 
+/* A colloid of m = 1 particles alone in a sheared box (nothing else, no
+ * thermostat: a = gamma = 0, the springs are the only force) drifts at v = (0.3, 1.0) through the
+ * y boundary again and again while the springs keep it together. Its centre
+ * is its centre of mass, which the springs do not move: in the infinite
+ * sheared system it travels in a straight line, so the centre MSD of
+ * colloid_msd.tsv is |v|^2 t^2 = 1.09 t^2 at every lag (to its 8 printed
+ * digits). With x + img L the centre jumps by the offset at each crossing. */
+static void sheared_colloid_centre_moves_straight(void **state)
+{
+    (void)state;
+    const char *text =
+        "dimension = 2;\n"
+        "box = [4.0, 4.0];\n"
+        "kBT = 1.0;\n"
+        "dt = 0.005;\n"
+        "seed = 52;\n"
+        "equilibration = 0;\n"
+        "steps = 4000;\n"
+        "shear_rate = 1.0;\n"
+        "max_temperature_ratio = 1e6;\n"   /* a free particle falls behind the flow it crosses */
+        "types = ( { name = \"colloid\"; count = 3; velocity = [0.3, 1.0]; } );\n"
+        "pairs = ( { types = [\"colloid\", \"colloid\"]; a = 0.0; gamma = 0.0; rc = 1.0; } );\n"
+        "colloids2d = { type = \"colloid\"; count = 1; side = 0.25; H = 1000.0; every = 10; msd_window = 1000; };\n"
+        "measure = { every = 10; };\n";
+    char dir[512], out[600], path[700];
+    const int rc = run_scene_text("bonds-shear", text, dir, sizeof dir, out, sizeof out);
+    snprintf(path, sizeof path, "%s/colloid_msd.tsv", out);
+    FILE *f = fopen(path, "r");
+    int rows = 0;
+    double worst = 0.0;
+    if (f) {
+        char line[256];
+        double t, msd;
+        while (fgets(line, sizeof line, f))
+            if (sscanf(line, "%lf\t%lf", &t, &msd) == 2) {
+                rows++;
+                worst = fmax(worst, fabs(msd / (t * t) / 1.09 - 1.0));
+            }
+        fclose(f);
+    }
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && rows == 100, "status %d, %d rows of colloid_msd.tsv", rc, rows);
+    CHECK_ABS("sheared free colloid: largest |msd / (|v|^2 t^2) - 1| over the lags", worst, 0.0, 1e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -332,6 +378,7 @@ int main(void)
         cmocka_unit_test(largest_stable_dt_at_H1000),
         cmocka_unit_test(coincident_particles_give_no_nan),
         cmocka_unit_test(colloid_on_a_frozen_body_is_pushed_out),
+        cmocka_unit_test(sheared_colloid_centre_moves_straight),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
