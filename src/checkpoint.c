@@ -15,8 +15,12 @@ static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
  * a scene that has it: for any other scene the two layouts are the same
  * byte for byte, so a version 1 checkpoint of such a scene is still read.
  * Version 3 keeps the MSD curves per group of particles (their errors come
- * from the groups): a version 1 or 2 checkpoint of an MSD scene is refused. */
-#define CHECKPOINT_VERSION 3u
+ * from the groups): a version 1 or 2 checkpoint of an MSD scene is refused.
+ * Version 4 has the same layout; in a sheared box its x image counters also
+ * count the wraps of the Lees-Edwards offset (box_offset_wrapped), which
+ * older ones did not: a version 1 to 3 checkpoint of a sheared scene is
+ * refused (its unwrapped positions would jump where it resumed). */
+#define CHECKPOINT_VERSION 4u
 #define CHECKPOINT_VERSION_OLDEST 1u
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
@@ -337,7 +341,8 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
         snprintf(err, errlen, "%s is not a dpd checkpoint", path);
         rc = -1;
     } else if (version < CHECKPOINT_VERSION_OLDEST || version > CHECKPOINT_VERSION
-               || (version < 2 && needs_version2(s, m, x)) || (version < 3 && m->msd_on)) {
+               || (version < 2 && needs_version2(s, m, x)) || (version < 3 && m->msd_on)
+               || (version < 4 && s->box.shear_rate != 0.0)) {
         snprintf(err, errlen, "checkpoint %s has format version %u, which this dpd (format %u) cannot resume "
                  "for this scene; delete it to start afresh", path, version, CHECKPOINT_VERSION);
         rc = -1;

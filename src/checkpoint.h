@@ -10,7 +10,7 @@
  * the rigid bodies of 3D spring colloids (centre, velocity, quaternion,
  * angular momentum, last reactions) with their extension record; the TCAF
  * time origins in flight and its accumulators; how many trajectory segment
- * files (output.h) were complete. Format version 2 (checkpoint.c).
+ * files (output.h) were complete. Format version 4 (checkpoint.c).
  * One binary file DIR/checkpoint.dpd, written to a temporary name, fsynced
  * and renamed; a 64-bit FNV-1a checksum over the content and a hash of the
  * scene as run reject a truncated file or one of another scene. */

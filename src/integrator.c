@@ -31,14 +31,18 @@ static void predict_walls(System *s) { predict_loop(s, 1, 0); }
 static void predict_shear(System *s) { predict_loop(s, 0, 1); }
 static void predict_walls_shear(System *s) { predict_loop(s, 1, 1); }
 
+double integrate_advance_offset(System *s)
+{
+    const double old_offset = s->box.le_offset;
+    const int k = box_advance(&s->box, s->dt);
+    if (MOD_ON(k != 0)) box_offset_wrapped(s->img, s->n, k);
+    return s->box.le_offset - old_offset + k * s->box.L[0];
+}
+
 double integrate_predict(System *s)
 {
     const double dt = s->dt;
-    const double old_offset = s->box.le_offset;
-    box_advance(&s->box, dt);
-    double doff = s->box.le_offset - old_offset;
-    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
-    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
+    const double doff = integrate_advance_offset(s);
     const int walls = MOD_ON(s->n_frozen > 0), le = MOD_SHEAR(&s->box);
     if (walls && le) predict_walls_shear(s);
     else if (walls) predict_walls(s);

@@ -240,7 +240,7 @@ static void confine(System *s, const RunConfig *rc)
 static void overdamped_move(System *s)
 {
     const double dt = s->dt;
-    box_advance(&s->box, dt);
+    integrate_advance_offset(s);
     #pragma omp parallel for schedule(static)
     for (int i = 0; i < s->n; i++) {
         double *x = s->x + 3 * i, *v = s->v + 3 * i;

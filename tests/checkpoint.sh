@@ -133,11 +133,12 @@ check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/
 check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/foreign/summary.tsv"
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
 
-# checkpoint format versions: a version 1 or 2 file of a scene without MSD,
-# spins, rigid bodies, TCAF or trajectory (the 2D colloid scene) still resumes
-# (same layout); one of a rotation scene cannot (version 1 had no spins), nor a
-# version 2 one of an MSD scene (version 3 keeps the MSD per particle group),
-# nor one of a future format
+# checkpoint format versions: a version 1, 2 or 3 file of a scene without MSD,
+# spins, rigid bodies, TCAF, trajectory or shear (the 2D colloid scene without
+# its shear) still resumes (same layout); one of a rotation scene cannot
+# (version 1 had no spins), nor a version 2 one of an MSD scene (version 3 keeps
+# the MSD per particle group), nor a version 3 one of a sheared scene (version 4
+# counts the offset's wraps in the image counters), nor one of a future format
 # reseal FILE VERSION: set the format version and recompute the FNV-1a checksum
 reseal() {
     perl -e '
@@ -154,34 +155,44 @@ reseal() {
         open $f, ">:raw", $ARGV[0] or die; print $f $b, pack("VV", $lo, $hi); close $f;' "$1" "$2"
 }
 c=checkpoint-colloids2d
+still=(--set shear_rate=0.0)
+"$DPD" run tests/$c.cfg "${still[@]}" --out "$tmp/still-ref" --threads 1 --quiet 2>/dev/null
 rm -rf "$tmp/old"
-"$DPD" run tests/$c.cfg --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+"$DPD" run tests/$c.cfg "${still[@]}" --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/old/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-for v in 3 2 1; do
+for v in 4 3 2 1; do
     rm -rf "$tmp/v$v"; cp -r "$tmp/old" "$tmp/v$v"
     reseal "$tmp/v$v/checkpoint.dpd" $v
-    "$DPD" run tests/$c.cfg --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
+    "$DPD" run tests/$c.cfg "${still[@]}" --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
 done
-check "reseal control: the rewritten version 3 checkpoint resumes (checksum right)" same_run "$tmp/$c-ref" "$tmp/v3"
-check "version 2 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v2"
-check "version 1 checkpoint of a scene without MSD: resumes, bit for bit" same_run "$tmp/$c-ref" "$tmp/v1"
+check "reseal control: the rewritten version 4 checkpoint resumes (checksum right)" same_run "$tmp/still-ref" "$tmp/v4"
+check "version 3 checkpoint of a scene without MSD or shear: resumes, bit for bit" same_run "$tmp/still-ref" "$tmp/v3"
+check "version 2 checkpoint of a scene without MSD or shear: resumes, bit for bit" same_run "$tmp/still-ref" "$tmp/v2"
+check "version 1 checkpoint of a scene without MSD or shear: resumes, bit for bit" same_run "$tmp/still-ref" "$tmp/v1"
+rm -rf "$tmp/v3s"
+"$DPD" run tests/$c.cfg --out "$tmp/v3s" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$tmp/v3s/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
+reseal "$tmp/v3s/checkpoint.dpd" 3
+"$DPD" run tests/$c.cfg --out "$tmp/v3s" --quiet --resume 2>"$tmp/err"; st=$?
+check "version 3 checkpoint of a sheared scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v3s/summary.tsv"
+check "version 3 checkpoint of a sheared scene: message" grep -q 'format version 3, which this dpd (format 4) cannot resume' "$tmp/err"
 rm -rf "$tmp/v2m"; cp -r "$tmp/foreign" "$tmp/v2m"
 reseal "$tmp/v2m/checkpoint.dpd" 2
 "$DPD" run "$scene" --out "$tmp/v2m" --quiet --resume 2>"$tmp/err"; st=$?
 check "version 2 checkpoint of an MSD scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v2m/summary.tsv"
-check "version 2 checkpoint of an MSD scene: message" grep -q 'format version 2, which this dpd (format 3) cannot resume' "$tmp/err"
-rm -rf "$tmp/v1r" "$tmp/v4"
+check "version 2 checkpoint of an MSD scene: message" grep -q 'format version 2, which this dpd (format 4) cannot resume' "$tmp/err"
+rm -rf "$tmp/v1r" "$tmp/v5"
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-cp -r "$tmp/v1r" "$tmp/v4"
+cp -r "$tmp/v1r" "$tmp/v5"
 reseal "$tmp/v1r/checkpoint.dpd" 1
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --quiet --resume 2>"$tmp/err"; st=$?
 check "version 1 checkpoint of a rotation scene: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v1r/summary.tsv"
-check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 3) cannot resume' "$tmp/err"
-reseal "$tmp/v4/checkpoint.dpd" 4
-"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v4" --quiet --resume 2>"$tmp/err"; st=$?
-check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v4/summary.tsv"
-check "future checkpoint format: message" grep -q 'format version 4' "$tmp/err"
+check "version 1 checkpoint of a rotation scene: message" grep -q 'format version 1, which this dpd (format 4) cannot resume' "$tmp/err"
+reseal "$tmp/v5/checkpoint.dpd" 5
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v5" --quiet --resume 2>"$tmp/err"; st=$?
+check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v5/summary.tsv"
+check "future checkpoint format: message" grep -q 'format version 5' "$tmp/err"
 
 # trajectory output (H5MD) across interruptions: frames go to segment files
 # closed at each checkpoint and are copied into run.h5 when the run completes
