@@ -370,6 +370,45 @@ static void sheared_colloid_centre_moves_straight(void **state)
     CHECK_ABS("sheared free colloid: largest |msd / (|v|^2 t^2) - 1| over the lags", worst, 0.0, 1e-6);
 }
 
+/* The two radii of eq. 48, colloid_radius (colloids2d.around, about the
+ * colloid centres) and exclusion_radius (measure.around, about a point), are
+ * the lower edge of the first bin where g reaches the threshold, with one
+ * error rule: the jackknife variance over blocks plus the dq^2 / 12 of a
+ * uniform bin (the radius is only known to a bin). An ideal solvent (no
+ * interaction with anything) fills the first bin (dq = 0.2: 0.5 particles per
+ * sample, 20 samples per block) in every block: both radii are 0 with a zero
+ * jackknife variance, so both errors must be dq / sqrt(12) exactly. */
+static void around_radii_share_one_error_rule(void **state)
+{
+    (void)state;
+    const char *text =
+        "dimension = 2;\n"
+        "box = [6.0, 6.0];\n"
+        "kBT = 1.0;\n"
+        "dt = 0.01;\n"
+        "seed = 53;\n"
+        "equilibration = 0;\n"
+        "steps = 2000;\n"
+        "types = ( { name = \"solvent\"; count = 144; }, { name = \"colloid\"; count = 3; } );\n"
+        "pairs = ( { types = [\"solvent\", \"solvent\"]; a = 0.0; gamma = 0.0; interact = false; },\n"
+        "          { types = [\"solvent\", \"colloid\"]; a = 0.0; gamma = 0.0; interact = false; },\n"
+        "          { types = [\"colloid\", \"colloid\"]; a = 0.0; gamma = 0.0; rc = 1.0; } );\n"
+        "colloids2d = { type = \"colloid\"; count = 1; side = 0.25; H = 1000.0; every = 10; msd_window = 100;\n"
+        "               around = { type = \"solvent\"; dq = 0.2; qmax = 2.0; }; };\n"
+        "measure = { every = 10; blocks = 10;\n"
+        "            around = { centre = [3.0, 3.0]; type = \"solvent\"; dq = 0.2; qmax = 2.0; }; };\n";
+    char dir[512], out[600];
+    const int rc = run_scene_text("around-rule", text, dir, sizeof dir, out, sizeof out);
+    double ac = NAN, ac_se = NAN, ae = NAN, ae_se = NAN;
+    const int got = summary_get(out, "colloid_radius", &ac, &ac_se) | summary_get(out, "exclusion_radius", &ae, &ae_se);
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && got == 0, "status %d, radii in summary.tsv: %s", rc, got ? "no" : "yes");
+    CHECK_ABS("exclusion_radius of an ideal solvent", ae, 0.0, 0.0);
+    CHECK_ABS("colloid_radius of an ideal solvent", ac, 0.0, 0.0);
+    CHECK_REL("exclusion_radius error: dq / sqrt(12)", ae_se, 0.2 / sqrt(12.0), 1e-3);
+    CHECK_REL("colloid_radius error: dq / sqrt(12)", ac_se, 0.2 / sqrt(12.0), 1e-3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -379,6 +418,7 @@ int main(void)
         cmocka_unit_test(coincident_particles_give_no_nan),
         cmocka_unit_test(colloid_on_a_frozen_body_is_pushed_out),
         cmocka_unit_test(sheared_colloid_centre_moves_straight),
+        cmocka_unit_test(around_radii_share_one_error_rule),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
