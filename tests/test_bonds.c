@@ -20,6 +20,7 @@
 #include "forces.h"
 #include "overdamped.h"
 #include "bonds.h"
+#include "measure_field.h"
 
 #define A_REP 18.5
 #define GAMMA 4.5
@@ -409,6 +410,39 @@ static void around_radii_share_one_error_rule(void **state)
     CHECK_REL("colloid_radius error: dq / sqrt(12)", ac_se, 0.2 / sqrt(12.0), 1e-3);
 }
 
+/* around_write, the rule both radii use, on a hand-made histogram with a
+ * nonzero jackknife: 2D, dq = 1, density 1/pi (shells hold 1, 3, 5 particles
+ * at g = 1), threshold 0.45, three blocks of one sample each with counts
+ * (0, 0, 5), (0, 3, 5), (1, 3, 5). All blocks: g = 1/3, 2/3 -> radius 1.
+ * Leaving out each block: g0 = 1/2, 1/2, 0 (then g1 = 1/2) -> radii 0, 0, 1;
+ * jackknife variance (2/3) sum (r - 1/3)^2 = 4/9, plus 1/12: se = sqrt(19)/6. */
+static void around_write_rule_by_hand(void **state)
+{
+    (void)state;
+    const double hist[9] = {0, 0, 5, 0, 3, 5, 1, 3, 5};
+    const long long samples[3] = {1, 1, 1};
+    const AroundHist a = {.hist = hist, .samples = samples, .nblocks = 3, .bins = 3, .dim = 2,
+                          .dq = 1.0, .density = 1.0 / M_PI, .threshold = 0.45};
+    char dir[512], table[600], line[256], name[64];
+    make_tmpdir(dir, sizeof dir, "around-write");
+    snprintf(table, sizeof table, "%s/around.tsv", dir);
+    FILE *sum = tmpfile();
+    assert_non_null(sum);
+    const int rc = around_write(&a, table, sum, "radius");
+    rewind(sum);
+    double r = NAN, se = NAN;
+    const int got = fgets(line, sizeof line, sum) && sscanf(line, "%63[^\t]\t%lf\t%lf", name, &r, &se) == 3;
+    fclose(sum);
+    FILE *t = fopen(table, "r");
+    int rows = 0;
+    while (t && fgets(line, sizeof line, t)) rows++;
+    if (t) fclose(t);
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && got && !strcmp(name, "radius") && rows == 4, "status %d, row read %d, table rows %d", rc, got, rows);
+    CHECK_ABS("radius", r, 1.0, 0.0);
+    CHECK_REL("error: jackknife plus dq^2 / 12", se, sqrt(19.0) / 6.0, 1e-3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -419,6 +453,7 @@ int main(void)
         cmocka_unit_test(colloid_on_a_frozen_body_is_pushed_out),
         cmocka_unit_test(sheared_colloid_centre_moves_straight),
         cmocka_unit_test(around_radii_share_one_error_rule),
+        cmocka_unit_test(around_write_rule_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
