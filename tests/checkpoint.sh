@@ -13,7 +13,7 @@
 # Threads (ref kill resume): 1 1 2 (results do not depend on the thread count;
 # 2 2 2 for the TCAF scene, which test_threads checks on 1 and 2 threads).
 # Every resumed run must equal ref bit for bit: /results/final_state
-# (positions, images, velocities by particle id) and /observables of run.h5
+# (positions, images, velocities by particle id) and the time series (/series) of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
 # timing rows. Trajectory output (H5MD) across a SIGKILL and a SIGTERM: the
 # resumed /particles equal the uninterrupted ones (no frame lost or doubled).
@@ -34,7 +34,7 @@ same_run() {   # same_run REF DIR: bit-identical results
     local r=$1 d=$2 t
     [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] || { echo "  $d: no complete result"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /results/final_state || { echo "  final_state differs"; return 1; }
-    h5diff -q "$r/run.h5" "$d/run.h5" /observables || { echo "  observables differ"; return 1; }
+    h5diff -q "$r/run.h5" "$d/run.h5" /series || { echo "  time series differ"; return 1; }
     for t in profile rdf msd around density_map colloid_msd colloid_around colloid_rdf tcaf tcaf_eta tcaf_extrapolation; do
         [ -e "$r/$t.tsv" ] || continue
         cmp -s "$r/$t.tsv" "$d/$t.tsv" || { echo "  $t.tsv differs"; return 1; }
@@ -229,6 +229,15 @@ rm -f "$d/trajectory-0000.h5"
 "$DPD" run "$scene" "${traj[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
 check "trajectory: missing segment: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
 check "trajectory: missing segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 of the checkpoint is missing' "$tmp/err"
+# a format 3 checkpoint of a trajectory scene (without shear, which alone refuses it): its segments
+# have no box edges per frame, refused
+d=$tmp/traj-v3
+"$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$d/trajectory-0000.h5" $pid; kill -TERM $pid; wait $pid
+reseal "$d/checkpoint.dpd" 3
+"$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+check "trajectory: format 3 checkpoint: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: format 3 checkpoint: message" grep -q 'format version 3, which this dpd (format 4) cannot resume' "$tmp/err"
 
 # the harness with the real simulator: tools/run-experiment of an experiment with a rotation, a
 # 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run; the local pool runs them at once, each

@@ -5,7 +5,8 @@
 #  - against the H5MD 1.1 layout with h5py: /h5md version and author, the
 #    particles group's box (dimension, boundary, edges as a time series of
 #    D x D matrices), position / velocity / image (frames x N x D) sharing
-#    step and time, species, every observable with step, time and value;
+#    step and time, species; the measured series in /series (step, time,
+#    value), not in /observables, which MDAnalysis reads frame by frame;
 #  - by MDAnalysis's H5MDReader (Debian 12's python3-mdanalysis 2.4.2):
 #    n_atoms, n_frames, frame 0's positions and velocities against the file,
 #    box dimensions, times, every frame read. The units are DPD reduced units,
@@ -85,11 +86,13 @@ if ok_e:
     check("box edges value: frames x D x D", ev.shape == (F, D, D), ev.shape)
     check("box edges step and time = position's", np.array_equal(e["step"][()], pos["step"][()])
           and np.array_equal(e["time"][()], pos["time"][()]))
-if "observables" in f:
-    bad = [k for k, o in f["observables"].items()
+# MDAnalysis reads /observables/NAME/value[frame]: only data sampled with the frames may be there
+check("no /observables (the measured series are not sampled with the frames)", "observables" not in f)
+if "series" in f:
+    bad = [k for k, o in f["series"].items()
            if not (isinstance(o, h5py.Group) and all(x in o for x in ("step", "time", "value"))
                    and o["step"].shape[0] == o["time"].shape[0] == o["value"].shape[0])]
-    check("observables: step, time and value of one length", not bad, bad)
+    check("series: step, time and value of one length", not bad, bad)
 if kind == "sheared" and ok_e:
     # unwrapped = position + image . edges (rows: edge vectors); one step moves |v| dt < 0.3
     # (the flow is at most 4 here), a y crossing that jumped would move by the offset
