@@ -5,6 +5,7 @@
 #include <math.h>
 #include "bonds.h"
 #include "random.h"
+#include "measure_field.h"
 
 #define R_EPSILON 1e-10      /* as in forces.c: coincident particles have no direction */
 #define STREAM_BOND_ORIENT 5 /* Philox stream of the initial orientations */
@@ -226,9 +227,11 @@ static void centre(const Bonds *b, const System *s, int c, double u[2], double w
         box_min_image(&s->box, d, NULL);
         off[0] += d[0]; off[1] += d[1];
     }
+    double shift[3];
+    box_image_shift(&s->box, s->img + 3 * i0, shift);
     for (int a = 0; a < 2; a++) {
         w[a] = s->x[3 * i0 + a] + off[a] / BOND_P;
-        u[a] = w[a] + s->img[3 * i0 + a] * s->box.L[a];
+        u[a] = w[a] + shift[a];
         w[a] -= floor(w[a] / s->box.L[a]) * s->box.L[a];
     }
 }
@@ -289,59 +292,14 @@ void bonds_sample(Bonds *b, const System *s, long long prod_step)
 
 static double annulus(double q0, double q1) { return M_PI * (q1 * q1 - q0 * q0); }
 
-/* Lower edge of the first bin where g(q) (eq. 48) reaches the threshold. */
-static double size_from(const Bonds *b, const double *h, long long nsamp)
-{
-    for (int k = 0; k < b->around_bins; k++) {
-        const double q0 = k * b->around_dq;
-        if (h[k] / (nsamp * b->around_density * annulus(q0, q0 + b->around_dq)) >= b->around_threshold) return q0;
-    }
-    return b->around_bins * b->around_dq;
-}
-
 static int write_around(const Bonds *b, FILE *summary, const char *dir)
 {
-    const int B = b->nblocks, nb = b->around_bins;
-    double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
-    double *g = calloc((size_t)B, sizeof(double)), *a = calloc((size_t)B, sizeof(double));
     char path[1024];
     snprintf(path, sizeof path, "%s/colloid_around.tsv", dir);
-    FILE *out = all && loo && g && a ? fopen(path, "w") : NULL;
-    if (!out) { free(all); free(loo); free(g); free(a); return -1; }
-    long long ntot = 0;
-    for (int k = 0; k < B; k++) {
-        ntot += b->around_samples[k];
-        for (int q = 0; q < nb; q++) all[q] += b->around_hist[(size_t)k * nb + q];
-    }
-    fprintf(out, "q\tg\tg_se\n");
-    for (int q = 0; q < nb; q++) {
-        const double q0 = q * b->around_dq, sh = annulus(q0, q0 + b->around_dq);
-        int used = 0;
-        for (int k = 0; k < B; k++)
-            if (b->around_samples[k] > 0)
-                g[used++] = b->around_hist[(size_t)k * nb + q] / (b->around_samples[k] * b->around_density * sh);
-        double mean, se;
-        block_stats(g, (size_t)used, used, &mean, &se);
-        fprintf(out, "%.6g\t%.6g\t%.3g\n", q0 + 0.5 * b->around_dq, mean, se);
-    }
-    /* jackknife over blocks: the crossing is a nonlinear function of g */
-    const double a_all = ntot > 0 ? size_from(b, all, ntot) : NAN;
-    int used = 0;
-    double abar = 0.0, var = 0.0;
-    for (int k = 0; k < B; k++) {
-        if (b->around_samples[k] == 0 || b->around_samples[k] == ntot) continue;
-        for (int q = 0; q < nb; q++) loo[q] = all[q] - b->around_hist[(size_t)k * nb + q];
-        a[used] = size_from(b, loo, ntot - b->around_samples[k]);
-        abar += a[used++];
-    }
-    if (used > 1) {
-        abar /= used;
-        for (int k = 0; k < used; k++) var += (a[k] - abar) * (a[k] - abar);
-        var *= (used - 1.0) / used;
-    }
-    fprintf(summary, "colloid_radius\t%.10g\t%.4g\n", a_all, used > 1 ? sqrt(var) : NAN);
-    free(all); free(loo); free(g); free(a);
-    return fclose(out);
+    const AroundHist a = {.hist = b->around_hist, .samples = b->around_samples, .nblocks = b->nblocks,
+                          .bins = b->around_bins, .dim = 2, .dq = b->around_dq,
+                          .density = b->around_density, .threshold = b->around_threshold};
+    return around_write(&a, path, summary, "colloid_radius");
 }
 
 static int write_rdf(const Bonds *b, const System *s, const char *dir)

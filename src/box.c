@@ -15,11 +15,13 @@ void box_init(Box *b, int dim, const double L[3], double shear_rate)
     b->le_offset = 0.0;
 }
 
-void box_advance(Box *b, double dt)
+int box_advance(Box *b, double dt)
 {
-    if (!MOD_SHEAR(b)) return;
-    b->le_offset = fmod(b->le_offset + b->shear_rate * b->L[1] * dt, b->L[0]);
+    if (!MOD_SHEAR(b)) return 0;
+    const double t = b->le_offset + b->shear_rate * b->L[1] * dt;
+    b->le_offset = fmod(t, b->L[0]);
     if (b->le_offset < 0.0) b->le_offset += b->L[0];
+    return (int)lround((t - b->le_offset) * b->inv[0]);
 }
 
 /* img += n, saturating: a runaway particle (which the stability check then
@@ -28,6 +30,11 @@ static void add_images(int *img, double n)
 {
     const double t = (double)*img + n;
     *img = t > (double)INT_MAX ? INT_MAX : (t < (double)INT_MIN ? INT_MIN : (int)t);
+}
+
+void box_offset_wrapped(int32_t *img, int n, int k)
+{
+    for (int i = 0; i < n; i++) add_images(&img[3 * i], (double)k * img[3 * i + 1]);
 }
 
 static int finite3(const double x[3])

@@ -5,6 +5,7 @@
 #define DPD_BOX_H
 
 #include <math.h>
+#include <stdint.h>
 #include "modules.h"
 
 typedef struct {
@@ -15,7 +16,12 @@ typedef struct {
 } Box;
 
 void box_init(Box *b, int dim, const double L[3], double shear_rate);
-void box_advance(Box *b, double dt);
+/* Move the offset on by rate L_y dt; returns k, the whole L_x it dropped to
+ * stay in [0, L_x) (0, or -1 / +1 when it wrapped): see box_offset_wrapped. */
+int  box_advance(Box *b, double dt);
+/* After the offset dropped by k L_x: img_x += k img_y for each of n particles,
+ * so that their unwrapped x (box_image_shift) does not move. */
+void box_offset_wrapped(int32_t *img, int n, int k);
 
 /* Minimum-image separation r_i - r_j and, if dv != NULL, the velocity of i
  * relative to that image of j. le = 0 (a constant in the hot loops, which are
@@ -50,6 +56,29 @@ static inline void box_min_image(const Box *b, double d[3], double *dvx)
 static inline double box_stream_vx(const Box *b, double y)
 {
     return DPD_MODULES ? b->shear_rate * (y - b->half[1]) : 0.0;
+}
+
+/* The displacement from the wrapped to the unwrapped position of a particle
+ * with image counters img, and that position: what the measurements of
+ * displacements (MSD, centre of mass, colloid centres) use. With shear it is
+ * the position in the infinite sheared system (the image j rows up is
+ * displaced by j x offset), continuous through the jumps of a y crossing:
+ * x + img_x L_x + img_y offset. That needs the offset's wraps through L_x
+ * counted in img_x (box_offset_wrapped): the image counter then holds the
+ * x shift a particle accumulated at its crossings, in whole L_x (the
+ * convention of a sheared triclinic cell of edges (L_x, 0, 0), (offset, L_y, 0),
+ * (0, 0, L_z), as the trajectory's box stores it). */
+static inline void box_image_shift(const Box *b, const int32_t img[3], double s[3])
+{
+    for (int d = 0; d < 3; d++) s[d] = img[d] * b->L[d];
+    if (MOD_SHEAR(b)) s[0] += img[1] * b->le_offset;
+}
+
+static inline void box_unwrap(const Box *b, const double x[3], const int32_t img[3], double u[3])
+{
+    double s[3];
+    box_image_shift(b, img, s);
+    for (int d = 0; d < 3; d++) u[d] = x[d] + s[d];
 }
 
 /* Wrap one particle into the box; crossing y applies the Lees-Edwards shift

@@ -17,7 +17,12 @@ static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
  * Version 3 keeps the MSD curves per group of particles (their errors come
  * from the groups): a version 1 or 2 checkpoint of an MSD scene is refused.
  * Version 4 appends the m = 0 solver's CPU time per step: an older checkpoint
- * of an m = 0 scene is refused (its resume would lose those samples). */
+ * of an m = 0 scene is refused (its resume would lose those samples). In a
+ * sheared box its x image counters also count the wraps of the Lees-Edwards
+ * offset (box_offset_wrapped), which older ones did not: a version 1 to 3
+ * checkpoint of a sheared scene is refused (its unwrapped positions would jump
+ * where it resumed), and so is one of a scene with a trajectory (its segment
+ * files have no box edges per frame, which run.h5's trajectory now has). */
 #define CHECKPOINT_VERSION 4u
 #define CHECKPOINT_VERSION_OLDEST 1u
 
@@ -342,7 +347,7 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
         rc = -1;
     } else if (version < CHECKPOINT_VERSION_OLDEST || version > CHECKPOINT_VERSION
                || (version < 2 && needs_version2(s, m, x)) || (version < 3 && m->msd_on)
-               || (version < 4 && x->solver_cpu)) {
+               || (version < 4 && (x->solver_cpu || s->box.shear_rate != 0.0 || x->trajectory))) {
         snprintf(err, errlen, "checkpoint %s has format version %u, which this dpd (format %u) cannot resume "
                  "for this scene; delete it to start afresh", path, version, CHECKPOINT_VERSION);
         rc = -1;

@@ -35,14 +35,18 @@ static int predict_walls(System *s) { return predict_loop(s, 1, 0); }
 static int predict_shear(System *s) { return predict_loop(s, 0, 1); }
 static int predict_walls_shear(System *s) { return predict_loop(s, 1, 1); }
 
+double integrate_advance_offset(System *s)
+{
+    const double old_offset = s->box.le_offset;
+    const int k = box_advance(&s->box, s->dt);
+    if (MOD_ON(k != 0)) box_offset_wrapped(s->img, s->n, k);
+    return s->box.le_offset - old_offset + k * s->box.L[0];
+}
+
 double integrate_predict(System *s)
 {
     const double dt = s->dt;
-    const double old_offset = s->box.le_offset;
-    box_advance(&s->box, dt);
-    double doff = s->box.le_offset - old_offset;
-    if (doff < -s->box.half[0]) doff += s->box.L[0];      /* the offset wrapped through L_x */
-    else if (doff > s->box.half[0]) doff -= s->box.L[0];  /* ... or through 0 (negative rate) */
+    const double doff = integrate_advance_offset(s);
     const int walls = MOD_ON(s->n_frozen > 0), le = MOD_SHEAR(&s->box);
     /* a non-finite x means a non-finite v or f: the run stops (run.c) */
     if (walls && le) s->nonfinite = predict_walls_shear(s);

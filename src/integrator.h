@@ -10,6 +10,9 @@
 
 #include "system.h"
 
+/* The Lees-Edwards offset one step on (box_advance), with the image counters
+ * of its wraps (box_offset_wrapped); returns its change, rate L_y dt. */
+double integrate_advance_offset(System *s);
 /* Positions, half-kick and prediction; advances the Lees-Edwards offset and
  * wraps. Returns the change of the offset; s->nonfinite = the number of
  * particles whose position is not finite. */

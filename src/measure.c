@@ -214,9 +214,7 @@ static void sample_msd(Measure *m, const System *s, long long step)
     if (step % m->msd_origin_every == 0) {
         const int slot = (int)((step / m->msd_origin_every) % m->msd_norig);
         double *o = m->msd_origin_pos + (size_t)slot * 3 * n;
-        for (int i = 0; i < n; i++)
-            for (int d = 0; d < 3; d++)
-                o[3 * s->id[i] + d] = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d];
+        for (int i = 0; i < n; i++) box_unwrap(&s->box, s->x + 3 * i, s->img + 3 * i, o + 3 * s->id[i]);
         m->msd_origin_step[slot] = step;
         memset(m->msd_curve + (size_t)slot * G * L, 0, (size_t)G * L * sizeof(double));
     }
@@ -229,8 +227,10 @@ static void sample_msd(Measure *m, const System *s, long long step)
         for (int i = 0; i < n; i++) {
             const int g = m->msd_group_of_id[s->id[i]];
             if (g < 0) continue;
+            double u[3];
+            box_unwrap(&s->box, s->x + 3 * i, s->img + 3 * i, u);
             for (int d = 0; d < s->box.dim; d++) {
-                const double dd = s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d] - o[3 * s->id[i] + d];
+                const double dd = u[d] - o[3 * s->id[i] + d];
                 m->msd_gsum[g] += dd * dd;
             }
         }
@@ -252,8 +252,10 @@ static void sample_com(Measure *m, const System *s, long long sample)
     long long cnt = 0;
     for (int i = 0; i < s->n; i++) {
         if (s->types[s->type[i]].frozen) continue;
+        double u[3];
+        box_unwrap(&s->box, s->x + 3 * i, s->img + 3 * i, u);
         for (int d = 0; d < 3; d++) {
-            r[d] += s->x[3 * i + d] + s->img[3 * i + d] * s->box.L[d];
+            r[d] += u[d];
             v[d] += s->v[3 * i + d];
         }
         cnt++;

@@ -184,66 +184,73 @@ static double shell_measure(int dim, double q0, double q1)
     return dim == 3 ? 4.0 / 3.0 * M_PI * (q1 * q1 * q1 - q0 * q0 * q0) : M_PI * (q1 * q1 - q0 * q0);
 }
 
-/* g(q) of eq. 48 from histogram sums h over nsamp samples; the exclusion
- * radius is the lower edge of the first bin where g reaches the threshold. */
-static double exclusion_radius(const FieldMeasure *f, int dim, const double *h, long long nsamp)
+/* g(q) of eq. 48 from histogram sums h over nsamp samples; the radius is the
+ * lower edge of the first bin where g reaches the threshold. */
+static double radius_from(const AroundHist *a, const double *h, long long nsamp)
 {
-    for (int b = 0; b < f->around_bins; b++) {
-        const double q0 = b * f->around_dq;
-        const double g = h[b] / (nsamp * f->around_density * shell_measure(dim, q0, q0 + f->around_dq));
-        if (g >= f->around_threshold) return q0;
+    for (int b = 0; b < a->bins; b++) {
+        const double q0 = b * a->dq;
+        const double g = h[b] / (nsamp * a->density * shell_measure(a->dim, q0, q0 + a->dq));
+        if (g >= a->threshold) return q0;
     }
-    return f->around_bins * f->around_dq;
+    return a->bins * a->dq;
+}
+
+int around_write(const AroundHist *a, const char *path, FILE *summary, const char *name)
+{
+    const int B = a->nblocks, nb = a->bins;
+    double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
+    double *g = calloc((size_t)B + 1, sizeof(double)), *r = calloc((size_t)B + 1, sizeof(double));
+    FILE *out = all && loo && g && r ? fopen(path, "w") : NULL;
+    if (!out) { free(all); free(loo); free(g); free(r); return -1; }
+    long long ntot = 0;
+    for (int k = 0; k < B; k++) {
+        ntot += a->samples[k];
+        for (int b = 0; b < nb; b++) all[b] += a->hist[(size_t)k * nb + b];
+    }
+    fprintf(out, "q\tg\tg_se\n");
+    for (int b = 0; b < nb; b++) {
+        const double q0 = b * a->dq, sh = shell_measure(a->dim, q0, q0 + a->dq);
+        int used = 0;
+        for (int k = 0; k < B; k++)
+            if (a->samples[k] > 0)
+                g[used++] = a->hist[(size_t)k * nb + b] / (a->samples[k] * a->density * sh);
+        double mean, se;
+        block_stats(g, (size_t)used, used, &mean, &se);
+        fprintf(out, "%.6g\t%.6g\t%.3g\n", q0 + 0.5 * a->dq, mean, se);
+    }
+    /* jackknife over blocks: the crossing is a nonlinear function of g */
+    const double r_all = ntot > 0 ? radius_from(a, all, ntot) : NAN;
+    int used = 0;
+    double rbar = 0.0, var = 0.0;
+    for (int k = 0; k < B; k++) {
+        if (a->samples[k] == 0 || a->samples[k] == ntot) continue;
+        for (int b = 0; b < nb; b++) loo[b] = all[b] - a->hist[(size_t)k * nb + b];
+        r[used] = radius_from(a, loo, ntot - a->samples[k]);
+        rbar += r[used++];
+    }
+    if (used > 1) {
+        rbar /= used;
+        for (int k = 0; k < used; k++) var += (r[k] - rbar) * (r[k] - rbar);
+        var *= (used - 1.0) / used;
+    }
+    /* the radius is a bin edge: a uniform bin adds dq^2 / 12 to the jackknife
+     * variance (which is zero when every leave-one-out estimate lands on the
+     * same edge) */
+    var += a->dq * a->dq / 12.0;
+    fprintf(summary, "%s\t%.10g\t%.4g\n", name, r_all, used > 1 ? sqrt(var) : NAN);
+    free(all); free(loo); free(g); free(r);
+    return fclose(out);
 }
 
 static int write_around(const FieldMeasure *f, const System *s, FILE *summary, const char *dir)
 {
-    const int B = f->nblocks, nb = f->around_bins, dim = s->box.dim;
-    double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
-    double *g = calloc((size_t)B, sizeof(double)), *a = calloc((size_t)B, sizeof(double));
     char path[1024];
     snprintf(path, sizeof path, "%s/around.tsv", dir);
-    FILE *out = all && loo && g && a ? fopen(path, "w") : NULL;
-    if (!out) { free(all); free(loo); free(g); free(a); return -1; }
-    long long ntot = 0;
-    for (int k = 0; k < B; k++) {
-        ntot += f->around_samples[k];
-        for (int b = 0; b < nb; b++) all[b] += f->around_hist[(size_t)k * nb + b];
-    }
-    fprintf(out, "q\tg\tg_se\n");
-    for (int b = 0; b < nb; b++) {
-        const double q0 = b * f->around_dq, sh = shell_measure(dim, q0, q0 + f->around_dq);
-        int used = 0;
-        for (int k = 0; k < B; k++)
-            if (f->around_samples[k] > 0)
-                g[used++] = f->around_hist[(size_t)k * nb + b] / (f->around_samples[k] * f->around_density * sh);
-        double mean, se;
-        block_stats(g, (size_t)used, used, &mean, &se);
-        fprintf(out, "%.6g\t%.6g\t%.3g\n", q0 + 0.5 * f->around_dq, mean, se);
-    }
-    /* jackknife over blocks: the crossing is a nonlinear function of g */
-    const double a_all = exclusion_radius(f, dim, all, ntot);
-    int used = 0;
-    double abar = 0.0;
-    for (int k = 0; k < B; k++) {
-        if (f->around_samples[k] == 0 || f->around_samples[k] == ntot) continue;
-        for (int b = 0; b < nb; b++) loo[b] = all[b] - f->around_hist[(size_t)k * nb + b];
-        a[used] = exclusion_radius(f, dim, loo, ntot - f->around_samples[k]);
-        abar += a[used++];
-    }
-    double var = 0.0;
-    if (used > 1) {
-        abar /= used;
-        for (int k = 0; k < used; k++) var += (a[k] - abar) * (a[k] - abar);
-        var *= (used - 1.0) / used;
-    }
-    /* the radius is a bin edge: add the quantisation error of a uniform bin,
-     * dq / sqrt(12), to the jackknife variance (which is zero when every
-     * leave-one-out estimate lands on the same edge) */
-    var += f->around_dq * f->around_dq / 12.0;
-    fprintf(summary, "exclusion_radius\t%.10g\t%.4g\n", a_all, used > 1 ? sqrt(var) : NAN);
-    free(all); free(loo); free(g); free(a);
-    return fclose(out);
+    const AroundHist a = {.hist = f->around_hist, .samples = f->around_samples, .nblocks = f->nblocks,
+                          .bins = f->around_bins, .dim = s->box.dim, .dq = f->around_dq,
+                          .density = f->around_density, .threshold = f->around_threshold};
+    return around_write(&a, path, summary, "exclusion_radius");
 }
 
 static int write_density_map(const FieldMeasure *f, const System *s, const char *dir)

@@ -8,7 +8,7 @@
  *    mobile particles exert on each frozen type about its centroid (in
  *    rotation scenes measure.c reports the eq. 1 torque instead).
  * Errors: block standard errors; the exclusion radius, a threshold crossing,
- * gets a jackknife error over the blocks. */
+ * gets a jackknife error over the blocks plus the width of a bin (around_write). */
 #ifndef DPD_MEASURE_FIELD_H
 #define DPD_MEASURE_FIELD_H
 
@@ -36,6 +36,21 @@ typedef struct FieldMeasure {
     Series torque[DPD_MAX_TYPES][3];
     double centroid[DPD_MAX_TYPES][3];
 } FieldMeasure;
+
+/* Counts of a type in shells about centres (eq. 48), per block of samples:
+ * measure.around about a point, colloids2d.around about the colloid centres. */
+typedef struct {
+    const double *hist;           /* nblocks x bins */
+    const long long *samples;     /* per block: samples x centres */
+    int nblocks, bins, dim;
+    double dq, density, threshold;
+} AroundHist;
+
+/* The table q, g, g_se (block errors) into the file `path` and the summary
+ * row `name`: the lower edge of the first bin where g reaches the threshold,
+ * its error the jackknife over blocks plus the dq^2 / 12 of a bin (nan with
+ * fewer than two blocks). The one rule of exclusion_radius and colloid_radius. */
+int  around_write(const AroundHist *a, const char *path, FILE *summary, const char *name);
 
 /* Read measure.around, measure.density_map, measure.force_map from group g
  * (NULL: none of them). Returns 0, or -1 with the scene error set. */

@@ -38,9 +38,9 @@ static hid_t object_at(hid_t file, const char *path)
     return ensure_group(file, path);
 }
 
-int output_attr_text(Output *o, const char *group, const char *name, const char *value)
+static int attr_text(hid_t file, const char *group, const char *name, const char *value)
 {
-    hid_t g = object_at(o->file, group);
+    hid_t g = object_at(file, group);
     if (g < 0) return -1;
     hid_t t = H5Tcopy(H5T_C_S1);
     H5Tset_size(t, strlen(value) + 1);
@@ -51,6 +51,28 @@ int output_attr_text(Output *o, const char *group, const char *name, const char 
     if (a >= 0) H5Aclose(a);
     H5Sclose(sp); H5Tclose(t); H5Oclose(g);
     return rc < 0 ? -1 : 0;
+}
+
+int output_attr_text(Output *o, const char *group, const char *name, const char *value)
+{
+    return attr_text(o->file, group, name, value);
+}
+
+/* The /h5md group of an H5MD 1.1 file: run.h5 and every trajectory segment. */
+static int h5md_header(hid_t file)
+{
+    hid_t g = ensure_group(file, "/h5md");
+    if (g < 0) return -1;
+    int version[2] = {1, 1};
+    hsize_t two = 2;
+    hid_t sp = H5Screate_simple(1, &two, NULL);
+    hid_t a = H5Acreate2(g, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t rc = a >= 0 ? H5Awrite(a, H5T_NATIVE_INT, version) : -1;
+    if (a >= 0) H5Aclose(a);
+    H5Sclose(sp); H5Gclose(g);
+    if (rc < 0) return -1;
+    return attr_text(file, "/h5md/author", "name", "dpd reproducibility package")
+         | attr_text(file, "/h5md/creator", "name", "dpd") | attr_text(file, "/h5md/creator", "version", DPD_GIT);
 }
 
 int output_attr_double(Output *o, const char *group, const char *name, double value)
@@ -129,17 +151,33 @@ int output_tsv(Output *o, const char *path, const char *tsv_file)
     return rc;
 }
 
-int output_series(Output *o, const char *name, const double *v, size_t n, int every, double dt)
+int output_series(Output *o, const char *name, const double *v, size_t n, long long first_step, int every,
+                  double dt)
 {
     char path[512];
-    snprintf(path, sizeof path, "/observables/%s/value", name);
+    snprintf(path, sizeof path, "/series/%s/value", name);
     if (output_table(o, path, v, (int)n, 1, NULL)) return -1;
     double *st = malloc((n ? n : 1) * sizeof *st);
-    if (!st) return -1;
-    for (size_t k = 0; k < n; k++) st[k] = (double)k * every * dt;
-    snprintf(path, sizeof path, "/observables/%s/time", name);
+    long long *sp = malloc((n ? n : 1) * sizeof *sp);
+    if (!st || !sp) { free(st); free(sp); return -1; }
+    for (size_t k = 0; k < n; k++) {
+        sp[k] = first_step + (long long)k * every;
+        st[k] = (double)sp[k] * dt;
+    }
+    snprintf(path, sizeof path, "/series/%s/time", name);
     int rc = output_table(o, path, st, (int)n, 1, NULL);
     free(st);
+    /* the step of every sample, as H5MD time series have */
+    char leaf[256];
+    snprintf(path, sizeof path, "/series/%s/step", name);
+    hid_t g = rc ? -1 : parent_of(o, path, leaf, sizeof leaf);
+    if (g < 0) { free(sp); return -1; }
+    hsize_t dims[1] = {(hsize_t)n};
+    hid_t ds = H5Screate_simple(1, dims, NULL);
+    hid_t d = H5Dcreate2(g, leaf, H5T_NATIVE_LLONG, ds, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    rc = d >= 0 && (n == 0 || H5Dwrite(d, H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, sp) >= 0) ? 0 : -1;
+    if (d >= 0) H5Dclose(d);
+    H5Sclose(ds); H5Gclose(g); free(sp);
     return rc;
 }
 
@@ -159,7 +197,11 @@ static hid_t extensible(hid_t g, const char *name, hid_t type, int cols, int dim
 
 /* The H5MD trajectory group /particles/all of a file: box, species (in id
  * order like the frames) and the extensible position, velocity and image
- * datasets with their shared step and time. */
+ * datasets and box edges, all sharing position's step and time. The edges
+ * are a time series of D x D matrices (rows: the cell's edge vectors), as
+ * MDAnalysis's reader wants them and H5MD allows: with shear the cell is the
+ * sheared one, second edge (offset, L_y, 0), whose lattice is the
+ * Lees-Edwards images', so position + image . edges unwraps (box.h). */
 static int traj_create(hid_t file, const System *s, hid_t h[TRAJ_SETS])
 {
     hid_t box = ensure_group(file, "/particles/all/box");
@@ -176,10 +218,7 @@ static int traj_create(hid_t file, const System *s, hid_t h[TRAJ_SETS])
     char bnd[3][9] = {"periodic", "periodic", "periodic"};
     hid_t ab = H5Acreate2(box, "boundary", st, spn, H5P_DEFAULT, H5P_DEFAULT);
     H5Awrite(ab, st, bnd);
-    H5Aclose(ab); H5Tclose(st);
-    hid_t de = H5Dcreate2(box, "edges", H5T_NATIVE_DOUBLE, spn, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dwrite(de, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, s->box.L);
-    H5Dclose(de); H5Sclose(spn); H5Gclose(box);
+    H5Aclose(ab); H5Tclose(st); H5Sclose(spn); H5Gclose(box);
     int *sp_id = malloc((size_t)s->n * sizeof(int) + 1);
     if (!sp_id) return -1;
     for (int i = 0; i < s->n; i++) sp_id[s->id[i]] = s->type[i];
@@ -194,16 +233,16 @@ static int traj_create(hid_t file, const System *s, hid_t h[TRAJ_SETS])
     h[TRAJ_STEP] = extensible(pg, "step", H5T_NATIVE_LLONG, 0, 1);
     h[TRAJ_TIME] = extensible(pg, "time", H5T_NATIVE_DOUBLE, 0, 1);
     H5Gclose(pg);
-    hid_t vg = ensure_group(file, "/particles/all/velocity");
-    h[TRAJ_VEL] = extensible(vg, "value", H5T_NATIVE_DOUBLE, s->n, dim);
-    H5Lcreate_hard(file, "/particles/all/position/step", vg, "step", H5P_DEFAULT, H5P_DEFAULT);
-    H5Lcreate_hard(file, "/particles/all/position/time", vg, "time", H5P_DEFAULT, H5P_DEFAULT);
-    H5Gclose(vg);
-    hid_t ig = ensure_group(file, "/particles/all/image");
-    h[TRAJ_IMG] = extensible(ig, "value", H5T_NATIVE_INT, s->n, dim);
-    H5Lcreate_hard(file, "/particles/all/position/step", ig, "step", H5P_DEFAULT, H5P_DEFAULT);
-    H5Lcreate_hard(file, "/particles/all/position/time", ig, "time", H5P_DEFAULT, H5P_DEFAULT);
-    H5Gclose(ig);
+    static const char *shared[] = {"/particles/all/velocity", "/particles/all/image", "/particles/all/box/edges"};
+    for (int k = 0; k < 3; k++) {
+        hid_t g = ensure_group(file, shared[k]);
+        if (g < 0) return -1;
+        const int q = k == 0 ? TRAJ_VEL : k == 1 ? TRAJ_IMG : TRAJ_BOX;
+        h[q] = extensible(g, "value", q == TRAJ_IMG ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE, q == TRAJ_BOX ? dim : s->n, dim);
+        H5Lcreate_hard(file, "/particles/all/position/step", g, "step", H5P_DEFAULT, H5P_DEFAULT);
+        H5Lcreate_hard(file, "/particles/all/position/time", g, "time", H5P_DEFAULT, H5P_DEFAULT);
+        H5Gclose(g);
+    }
     for (int k = 0; k < TRAJ_SETS; k++) if (h[k] < 0) return -1;
     return 0;
 }
@@ -227,18 +266,7 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     if (!getenv("DPD_HDF5_DEBUG")) H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     o->file = H5Fcreate(o->tmp_path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (o->file < 0) return -1;
-    /* H5MD root metadata */
-    hid_t g = ensure_group(o->file, "/h5md");
-    if (g < 0) return -1;
-    int version[2] = {1, 1};
-    hsize_t two = 2;
-    hid_t sp = H5Screate_simple(1, &two, NULL);
-    hid_t a = H5Acreate2(g, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(a, H5T_NATIVE_INT, version);
-    H5Aclose(a); H5Sclose(sp); H5Gclose(g);
-    output_attr_text(o, "/h5md/author", "name", "dpd reproducibility package");
-    output_attr_text(o, "/h5md/creator", "name", "dpd");
-    output_attr_text(o, "/h5md/creator", "version", DPD_GIT);
+    if (h5md_header(o->file)) return -1;
     o->traj_on = trajectory;
     o->segmented = trajectory;
     if (trajectory && traj_create(o->file, s, o->traj)) return -1;
@@ -275,7 +303,17 @@ static int read_frame(hid_t d, hid_t type, long long frame, int cols, int dim, v
 
 static const char *SET_PATH[TRAJ_SETS] = {
     "/particles/all/position/value", "/particles/all/velocity/value", "/particles/all/image/value",
-    "/particles/all/position/step", "/particles/all/position/time"};
+    "/particles/all/box/edges/value", "/particles/all/position/step", "/particles/all/position/time"};
+
+/* Rows of one frame of each set (0: a scalar per frame), and its type. */
+static int set_rows(int q, const System *s)
+{
+    return q == TRAJ_BOX ? s->box.dim : q == TRAJ_STEP || q == TRAJ_TIME ? 0 : s->n;
+}
+static hid_t set_type(int q)
+{
+    return q == TRAJ_IMG ? H5T_NATIVE_INT : q == TRAJ_STEP ? H5T_NATIVE_LLONG : H5T_NATIVE_DOUBLE;
+}
 
 static void segment_path(const Output *o, int k, int part, char *buf, size_t len)
 {
@@ -294,7 +332,7 @@ int output_frame(Output *o, const System *s)
             char part[1100];
             segment_path(o, o->nseg, 1, part, sizeof part);
             o->seg_file = H5Fcreate(part, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-            if (o->seg_file < 0 || traj_create(o->seg_file, s, o->seg)) return -1;
+            if (o->seg_file < 0 || h5md_header(o->seg_file) || traj_create(o->seg_file, s, o->seg)) return -1;
             o->seg_frames = 0;
         }
         h = o->seg;
@@ -312,6 +350,10 @@ int output_frame(Output *o, const System *s)
     rc |= append(h[TRAJ_VEL], H5T_NATIVE_DOUBLE, at, n, dim, buf);
     for (int i = 0; i < n; i++) memcpy(ib + dim * s->id[i], s->img + 3 * i, dim * sizeof(int));
     rc |= append(h[TRAJ_IMG], H5T_NATIVE_INT, at, n, dim, ib);
+    double edges[9] = {0};   /* rows: the edge vectors; the y edge carries the Lees-Edwards offset */
+    for (int d = 0; d < dim; d++) edges[d * dim + d] = s->box.L[d];
+    if (MOD_SHEAR(&s->box)) edges[dim] = s->box.le_offset;
+    rc |= append(h[TRAJ_BOX], H5T_NATIVE_DOUBLE, at, dim, dim, edges);
     long long st = (long long)s->step;
     rc |= append(h[TRAJ_STEP], H5T_NATIVE_LLONG, at, 0, 1, &st);
     rc |= append(h[TRAJ_TIME], H5T_NATIVE_DOUBLE, at, 0, 1, &s->time);
@@ -423,10 +465,9 @@ int output_segments_merge(Output *o, const System *s)
     if (!o->segmented) return 0;
     if (output_segment_commit(o)) return -1;
     const int n = s->n, dim = s->box.dim;
-    double *buf = malloc(3 * (size_t)n * sizeof(double) + 1);
+    double *buf = malloc((3 * (size_t)n + 9) * sizeof(double));   /* a frame, or the 3 x 3 edges */
     int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
     if (!buf || !ib) { free(buf); free(ib); return -1; }
-    static const int cols[TRAJ_SETS] = {1, 1, 1, 0, 0};
     long long at = 0;
     int rc = 0;
     for (int k = 0; k < o->nseg && rc == 0; k++) {
@@ -442,10 +483,10 @@ int output_segments_merge(Output *o, const System *s)
         }
         for (long long fr = 0; fr < nf && rc == 0; fr++, at++)
             for (int q = 0; q < TRAJ_SETS && rc == 0; q++) {
-                const hid_t type = q == TRAJ_IMG ? H5T_NATIVE_INT : q == TRAJ_STEP ? H5T_NATIVE_LLONG : H5T_NATIVE_DOUBLE;
+                const int rows = set_rows(q, s);
                 void *b = q == TRAJ_IMG ? (void *)ib : (void *)buf;
-                rc |= read_frame(h[q], type, fr, cols[q] ? n : 0, cols[q] ? dim : 1, b);
-                rc |= append(o->traj[q], type, at, cols[q] ? n : 0, cols[q] ? dim : 1, b);
+                rc |= read_frame(h[q], set_type(q), fr, rows, rows ? dim : 1, b);
+                rc |= append(o->traj[q], set_type(q), at, rows, rows ? dim : 1, b);
             }
         traj_close(h);
         H5Fclose(f);

@@ -7,8 +7,9 @@
 #include <hdf5.h>
 #include "system.h"
 
-/* trajectory datasets: position, velocity, image (frames x n x dim), step, time (frames) */
-enum { TRAJ_POS, TRAJ_VEL, TRAJ_IMG, TRAJ_STEP, TRAJ_TIME, TRAJ_SETS };
+/* trajectory datasets: position, velocity, image (frames x n x dim), box edges
+ * (frames x dim x dim), step, time (frames) */
+enum { TRAJ_POS, TRAJ_VEL, TRAJ_IMG, TRAJ_BOX, TRAJ_STEP, TRAJ_TIME, TRAJ_SETS };
 
 /* A run with a trajectory writes its frames into segment files
  * DIR/trajectory-NNNN.h5 (each a valid H5MD file, written as
@@ -53,7 +54,11 @@ int  output_table(Output *o, const char *path, const double *data, int rows, int
                   const char *columns);
 /* Copy a tab-separated text file (header line + numbers) into a dataset. */
 int  output_tsv(Output *o, const char *path, const char *tsv_file);
-int  output_series(Output *o, const char *name, const double *v, size_t n, int every, double dt);
+/* /series/NAME: value, and the step and time of sample k, first_step + k every. Not
+ * /observables: H5MD readers such as MDAnalysis take those to be sampled with the
+ * trajectory's frames (they read value[frame]), which the measurements are not. */
+int  output_series(Output *o, const char *name, const double *v, size_t n, long long first_step, int every,
+                   double dt);
 int  output_close(Output *o, int complete);
 
 /* Write text to dir/name atomically (temp file, fsync, rename). */

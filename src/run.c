@@ -111,7 +111,8 @@ static void provenance_text(char **buf, size_t *len, const RunOptions *opt, cons
 }
 
 static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s,
-                    const Measure *m, const RunStats *st, const char *prov, const char *summary)
+                    const Measure *m, const RunStats *st, const char *prov, const char *summary,
+                    long long first_step)
 {
     int rc = 0;
     rc |= output_attr_text(o, "/results", "summary_tsv", summary);
@@ -134,13 +135,13 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
     }
     free(copy);
     for (int k = 0; k < T_COUNT; k++) rc |= output_attr_double(o, "/timers", TIMER_NAMES[k], st->timers[k]);
-    rc |= output_series(o, "temperature", m->temperature.v, m->temperature.n, m->every, s->dt);
-    rc |= output_series(o, "pressure", m->pressure.v, m->pressure.n, m->every, s->dt);
+    rc |= output_series(o, "temperature", m->temperature.v, m->temperature.n, first_step, m->every, s->dt);
+    rc |= output_series(o, "pressure", m->pressure.v, m->pressure.n, first_step, m->every, s->dt);
     static const char *parts[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
     for (int p = 0; p < STRESS_PARTS; p++) {
         char name[64];
         snprintf(name, sizeof name, "pressure_yx_%s", parts[p]);
-        rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, m->every, s->dt);
+        rc |= output_series(o, name, m->P[p][3].v, m->P[p][3].n, first_step, m->every, s->dt);
     }
     /* torque and drag on frozen types, sample by sample: their correlation time checks the blocking */
     if (s->rotation)
@@ -149,9 +150,9 @@ static int write_h5(Output *o, const RunOptions *opt, Scene *sc, const System *s
             for (int d = 0; d < 3; d++) {
                 char name[96];
                 snprintf(name, sizeof name, "torque_on_%s_%c", s->types[t].name, "xyz"[d]);
-                rc |= output_series(o, name, m->frozen_torque[t][d].v, m->frozen_torque[t][d].n, m->every, s->dt);
+                rc |= output_series(o, name, m->frozen_torque[t][d].v, m->frozen_torque[t][d].n, first_step, m->every, s->dt);
                 snprintf(name, sizeof name, "drag_on_%s_%c", s->types[t].name, "xyz"[d]);
-                rc |= output_series(o, name, m->frozen_drag[t][d].v, m->frozen_drag[t][d].n, m->every, s->dt);
+                rc |= output_series(o, name, m->frozen_drag[t][d].v, m->frozen_drag[t][d].n, first_step, m->every, s->dt);
             }
         }
     double *fin = checkpoint_final_state(s);
@@ -240,7 +241,7 @@ static void confine(System *s, const RunConfig *rc)
 static void overdamped_move(System *s)
 {
     const double dt = s->dt;
-    box_advance(&s->box, dt);
+    integrate_advance_offset(s);
     int bad = 0;
     #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
@@ -640,7 +641,10 @@ int run_scene(const RunOptions *opt)
         if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
         if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
         if (status == 0 && output_segments_merge(&out, &s)) status = 4;   /* the trajectory */
-        if (status == 0 && write_h5(&out, opt, &sc, &s, &m, &st, prov, sum)) status = 4;
+        /* the step of the first sample: production step 0, which the inertial loop first
+         * reaches after a step, so never when there is no equilibration */
+        const long long first = rc.equilibration + (rc.equilibration == 0 && !rc.overdamped ? m.every : 0);
+        if (status == 0 && write_h5(&out, opt, &sc, &s, &m, &st, prov, sum, first)) status = 4;
         free(sum);
         free(prov);
         if (status == 4) fprintf(stderr, "dpd: writing the results in '%s' failed\n", opt->outdir);

@@ -14,7 +14,7 @@
 # 2 2 2 for the TCAF scene, which test_threads checks on 1 and 2 threads).
 # The resumed m = 0 run keeps every solver CPU-time sample (solver.tsv cpu_seconds, issue 24).
 # Every resumed run must equal ref bit for bit: /results/final_state
-# (positions, images, velocities by particle id) and /observables of run.h5
+# (positions, images, velocities by particle id) and the time series (/series) of run.h5
 # by h5diff (exact), profile/rdf/msd tables by cmp, summary.tsv without its
 # timing rows. Trajectory output (H5MD) across a SIGKILL and a SIGTERM: the
 # resumed /particles equal the uninterrupted ones (no frame lost or doubled).
@@ -35,7 +35,7 @@ same_run() {   # same_run REF DIR: bit-identical results
     local r=$1 d=$2 t
     [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] || { echo "  $d: no complete result"; return 1; }
     h5diff -q "$r/run.h5" "$d/run.h5" /results/final_state || { echo "  final_state differs"; return 1; }
-    h5diff -q "$r/run.h5" "$d/run.h5" /observables || { echo "  observables differ"; return 1; }
+    h5diff -q "$r/run.h5" "$d/run.h5" /series || { echo "  time series differ"; return 1; }
     for t in profile rdf msd around density_map colloid_msd colloid_around colloid_rdf tcaf tcaf_eta tcaf_extrapolation; do
         [ -e "$r/$t.tsv" ] || continue
         cmp -s "$r/$t.tsv" "$d/$t.tsv" || { echo "  $t.tsv differs"; return 1; }
@@ -142,25 +142,28 @@ check "checkpoint of another scene: status 2, no result" test $st -eq 2 -a ! -e 
 check "checkpoint of another scene: message" grep -q 'written for another scene' "$tmp/err"
 
 # checkpoint format versions: a version 1, 2 or 3 file of a scene without MSD,
-# spins, rigid bodies, TCAF, trajectory or m = 0 solver (the shear scene without
-# its MSD) still resumes (same layout); one of a rotation scene cannot (version 1
-# had no spins), nor a version 2 one of an MSD scene (version 3 keeps the MSD per
-# particle group), nor a version 3 one of an m = 0 scene (version 4 keeps the
-# solver's CPU time per step), nor one of a future format (reseal: tests/shlib.sh)
+# spins, rigid bodies, TCAF, trajectory, shear or m = 0 solver (the shear scene
+# without its MSD and its shear) still resumes (same layout); one of a rotation
+# scene cannot (version 1 had no spins), nor a version 2 one of an MSD scene
+# (version 3 keeps the MSD per particle group), nor a version 3 one of an m = 0
+# scene (version 4 keeps the solver's CPU time per step) or of a sheared scene
+# (version 4 counts the offset's wraps in the image counters), nor one of a
+# future format (reseal: tests/shlib.sh)
 sed '/msd = {/d; s/rdf = { rmax = 1.0; bins = 20; every = 10; };/&  };/' "$scene" > "$tmp/plain.cfg"
-"$DPD" run "$tmp/plain.cfg" --out "$tmp/plain-ref" --threads 1 --quiet 2>"$tmp/err"
-check "plain scene (shear, no MSD): reference run" test $? -eq 0
+still=(--set shear_rate=0.0)
+"$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/plain-ref" --threads 1 --quiet 2>"$tmp/err"
+check "plain scene (no MSD, no shear): reference run" test $? -eq 0
 rm -rf "$tmp/old"
-"$DPD" run "$tmp/plain.cfg" --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+"$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/old/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
 for v in 4 3 2 1; do
     rm -rf "$tmp/v$v"; cp -r "$tmp/old" "$tmp/v$v"
     reseal "$tmp/v$v/checkpoint.dpd" $v
-    "$DPD" run "$tmp/plain.cfg" --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
+    "$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
 done
 check "reseal control: the rewritten version 4 checkpoint resumes (checksum right)" same_run "$tmp/plain-ref" "$tmp/v4"
 for v in 3 2 1; do
-    check "version $v checkpoint of a scene without MSD or m = 0: resumes, bit for bit" same_run "$tmp/plain-ref" "$tmp/v$v"
+    check "version $v checkpoint of a scene without MSD, shear or m = 0: resumes, bit for bit" same_run "$tmp/plain-ref" "$tmp/v$v"
 done
 # refused_version NAME SCENE DIR VERSION: the checkpoint in DIR resealed as VERSION is refused
 refused_version() {
@@ -176,6 +179,10 @@ rm -rf "$tmp/v3m0"
 "$DPD" run tests/$c.cfg --out "$tmp/v3m0" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v3m0/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
 refused_version "an m = 0 scene" tests/$c.cfg "$tmp/v3m0" 3
+rm -rf "$tmp/v3s"
+"$DPD" run "$tmp/plain.cfg" --out "$tmp/v3s" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$tmp/v3s/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
+refused_version "a sheared scene" "$tmp/plain.cfg" "$tmp/v3s" 3
 rm -rf "$tmp/v1r" "$tmp/v5"
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
@@ -221,6 +228,15 @@ rm -f "$d/trajectory-0000.h5"
 "$DPD" run "$scene" "${traj[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
 check "trajectory: missing segment: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
 check "trajectory: missing segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 of the checkpoint is missing' "$tmp/err"
+# a format 3 checkpoint of a trajectory scene (without shear, which alone refuses it): its segments
+# have no box edges per frame, refused
+d=$tmp/traj-v3
+"$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$d/trajectory-0000.h5" $pid; kill -TERM $pid; wait $pid
+reseal "$d/checkpoint.dpd" 3
+"$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+check "trajectory: format 3 checkpoint: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: format 3 checkpoint: message" grep -q 'format version 3, which this dpd (format 4) cannot resume' "$tmp/err"
 
 # the harness with the real simulator: tools/run-experiment of an experiment with a rotation, a
 # 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run; the local pool runs them at once, each

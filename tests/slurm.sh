@@ -9,7 +9,7 @@
 #    simulator is deterministic, so any difference is a bug;
 #  - one running job, cancelled with scancel (SIGTERM: the simulator writes a checkpoint) and
 #    requeued with scontrol requeue, resumes from its checkpoint (its provenance says at which
-#    step) and gives bit-identical results: its tables, and its run.h5 observables and final
+#    step) and gives bit-identical results: its tables, and its run.h5 time series and final
 #    state (h5diff) against the local pool's uninterrupted run.
 # Exit status: 0 when every check passes. Needs: slurm-wlm, munge (tools/deps slurm).
 set -uo pipefail
@@ -104,7 +104,7 @@ for e in "${EXPS[@]}"; do
     [ $d = 0 ] && ok "$e: every simulation's tables identical (but measured times)" || bad "$e: a simulation differs"
 done
 a=$tmp/local/results/${EXPS[0]}/quick/runs/$VICTIM/run.h5 b=$tmp/slurm/results/${EXPS[0]}/quick/runs/$VICTIM/run.h5
-for g in /observables /results/final_state /results/profile; do
+for g in /series /results/final_state /results/profile; do
     if h5diff -q "$a" "$b" "$g" "$g" >/dev/null 2>&1; then ok "$VICTIM (cancelled, requeued): run.h5 $g bit-identical"
     else bad "$VICTIM: run.h5 $g differs"; h5diff -r "$a" "$b" "$g" "$g" 2>&1 | head -8; fi
 done

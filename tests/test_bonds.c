@@ -13,12 +13,14 @@
  *    mode relaxes at lambda = (H + a) / (gamma w_D(r*)) and Euler (eq. 28) is
  *    stable for dt < 2 / lambda (at H = 1000: 0.00758). */
 #include "testutil.h"
+#include "runutil.h"
 #include "system.h"
 #include "box.h"
 #include "neighbor.h"
 #include "forces.h"
 #include "overdamped.h"
 #include "bonds.h"
+#include "measure_field.h"
 
 #define A_REP 18.5
 #define GAMMA 4.5
@@ -324,6 +326,123 @@ static void colloid_on_a_frozen_body_is_pushed_out(void **state)
     free_col(&c);
 }
 
+/* A colloid of m = 1 particles alone in a sheared box (nothing else, no
+ * thermostat: a = gamma = 0, the springs are the only force) drifts at v = (0.3, 1.0) through the
+ * y boundary again and again while the springs keep it together. Its centre
+ * is its centre of mass, which the springs do not move: in the infinite
+ * sheared system it travels in a straight line, so the centre MSD of
+ * colloid_msd.tsv is |v|^2 t^2 = 1.09 t^2 at every lag (to its 8 printed
+ * digits). With x + img L the centre jumps by the offset at each crossing. */
+static void sheared_colloid_centre_moves_straight(void **state)
+{
+    (void)state;
+    const char *text =
+        "dimension = 2;\n"
+        "box = [4.0, 4.0];\n"
+        "kBT = 1.0;\n"
+        "dt = 0.005;\n"
+        "seed = 52;\n"
+        "equilibration = 0;\n"
+        "steps = 4000;\n"
+        "shear_rate = 1.0;\n"
+        "max_temperature_ratio = 1e6;\n"   /* a free particle falls behind the flow it crosses */
+        "types = ( { name = \"colloid\"; count = 3; velocity = [0.3, 1.0]; } );\n"
+        "pairs = ( { types = [\"colloid\", \"colloid\"]; a = 0.0; gamma = 0.0; rc = 1.0; } );\n"
+        "colloids2d = { type = \"colloid\"; count = 1; side = 0.25; H = 1000.0; every = 10; msd_window = 1000; };\n"
+        "measure = { every = 10; };\n";
+    char dir[512], out[600], path[700];
+    const int rc = run_scene_text("bonds-shear", text, dir, sizeof dir, out, sizeof out);
+    snprintf(path, sizeof path, "%s/colloid_msd.tsv", out);
+    FILE *f = fopen(path, "r");
+    int rows = 0;
+    double worst = 0.0;
+    if (f) {
+        char line[256];
+        double t, msd;
+        while (fgets(line, sizeof line, f))
+            if (sscanf(line, "%lf\t%lf", &t, &msd) == 2) {
+                rows++;
+                worst = fmax(worst, fabs(msd / (t * t) / 1.09 - 1.0));
+            }
+        fclose(f);
+    }
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && rows == 100, "status %d, %d rows of colloid_msd.tsv", rc, rows);
+    CHECK_ABS("sheared free colloid: largest |msd / (|v|^2 t^2) - 1| over the lags", worst, 0.0, 1e-6);
+}
+
+/* The two radii of eq. 48, colloid_radius (colloids2d.around, about the
+ * colloid centres) and exclusion_radius (measure.around, about a point), are
+ * the lower edge of the first bin where g reaches the threshold, with one
+ * error rule: the jackknife variance over blocks plus the dq^2 / 12 of a
+ * uniform bin (the radius is only known to a bin). An ideal solvent (no
+ * interaction with anything) fills the first bin (dq = 0.2: 0.5 particles per
+ * sample, 20 samples per block) in every block: both radii are 0 with a zero
+ * jackknife variance, so both errors must be dq / sqrt(12) exactly. */
+static void around_radii_share_one_error_rule(void **state)
+{
+    (void)state;
+    const char *text =
+        "dimension = 2;\n"
+        "box = [6.0, 6.0];\n"
+        "kBT = 1.0;\n"
+        "dt = 0.01;\n"
+        "seed = 53;\n"
+        "equilibration = 0;\n"
+        "steps = 2000;\n"
+        "types = ( { name = \"solvent\"; count = 144; }, { name = \"colloid\"; count = 3; } );\n"
+        "pairs = ( { types = [\"solvent\", \"solvent\"]; a = 0.0; gamma = 0.0; interact = false; },\n"
+        "          { types = [\"solvent\", \"colloid\"]; a = 0.0; gamma = 0.0; interact = false; },\n"
+        "          { types = [\"colloid\", \"colloid\"]; a = 0.0; gamma = 0.0; rc = 1.0; } );\n"
+        "colloids2d = { type = \"colloid\"; count = 1; side = 0.25; H = 1000.0; every = 10; msd_window = 100;\n"
+        "               around = { type = \"solvent\"; dq = 0.2; qmax = 2.0; }; };\n"
+        "measure = { every = 10; blocks = 10;\n"
+        "            around = { centre = [3.0, 3.0]; type = \"solvent\"; dq = 0.2; qmax = 2.0; }; };\n";
+    char dir[512], out[600];
+    const int rc = run_scene_text("around-rule", text, dir, sizeof dir, out, sizeof out);
+    double ac = NAN, ac_se = NAN, ae = NAN, ae_se = NAN;
+    const int got = summary_get(out, "colloid_radius", &ac, &ac_se) | summary_get(out, "exclusion_radius", &ae, &ae_se);
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && got == 0, "status %d, radii in summary.tsv: %s", rc, got ? "no" : "yes");
+    CHECK_ABS("exclusion_radius of an ideal solvent", ae, 0.0, 0.0);
+    CHECK_ABS("colloid_radius of an ideal solvent", ac, 0.0, 0.0);
+    CHECK_REL("exclusion_radius error: dq / sqrt(12)", ae_se, 0.2 / sqrt(12.0), 1e-3);
+    CHECK_REL("colloid_radius error: dq / sqrt(12)", ac_se, 0.2 / sqrt(12.0), 1e-3);
+}
+
+/* around_write, the rule both radii use, on a hand-made histogram with a
+ * nonzero jackknife: 2D, dq = 1, density 1/pi (shells hold 1, 3, 5 particles
+ * at g = 1), threshold 0.45, three blocks of one sample each with counts
+ * (0, 0, 5), (0, 3, 5), (1, 3, 5). All blocks: g = 1/3, 2/3 -> radius 1.
+ * Leaving out each block: g0 = 1/2, 1/2, 0 (then g1 = 1/2) -> radii 0, 0, 1;
+ * jackknife variance (2/3) sum (r - 1/3)^2 = 4/9, plus 1/12: se = sqrt(19)/6. */
+static void around_write_rule_by_hand(void **state)
+{
+    (void)state;
+    const double hist[9] = {0, 0, 5, 0, 3, 5, 1, 3, 5};
+    const long long samples[3] = {1, 1, 1};
+    const AroundHist a = {.hist = hist, .samples = samples, .nblocks = 3, .bins = 3, .dim = 2,
+                          .dq = 1.0, .density = 1.0 / M_PI, .threshold = 0.45};
+    char dir[512], table[600], line[256], name[64];
+    make_tmpdir(dir, sizeof dir, "around-write");
+    snprintf(table, sizeof table, "%s/around.tsv", dir);
+    FILE *sum = tmpfile();
+    assert_non_null(sum);
+    const int rc = around_write(&a, table, sum, "radius");
+    rewind(sum);
+    double r = NAN, se = NAN;
+    const int got = fgets(line, sizeof line, sum) && sscanf(line, "%63[^\t]\t%lf\t%lf", name, &r, &se) == 3;
+    fclose(sum);
+    FILE *t = fopen(table, "r");
+    int rows = 0;
+    while (t && fgets(line, sizeof line, t)) rows++;
+    if (t) fclose(t);
+    rm_rf(dir);
+    CHECK_TRUE(rc == 0 && got && !strcmp(name, "radius") && rows == 4, "status %d, row read %d, table rows %d", rc, got, rows);
+    CHECK_ABS("radius", r, 1.0, 0.0);
+    CHECK_REL("error: jackknife plus dq^2 / 12", se, sqrt(19.0) / 6.0, 1e-3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -332,6 +451,9 @@ int main(void)
         cmocka_unit_test(largest_stable_dt_at_H1000),
         cmocka_unit_test(coincident_particles_give_no_nan),
         cmocka_unit_test(colloid_on_a_frozen_body_is_pushed_out),
+        cmocka_unit_test(sheared_colloid_centre_moves_straight),
+        cmocka_unit_test(around_radii_share_one_error_rule),
+        cmocka_unit_test(around_write_rule_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

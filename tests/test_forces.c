@@ -380,6 +380,52 @@ static void le_offset_increment(void **state)
         }
 }
 
+/* A free particle (no force) in a sheared box crosses the y boundary again and
+ * again while the offset wraps through L_x. Its unwrapped position
+ * (box_unwrap: what the MSD, the centre of mass and the colloid centres use)
+ * must be its straight line in the infinite sheared system, x0 + v0 t, v0 its
+ * velocity in the box it started in: the image it moves into travels with it,
+ * so its velocity in the primary box jumps by -+ rate L_y and its lab velocity
+ * does not. x + img L alone jumps by the offset at every crossing.
+ * Tolerance: 6000 steps of x += v dt (|x| < 300): 6000 x 300 eps ~ 4e-10. */
+static void lees_edwards_unwrapped_continuous(void **state)
+{
+    (void)state;
+    const double L[3] = {10.0, 8.0, 6.0};
+    const double rates[] = {0.3, -0.45};
+    const double v0[2][3] = {{0.7, 1.9, -0.4}, {-1.1, -2.3, 0.2}};
+    for (int a = 0; a < 2; a++) {
+        System s;
+        make_system(&s, 3, 2, L, rates[a], 0.0, 0.0, 0.5, 1.0, 81);
+        double x0[2][3];
+        for (int i = 0; i < 2; i++)
+            for (int d = 0; d < 3; d++) {
+                s.x[3 * i + d] = x0[i][d] = (0.3 + 0.4 * i) * L[d];
+                s.v[3 * i + d] = s.v_pred[3 * i + d] = v0[i][d];
+            }
+        int crossings = 0, wraps = 0, yimg[2] = {0, 0};
+        double worst = 0.0, last_offset = s.box.le_offset;
+        for (int k = 1; k <= 6000; k++) {
+            integrate_predict(&s);   /* no force: the half kicks add nothing */
+            wraps += fabs(s.box.le_offset - last_offset) > 0.5 * L[0];
+            last_offset = s.box.le_offset;
+            for (int i = 0; i < 2; i++) {
+                crossings += s.img[3 * i + 1] != yimg[i];
+                yimg[i] = s.img[3 * i + 1];
+                double u[3];
+                box_unwrap(&s.box, s.x + 3 * i, s.img + 3 * i, u);
+                for (int d = 0; d < 3; d++) worst = fmax(worst, fabs(u[d] - (x0[i][d] + v0[i][d] * k * s.dt)));
+            }
+        }
+        system_free(&s);
+        char what[160];
+        snprintf(what, sizeof what, "rate %g: %d crossings, %d offset wraps: largest |unwrapped - x0 - v0 t|",
+                 rates[a], crossings, wraps);
+        CHECK_TRUE(crossings >= 10 && wraps >= 5, "%s: too few to test", what);
+        CHECK_ABS(what, worst, 0.0, 1e-9);
+    }
+}
+
 /* ---------------------------------------------------------- neighbour list */
 
 /* Every pair within rc (min image) is in the list exactly once, and every
@@ -582,6 +628,7 @@ int main(void)
         cmocka_unit_test(lees_edwards_min_image),
         cmocka_unit_test(lees_edwards_wrap),
         cmocka_unit_test(le_offset_increment),
+        cmocka_unit_test(lees_edwards_unwrapped_continuous),
         cmocka_unit_test(neighbor_list_shear_vs_brute),
         cmocka_unit_test(neighbor_list_shear_dynamics),
         cmocka_unit_test(ik_distribute_hand),

@@ -143,12 +143,12 @@ get() {
         || { echo "exp.sh: quantity '$2' missing in run '$1'" >&2; return 1; }
 }
 
-# h5_series NAME OBSERVABLE: the samples of /observables/OBSERVABLE in run NAME's run.h5,
+# h5_series NAME SERIES: the samples of /series/SERIES in run NAME's run.h5,
 # one per line at full precision (run.h5 is removed when the experiment is complete:
 # keep what the analysis needs from it in a table of the run)
 h5_series() {
     local f; f=$(mktemp)
-    h5dump -d "/observables/$2/value" -y -w 1 -m '%.17g' -o "$f" "$OUT/runs/$1/run.h5" >/dev/null \
+    h5dump -d "/series/$2/value" -y -w 1 -m '%.17g' -o "$f" "$OUT/runs/$1/run.h5" >/dev/null \
         || { rm -f "$f"; echo "exp.sh: no series $2 in run $1" >&2; return 1; }
     tr -d ' ,' < "$f" | grep .; rm -f "$f"
 }
