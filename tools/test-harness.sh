@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# tools/test-harness.sh -- self-test of tools/check, tools/mkpaper and
-# tools/render-paper on a fixture tree built in a temporary directory.
+# tools/test-harness.sh -- self-test of tools/check, the paper filter (tools/lib/paper-filter.lua,
+# run by tools/render-paper) and the run-experiment tools on a fixture tree built in a temporary directory.
 # usage: tools/test-harness.sh [-k]   (-k: keep the fixture and print its path)
 set -uo pipefail
 tools=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)
@@ -193,52 +193,62 @@ has "check: default run count" '^6 passed, 8 failed, 1 unresolved'
 lacks "check: no awk errors" 'awk:'
 T "check: bad option" 2 "$C" --bogus
 
-# ---------------------------------------------------------------- mkpaper
-M="$tools/mkpaper"; G="$root/build/paper.gen.md"
-T "mkpaper: builds the fixture paper" 0 "$M"
-has "mkpaper: counts the placeholder awaiting the quick tier" '^mkpaper: 1 placeholder(s) await the quick tier of 1 experiment(s)'
+# ---------------------------------------------------------------- the paper filter
+# M [-i IN] [-o OUT.md]: tools/render-paper's markdown output of the filter (default OUT: $G),
+# made greppable: pandoc's escapes dropped and runs of spaces (table padding) made one
+G="$root/build/paper.gen.md"; M="$root/fill"
+cat > "$M" <<EOF2
+#!/usr/bin/env bash
+out="$G"; prev=
+for a in "\$@"; do [ "\$prev" = -o ] && out=\$a; prev=\$a; done
+"$tools/render-paper" -o "$G" "\$@" || exit
+sed -i -e 's/\\\\\([^A-Za-z0-9 ]\)/\\1/g' -e 's/  */ /g' "\$out"
+EOF2
+chmod +x "$M"
+T "paper-filter: builds the fixture paper" 0 "$M"
+has "paper-filter: counts the placeholder awaiting the quick tier" '^paper-filter: 1 placeholder(s) await the quick tier of 1 experiment(s)'
 if [ -f "$G" ]; then
-    in_file "mkpaper: a quick-tier number not computed here is marked" "$G" '^Quick: \*(quick tier: run `make figures`)\*; committed 0.5 +- 0\.$'
-    in_file "mkpaper: placeholders replaced" "$G" '^| experiment | verdict'
-    if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "mkpaper: placeholder left over" "$G"; else ok "mkpaper: no placeholder left"; fi
-    in_file "mkpaper: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
-    in_file "mkpaper: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 | - |$'
-    in_file "mkpaper: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
-    in_file "mkpaper: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\]'
-    in_file "mkpaper: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 | - |$'
-    in_file "mkpaper: summary not run" "$G" '^| `x/nores` | not run |'
-    in_file "mkpaper: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
-    in_file "mkpaper: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
-    in_file "mkpaper: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
-    in_file "mkpaper: inline CPU seconds from provenance, tier named unless paper" "$G" '^CPU: y 4322 s; out 2 (quick tier) s\.$'
-    in_file "mkpaper: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
-    in_file "mkpaper: inline value from the paper tier" "$G" '^Values: 30.9 +- 0.3; '
-    in_file "mkpaper: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
-    in_file "mkpaper: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
-    in_file "mkpaper: tsv cell by first column" "$G" '^Cells: 5.17; '
+    in_file "paper-filter: a quick-tier number not computed here is marked" "$G" '^Quick: \*(quick tier: run `make figures`)\*; committed 0.5 +- 0\.$'
+    in_file "paper-filter: placeholders replaced" "$G" '^| experiment | verdict'
+    if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "paper-filter: placeholder left over" "$G"; else ok "paper-filter: no placeholder left"; fi
+    in_file "paper-filter: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
+    in_file "paper-filter: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 | - |$'
+    in_file "paper-filter: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
+    in_file "paper-filter: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\]'
+    in_file "paper-filter: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 | - |$'
+    in_file "paper-filter: summary not run" "$G" '^| `x/nores` | not run |'
+    in_file "paper-filter: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
+    in_file "paper-filter: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
+    in_file "paper-filter: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
+    in_file "paper-filter: inline CPU seconds from provenance, tier named unless paper" "$G" '^CPU: y 4322 s; out 2 (quick tier) s\.$'
+    in_file "paper-filter: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
+    in_file "paper-filter: inline value from the paper tier" "$G" '^Values: 30.9 +- 0.3; '
+    in_file "paper-filter: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
+    in_file "paper-filter: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
+    in_file "paper-filter: tsv cell by first column" "$G" '^Cells: 5.17; '
     # 30.9 +- 0.3 against 29.08: +6.26 % +- 1.03 %; 30.9/3.71 = 8.33 +- 0.081; 30.9 - 3.71 = 27.19 +- 0.3; (30.9 - 29.08)/0.3 = 6.07; quick 29.317: +0.81 %
-    in_file "mkpaper: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
-    in_file "mkpaper: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
-    in_file "mkpaper: difference of two quantities" "$G" '; +27.19 +- 0.3; '
-    in_file "mkpaper: a derived value of zero error is printed without one" "$G" '; 1.85; '
+    in_file "paper-filter: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
+    in_file "paper-filter: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
+    in_file "paper-filter: difference of two quantities" "$G" '; +27.19 +- 0.3; '
+    in_file "paper-filter: a derived value of zero error is printed without one" "$G" '; 1.85; '
     # x/out q = 5.5 +- 0.1 against x/y quick eta 29.317 +- 0.25: -88.5; x/paperonly 0.25 +- 0.05 - 0.5
-    in_file "mkpaper: standard errors against another experiment's quantity, tier marked" "$G" '; -88.5 (quick tier); '
-    in_file "mkpaper: a name holding the operator is split where both sides resolve" "$G" '; -0.25 +- 0.05\.$'
-    in_file "mkpaper: standard errors between a quantity and a number" "$G" '; 6.1; '
-    in_file "mkpaper: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
-    in_file "mkpaper: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
-    in_file "mkpaper: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
-    in_file "mkpaper: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
+    in_file "paper-filter: standard errors against another experiment's quantity, tier marked" "$G" '; -88.5 (quick tier); '
+    in_file "paper-filter: a name holding the operator is split where both sides resolve" "$G" '; -0.25 +- 0.05\.$'
+    in_file "paper-filter: standard errors between a quantity and a number" "$G" '; 6.1; '
+    in_file "paper-filter: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
+    in_file "paper-filter: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
+    in_file "paper-filter: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
+    in_file "paper-filter: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
     # 30.9 / 0.3 = 103; 2 x 5.17; quick 29.317 - 29; sqrt(16) + 2^3
-    in_file "mkpaper: calc of a value and its stderr" "$G" '^Calc: 103.0; '
-    in_file "mkpaper: calc of a tsv cell" "$G" '; 10.3; '
-    in_file "mkpaper: calc from a pinned quick tier, marked" "$G" '; 0.32 (quick tier); '
-    in_file "mkpaper: calc with sqrt and powers" "$G" '; 12\.$'
-    in_file "mkpaper: bench cell with its date and commit" "$G" '^Bench: 1.81 (`make bench` 2026-01-01, abc1234); '
-    in_file "mkpaper: bench file absent: not measured" "$G" '; not measured (run `make bench`); '
-    in_file "mkpaper: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
+    in_file "paper-filter: calc of a value and its stderr" "$G" '^Calc: 103.0; '
+    in_file "paper-filter: calc of a tsv cell" "$G" '; 10.3; '
+    in_file "paper-filter: calc from a pinned quick tier, marked" "$G" '; 0.32 (quick tier); '
+    in_file "paper-filter: calc with sqrt and powers" "$G" '; 12\.$'
+    in_file "paper-filter: bench cell with its date and commit" "$G" '^Bench: 1.81 (`make bench` 2026-01-01, abc1234); '
+    in_file "paper-filter: bench file absent: not measured" "$G" '; not measured (run `make bench`); '
+    in_file "paper-filter: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
-    in_file "mkpaper: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
+    in_file "paper-filter: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     # every number of the summary table traced to the files: the CPU seconds to the tier's
     # provenance.tsv, the pass count and the worst distance to the bands evaluated on its
     # summary.tsv (lib/bands.awk); then every provenance CPU changed: every CPU cell follows
@@ -261,83 +271,83 @@ if [ -f "$G" ]; then
           done ) 2>&1 | awk '/^row$/ { r++ } /^bad/ { b++; print > "/dev/stderr" } END { printf "%d %d\n", r, b + 0 }'
     }
     read -r nrows nbad < <(trace_summary "$G" 2> "$root/trace.err")
-    if [ "$nrows" -ge 8 ] && [ "$nbad" = 0 ]; then ok "mkpaper: every summary-table number traced to a result file ($nrows rows)"
-    else bad "mkpaper: summary-table numbers not traced ($nrows rows, $nbad mismatches)" "$root/trace.err"; fi
+    if [ "$nrows" -ge 8 ] && [ "$nbad" = 0 ]; then ok "paper-filter: every summary-table number traced to a result file ($nrows rows)"
+    else bad "paper-filter: summary-table numbers not traced ($nrows rows, $nbad mismatches)" "$root/trace.err"; fi
     for p in "$root"/results/*/*/*/provenance.tsv; do cp "$p" "$p.keep"; sed -i 's/^cpu_seconds\t.*/cpu_seconds\t9876.5/' "$p"; done
     "$M" -o "$root/traced.md" > /dev/null 2>&1
     read -r nrows nbad < <(trace_summary "$root/traced.md" 2> "$root/trace.err")
     awk '/^\| experiment \| verdict/ { t = 1; next } t && !/^\|/ { exit } t && /^\| `/' "$root/traced.md" > "$root/traced.rows"
     ncpu=$(grep -c '| 9876.5 | [^|]* |$' "$root/traced.rows")
     nrun=$(grep -vc '| - | - | - |$' "$root/traced.rows")
-    if [ "$nbad" = 0 ] && [ "$ncpu" = "$nrun" ] && [ "$ncpu" -gt 0 ]; then ok "mkpaper: changed provenance CPU shows in every row ($ncpu)"
-    else bad "mkpaper: CPU cells did not follow provenance ($ncpu of $nrun rows, $nbad mismatches)" "$root/trace.err"; fi
+    if [ "$nbad" = 0 ] && [ "$ncpu" = "$nrun" ] && [ "$ncpu" -gt 0 ]; then ok "paper-filter: changed provenance CPU shows in every row ($ncpu)"
+    else bad "paper-filter: CPU cells did not follow provenance ($ncpu of $nrun rows, $nbad mismatches)" "$root/trace.err"; fi
     for p in "$root"/results/*/*/*/provenance.tsv; do mv "$p.keep" "$p"; done
-    in_file "mkpaper: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
-    in_file "mkpaper: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
-    in_file "mkpaper: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
-    in_file "mkpaper: results cpu per tier" "$G" 'CPU time: paper 4321.5 s, quick 1.5 s'
-    in_file "mkpaper: table header drops the verdict marker" "$G" '^| row | ours | verdict |$'
-    in_file "mkpaper: table verdict of a banded quantity" "$G" '^| 1 | 30.9 +- 0.3 | pass |$'
-    in_file "mkpaper: table verdict of a one-sided band" "$G" '^| 2 | 3.71 | pass |$'
-    in_file "mkpaper: table quantity without a band" "$G" '^| 3 | 7 | no band |$'
-    in_file "mkpaper: figure line" "$G" '^!\[.*\](figures/x/y/fig.png)$'
-    in_file "mkpaper: tsv table header" "$G" '^| phi | eta_r |$'
-    in_file "mkpaper: tsv table row" "$G" '^| 0.4940 | 5.1700 |$'
-    in_file "mkpaper: environment gcc row" "$G" '^| gcc | '
-    in_file "mkpaper: environment nproc row" "$G" "^| cores (nproc) | $(nproc) |"
-    in_file "mkpaper: front matter kept" "$G" '^title: Fixture paper$'
+    in_file "paper-filter: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
+    in_file "paper-filter: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
+    in_file "paper-filter: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
+    in_file "paper-filter: results cpu per tier" "$G" 'CPU time: paper 4321.5 s, quick 1.5 s'
+    in_file "paper-filter: table header drops the verdict marker" "$G" '^| row | ours | verdict |$'
+    in_file "paper-filter: table verdict of a banded quantity" "$G" '^| 1 | 30.9 +- 0.3 | pass |$'
+    in_file "paper-filter: table verdict of a one-sided band" "$G" '^| 2 | 3.71 | pass |$'
+    in_file "paper-filter: table quantity without a band" "$G" '^| 3 | 7 | no band |$'
+    in_file "paper-filter: figure line" "$G" '^!\[.*\](figures/x/y/fig.png)$'
+    in_file "paper-filter: tsv table header" "$G" '^| phi | eta_r |$'
+    in_file "paper-filter: tsv table row" "$G" '^| 0.4940 | 5.1700 |$'
+    in_file "paper-filter: environment gcc row" "$G" '^| gcc | '
+    in_file "paper-filter: environment nproc row" "$G" "^| cores (nproc) | $(nproc) |"
+    in_file "paper-filter: front matter kept" "$G" '^title: Fixture paper$'
 else
-    bad "mkpaper: no output $G"
+    bad "paper-filter: no output $G"
 fi
 
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
 rm -f "$G"
-T "mkpaper: missing figure fails" 1 "$M"
-has "mkpaper: message names the placeholder" 'figure: x/y/fig.png'
-if [ -e "$G" ]; then bad "mkpaper: output written despite error"; else ok "mkpaper: no output on error"; fi
-T "mkpaper: MKPAPER_ALLOW_MISSING=1 gives a draft" 0 env MKPAPER_ALLOW_MISSING=1 "$M"
-in_file "mkpaper: draft marks the gap" "$G" 'missing: '
+T "paper-filter: missing figure fails" 1 "$M"
+has "paper-filter: message names the placeholder" 'figure: x/y/fig.png'
+if [ -e "$G" ]; then bad "paper-filter: output written despite error"; else ok "paper-filter: no output on error"; fi
+T "paper-filter: MKPAPER_ALLOW_MISSING=1 gives a draft" 0 env MKPAPER_ALLOW_MISSING=1 "$M"
+in_file "paper-filter: draft marks the gap" "$G" 'missing: '
 mv "$root/fig.bak" "$root/figures/x/y/fig.png"
 touch -d '2002-01-01' "$root/figures/x/y/fig.png"
 # figure older than a result
 touch -d '2003-01-01' "$root/results/x/y/quick/summary.tsv"
-T "mkpaper: stale figure fails" 1 "$M"
-has "mkpaper: stale message" 'older than results/x/y/quick/summary.tsv'
+T "paper-filter: stale figure fails" 1 "$M"
+has "paper-filter: stale message" 'older than results/x/y/quick/summary.tsv'
 touch -d '2004-01-01' "$root/figures/x/y/fig.png"
-T "mkpaper: fresh figure passes again" 0 "$M"
+T "paper-filter: fresh figure passes again" 0 "$M"
 # results / tsv missing
 printf '%s\n' '<!-- results: x/nores -->' '<!-- tsv: data/none.tsv -->' '<!-- figure: x/nores/a.svg -->' > "$root/bad.md"
-T "mkpaper: missing result, tsv and figure fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
-has "mkpaper: names results placeholder" 'results: x/nores'
-has "mkpaper: names tsv placeholder" 'tsv: data/none.tsv'
-has "mkpaper: names figure placeholder" 'figure: x/nores/a.svg'
+T "paper-filter: missing result, tsv and figure fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
+has "paper-filter: names results placeholder" 'results: x/nores'
+has "paper-filter: names tsv placeholder" 'tsv: data/none.tsv'
+has "paper-filter: names figure placeholder" 'figure: x/nores/a.svg'
 printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
     'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
     'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' \
     'm {{calc:%.1f:[x/y:nonesuch]}} n {{calc:%.1f:system(1)}} o {{calc:%s:1}} p {{calc:%.1f:1/0}} q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
-T "mkpaper: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
-has "mkpaper: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
-has "mkpaper: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
-has "mkpaper: names a missing quantity" '{{x/y:nonesuch}}'
-has "mkpaper: names a missing tsv row" 'cells.tsv: no row n2=9'
-has "mkpaper: names a missing tsv column" 'cells.tsv: no column nocol'
-has "mkpaper: a cell of an INCOMPLETE result is refused" 'results/x/incomplete/quick is not a valid result'
-has "mkpaper: names a missing tsv file" 'no file data/none.tsv'
-has "mkpaper: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
-has "mkpaper: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
-has "mkpaper: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
-has "mkpaper: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
-has "mkpaper: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
-has "mkpaper: calc names a missing operand" '{{calc:%.1f:\[x/y:nonesuch\]}}: operand \[x/y:nonesuch\]: no such quantity'
-has "mkpaper: calc refuses anything but arithmetic" '{{calc:%.1f:system(1)}}: expression holds something other'
-has "mkpaper: calc refuses a non-numeric format" '{{calc:%s:1}}: expected calc:FMT:EXPR'
-has "mkpaper: calc refuses a non-finite result" '{{calc:%.1f:1/0}}: cannot evaluate'
-has "mkpaper: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
-has "mkpaper: counts every failed placeholder" '17 placeholder(s) could not be filled'
-lacks "mkpaper: no quick-tier count without such placeholders" 'await the quick tier'
+T "paper-filter: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
+has "paper-filter: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
+has "paper-filter: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
+has "paper-filter: names a missing quantity" '{{x/y:nonesuch}}'
+has "paper-filter: names a missing tsv row" 'cells.tsv: no row n2=9'
+has "paper-filter: names a missing tsv column" 'cells.tsv: no column nocol'
+has "paper-filter: a cell of an INCOMPLETE result is refused" 'results/x/incomplete/quick is not a valid result'
+has "paper-filter: names a missing tsv file" 'no file data/none.tsv'
+has "paper-filter: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
+has "paper-filter: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
+has "paper-filter: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
+has "paper-filter: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
+has "paper-filter: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
+has "paper-filter: calc names a missing operand" '{{calc:%.1f:\[x/y:nonesuch\]}}: operand \[x/y:nonesuch\]: no such quantity'
+has "paper-filter: calc refuses anything but arithmetic" '{{calc:%.1f:system(1)}}: expression holds something other'
+has "paper-filter: calc refuses a non-numeric format" '{{calc:%s:1}}: expected calc:FMT:EXPR'
+has "paper-filter: calc refuses a non-finite result" '{{calc:%.1f:1/0}}: cannot evaluate'
+has "paper-filter: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
+has "paper-filter: counts every failed placeholder" '17 placeholder(s) could not be filled'
+lacks "paper-filter: no quick-tier count without such placeholders" 'await the quick tier'
 
 # the quick tier, never committed: x/paperonly has a paper tier and no quick tier; what names
 # that quick tier is marked and counted, not an error; what is filled from it once it exists
@@ -352,17 +362,17 @@ h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
 <!-- tsv: results/x/paperonly/quick/table.tsv -->
 EOF2
 QG="$root/build/quick.gen.md"
-T "mkpaper: placeholders of a quick tier not computed here are no error" 0 "$M" -i "$root/quick.md" -o "$QG"
-has "mkpaper: one line counts them" '^mkpaper: 10 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
-if [ "$(grep -c 'await the quick tier' "$root/out")" = 1 ]; then ok "mkpaper: the count is a single line"; else bad "mkpaper: count lines" "$root/out"; fi
-in_file "mkpaper: quick value, CPU, diff, sigmas marked" "$QG" "^a $QM b $QM c $QM d $QM\\.\$"
-in_file "mkpaper: quick tsv cell and calc operands marked" "$QG" "^e $QM f $QM g $QM\\.\$"
-in_file "mkpaper: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
-in_file "mkpaper: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
-in_file "mkpaper: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
-T "mkpaper: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
-has "mkpaper: draft counts them" '^mkpaper: 10 placeholder(s) await the quick tier'
-if grep -q 'missing' "$QG"; then bad "mkpaper: draft calls a quick placeholder missing" "$QG"; else ok "mkpaper: draft does not call them missing"; fi
+T "paper-filter: placeholders of a quick tier not computed here are no error" 0 "$M" -i "$root/quick.md" -o "$QG"
+has "paper-filter: one line counts them" '^paper-filter: 10 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
+if [ "$(grep -c 'await the quick tier' "$root/out")" = 1 ]; then ok "paper-filter: the count is a single line"; else bad "paper-filter: count lines" "$root/out"; fi
+in_file "paper-filter: quick value, CPU, diff, sigmas marked" "$QG" "^a $QM b $QM c $QM d $QM\\.\$"
+in_file "paper-filter: quick tsv cell and calc operands marked" "$QG" "^e $QM f $QM g $QM\\.\$"
+in_file "paper-filter: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
+in_file "paper-filter: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
+in_file "paper-filter: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
+T "paper-filter: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
+has "paper-filter: draft counts them" '^paper-filter: 10 placeholder(s) await the quick tier'
+if grep -q 'missing' "$QG"; then bad "paper-filter: draft calls a quick placeholder missing" "$QG"; else ok "paper-filter: draft does not call them missing"; fi
 # still errors: committed tiers, a quick tier that exists, an unknown experiment, a malformed expression
 printf '%s\n' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
     'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}} g {{calc:%.1f:[x/paperonly@quick:q]+[x/paperonly:nonesuch]}}' \
@@ -371,27 +381,27 @@ printf '%s\n' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick
     '<!-- figure: x/paperonly/other-paper.png -->' '<!-- figure: x/y/fig-quick.png -->' '<!-- figure: x/nores/fig-reduced.png -->' \
     '<!-- tsv: results/x/y/quick/none.tsv -->' '<!-- tsv: results/x/paperonly/paper/none.tsv -->' '<!-- tsv: results/x/nonesuch/quick/t.tsv -->' \
     '<!-- results: x/nores -->' '<!-- table: x/paperonly/none.tsv -->' > "$root/qbad.md"
-T "mkpaper: missing results other than an uncomputed quick tier still fail" 1 "$M" -i "$root/qbad.md" -o "$root/build/qbad.gen.md"
-has "mkpaper: an unknown experiment pinned to quick fails" '{{x/nonesuch@quick:q}}: no such quantity'
-has "mkpaper: a CPU of an unknown experiment pinned to quick fails" '{{cpu:x/nonesuch@quick}}: no results'
-has "mkpaper: a quantity absent from an existing quick tier fails" '{{x/y@quick:nonesuch}}: no such quantity'
-has "mkpaper: an INCOMPLETE quick tier fails" '{{x/incomplete@quick:q}}: no such quantity'
-has "mkpaper: a missing reduced tier fails" '{{x/paperonly@reduced:q}}: no such quantity'
-has "mkpaper: a quantity absent from the paper tier fails" '{{x/paperonly:nonesuch}}: no such quantity'
-has "mkpaper: calc with a quick operand and a missing one fails" 'operand \[x/paperonly:nonesuch\]: no such quantity'
-has "mkpaper: calc with a quick operand and a bad expression fails" 'system(1)}}: expression holds something other'
-has "mkpaper: derived with a quick operand and an unknown one fails" '{{diff:x/paperonly@quick:q-x/nonesuch#q}}: no quantity'
-has "mkpaper: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
-has "mkpaper: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
-has "mkpaper: an unpinned verdict without results fails" '{{verdict:x/nores}}'
-has "mkpaper: a missing paper-tier figure fails" 'other-paper.png does not exist'
-has "mkpaper: a missing quick figure of an existing quick tier fails" 'fig-quick.png does not exist'
-has "mkpaper: a missing reduced-tier figure fails" 'fig-reduced.png does not exist'
-has "mkpaper: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
-has "mkpaper: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
-has "mkpaper: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
-has "mkpaper: counts them all as failures" '^mkpaper: 20 placeholder(s) could not be filled'
-lacks "mkpaper: none of them counted as awaiting the quick tier" 'await the quick tier'
+T "paper-filter: missing results other than an uncomputed quick tier still fail" 1 "$M" -i "$root/qbad.md" -o "$root/build/qbad.gen.md"
+has "paper-filter: an unknown experiment pinned to quick fails" '{{x/nonesuch@quick:q}}: no such quantity'
+has "paper-filter: a CPU of an unknown experiment pinned to quick fails" '{{cpu:x/nonesuch@quick}}: no results'
+has "paper-filter: a quantity absent from an existing quick tier fails" '{{x/y@quick:nonesuch}}: no such quantity'
+has "paper-filter: an INCOMPLETE quick tier fails" '{{x/incomplete@quick:q}}: no such quantity'
+has "paper-filter: a missing reduced tier fails" '{{x/paperonly@reduced:q}}: no such quantity'
+has "paper-filter: a quantity absent from the paper tier fails" '{{x/paperonly:nonesuch}}: no such quantity'
+has "paper-filter: calc with a quick operand and a missing one fails" 'operand \[x/paperonly:nonesuch\]: no such quantity'
+has "paper-filter: calc with a quick operand and a bad expression fails" 'system(1)}}: expression holds something other'
+has "paper-filter: derived with a quick operand and an unknown one fails" '{{diff:x/paperonly@quick:q-x/nonesuch#q}}: no quantity'
+has "paper-filter: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
+has "paper-filter: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
+has "paper-filter: an unpinned verdict without results fails" '{{verdict:x/nores}}'
+has "paper-filter: a missing paper-tier figure fails" 'other-paper.png does not exist'
+has "paper-filter: a missing quick figure of an existing quick tier fails" 'fig-quick.png does not exist'
+has "paper-filter: a missing reduced-tier figure fails" 'fig-reduced.png does not exist'
+has "paper-filter: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
+has "paper-filter: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
+has "paper-filter: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
+has "paper-filter: counts them all as failures" '^paper-filter: 20 placeholder(s) could not be filled'
+lacks "paper-filter: none of them counted as awaiting the quick tier" 'await the quick tier'
 # once the quick tier exists, the same placeholders are filled from it (and marked as quick)
 mkres x/paperonly quick 12.4 <<EOF2
 $(tab q 0.75 0.05)
@@ -402,24 +412,24 @@ printf 'a\tb\n1\t2\n' > "$root/results/x/paperonly/quick/table.tsv"
 mkdir -p "$root/figures/x/paperonly"; cp "$root/figures/x/y/fig.png" "$root/figures/x/paperonly/plot-quick.png"
 touch -d '2001-01-01' "$root"/results/x/paperonly/*/summary.tsv
 touch -d '2002-01-01' "$root/figures/x/paperonly/plot-quick.png"
-T "mkpaper: the quick tier computed, its placeholders are filled" 0 "$M" -i "$root/quick.md" -o "$QG"
-lacks "mkpaper: nothing awaits the quick tier" 'await the quick tier'
+T "paper-filter: the quick tier computed, its placeholders are filled" 0 "$M" -i "$root/quick.md" -o "$QG"
+lacks "paper-filter: nothing awaits the quick tier" 'await the quick tier'
 # 0.75 +- 0.05 - 0.5 +- 0.05 = 0.25 +- 0.071; (0.25 - 0.75)/0.0707 = -7.1; 0.75 x 2 + 0.5; 3/30.9; 30.9/0.75 = 41.2 (+4020 +- 280 %)
-in_file "mkpaper: quick value, CPU, diff, sigmas filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier) c +0.25 +- 0.071 (quick tier) d -7.1 (quick tier)\.$'
-in_file "mkpaper: quick tsv cell and calc filled" "$QG" '^e 3 (quick tier) f 2.00 (quick tier) g 0.10 (quick tier)\.$'
-in_file "mkpaper: derived with another experiment's quick operand filled" "$QG" '^h +4e+03 +- 2.8e+02 % (quick tier) i 0.5 +- 0\.$'
-in_file "mkpaper: quick figure shown" "$QG" '^!\[q against nothing\](figures/x/paperonly/plot-quick.png)$'
-in_file "mkpaper: quick tsv table shown" "$QG" '^| 1 | 2 |$'
-if grep -q 'make figures' "$QG"; then bad "mkpaper: a mark left once the quick tier exists" "$QG"; else ok "mkpaper: no mark left once the quick tier exists"; fi
+in_file "paper-filter: quick value, CPU, diff, sigmas filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier) c +0.25 +- 0.071 (quick tier) d -7.1 (quick tier)\.$'
+in_file "paper-filter: quick tsv cell and calc filled" "$QG" '^e 3 (quick tier) f 2.00 (quick tier) g 0.10 (quick tier)\.$'
+in_file "paper-filter: derived with another experiment's quick operand filled" "$QG" '^h +4e+03 +- 2.8e+02 % (quick tier) i 0.5 +- 0\.$'
+in_file "paper-filter: quick figure shown" "$QG" '^!\[q against nothing\](figures/x/paperonly/plot-quick.png)$'
+in_file "paper-filter: quick tsv table shown" "$QG" '^| 1 | 2 |$'
+if grep -q 'make figures' "$QG"; then bad "paper-filter: a mark left once the quick tier exists" "$QG"; else ok "paper-filter: no mark left once the quick tier exists"; fi
 touch -d '2003-01-01' "$root/results/x/paperonly/quick/summary.tsv"
-T "mkpaper: a stale quick figure stays an error" 1 "$M" -i "$root/quick.md" -o "$QG"
-has "mkpaper: stale quick figure named" 'plot-quick.png is older than results/x/paperonly/quick/summary.tsv'
+T "paper-filter: a stale quick figure stays an error" 1 "$M" -i "$root/quick.md" -o "$QG"
+has "paper-filter: stale quick figure named" 'plot-quick.png is older than results/x/paperonly/quick/summary.tsv'
 rm -rf "$root/results/x/paperonly/quick" "$root/figures/x/paperonly"
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then
     T "render-paper: HTML" 0 "$tools/render-paper"
-    has "render-paper: passes on the quick-tier count" '^mkpaper: 1 placeholder(s) await the quick tier'
+    has "render-paper: passes on the quick-tier count" '^paper-filter: 1 placeholder(s) await the quick tier'
     H="$root/build/paper.html"
     if [ -f "$H" ]; then
         in_file "render-paper: title from front matter" "$H" '<title>Fixture paper</title>'
@@ -659,8 +669,8 @@ echo 'x = 4;' > "$e/s.cfg"
 T "verify-results: a stale result fails" 1 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
 has "verify-results: names it" 'STALE t/e \[quick\]'
 printf "<!-- summary-table -->\n" > "$root/fresh.in.md"
-T "mkpaper: summary shows the stale result" 0 env MKPAPER_FRESHNESS="$root/fresh.tsv" DPD_ROOT="$rx" "$rx/tools/mkpaper" -i "$root/fresh.in.md" -o "$root/fresh.md"
-in_file "mkpaper: inputs column STALE" "$root/fresh.md" '^| `t/e` | .* | \*\*STALE\*\* |$'
+T "paper-filter: summary shows the stale result" 0 env MKPAPER_FRESHNESS="$root/fresh.tsv" DPD_ROOT="$rx" "$rx/tools/render-paper" -i "$root/fresh.in.md" -o "$root/fresh.md"
+in_file "paper-filter: inputs column STALE" "$root/fresh.md" '^| `t/e` .*| \*\*STALE\*\* *|$'
 cp "$root/s.cfg.keep" "$e/s.cfg"
 
 # reuse_run: another experiment's simulation copied, not rerun, its CPU not counted twice

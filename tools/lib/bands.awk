@@ -1,5 +1,6 @@
 # bands.awk -- evaluate one experiment's bands.tsv against one summary.tsv.
-# POSIX awk (works with mawk and gawk).  Shared by tools/check and tools/mkpaper.
+# POSIX awk (works with mawk and gawk).  Run by tools/check (make check), whose --tsv rows
+# give the paper its verdicts (tools/lib/paper-filter.lua).
 #
 # usage: awk -v eid=ID -v tier=T -v sfile=PATH_OR_EMPTY -f bands.awk bands.tsv
 #   sfile empty or unreadable -> every row MISSING.

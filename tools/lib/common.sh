@@ -1,4 +1,5 @@
-# common.sh -- shared helpers for tools/check and tools/mkpaper (sourced, bash).
+# common.sh -- shared helpers of the tools (sourced, bash): tools/check, tools/verify-results,
+# tools/lib/paper-filter.lua (the ids of the summary table), ...
 # DPD_ROOT: root of the tree to work on (default: the repository top, found
 # from this file's location).
 

@@ -1,0 +1,920 @@
+-- paper-filter.lua -- pandoc Lua filter: fills the placeholders of paper.md from the results.
+--
+-- usage: pandoc paper.md --lua-filter tools/lib/paper-filter.lua ...   (tools/render-paper runs it)
+-- Works with pandoc >= 2.17 (Debian 12). Placeholders (the same as the former tools/mkpaper's):
+--   <!-- summary-table -->                 verdict table over all experiments      (each alone on a line)
+--   <!-- results: PAPER/EXP -->            band table of one experiment
+--   <!-- figure: PAPER/EXP/NAME.png -->    image (optional " | caption" after the path)
+--   <!-- tsv: path/to/file.tsv -->         a TSV file (relative to DPD_ROOT) as a table
+--   <!-- table: PAPER/EXP/NAME.tsv -->     results/PAPER/EXP/TIER/NAME.tsv as a table, TIER = paper if
+--                                          its results exist, else reduced, else quick (marked); a column
+--                                          whose header ends in "@" holds band quantity names, shown as
+--                                          their verdict
+--   <!-- environment -->                   tool and library versions
+--   {{PAPER/EXP:QUANTITY}} (inline)        "value +- stderr" from the paper-tier summary
+--                                          (else the reduced, else the quick tier, marked)
+--   {{verdict:PAPER/EXP}}                  the experiment's verdict from its bands, with the tier
+--   {{cpu:PAPER/EXP}}                      CPU seconds of the tier its numbers come from (provenance.tsv,
+--                                          rounded; the tier is named unless it is paper)
+--   {{PAPER/EXP@TIER:QUANTITY}}, {{cpu:PAPER/EXP@TIER}}
+--                                          the same from that tier only, marked unless the tier is paper
+--   {{tsv:PATH:ROW:COL}}                   one cell of a TSV file (PATH relative to DPD_ROOT, no ':'):
+--                                          '#' lines skipped, the first other line is the header; ROW the
+--                                          first column's value, or NAME=VALUE (several joined by &) for
+--                                          the first row whose column NAME holds VALUE; COL a column name
+--                                          (a number printed to 4 digits), or COL+-SECOL for
+--                                          "value +- stderr"; a PATH under results/PAPER/EXP/TIER/ must
+--                                          be a valid result and is marked unless TIER is paper
+--   {{pct:PAPER/EXP:A/B}}, {{ratio:PAPER/EXP:A/B}}, {{diff:PAPER/EXP:A-B}}, {{sigmas:PAPER/EXP:A-B}}
+--                                          derived from two quantities (or a quantity and a number; an
+--                                          operand OTHER/EXP[@TIER]#Q is another experiment's):
+--                                          100 (A/B - 1), A/B, A - B with the first-order error of
+--                                          independent A, B, and (A - B) / sqrt(se_A^2 + se_B^2); an error
+--                                          of zero is not printed; marked with the tier unless both paper
+--   {{calc:FMT:EXPR}}                      an arithmetic expression printed with the printf number format
+--                                          FMT: operands [PAPER/EXP[@TIER]:Q] (value), [PAPER/EXP[@TIER]:Q:se]
+--                                          (stderr), [tsv:PATH:ROW:COL] (a numeric cell); otherwise numbers,
+--                                          + - * / ^ ( ) and sqrt log exp, evaluated by the parser below
+--                                          (nothing is handed to another interpreter); marked with the tier
+--                                          unless every operand is paper
+--   {{bench:FILE:ROW:COL}}                 one cell of bench/FILE (make bench) with the date and commit
+--                                          of its "date, commit" row; "not measured (run `make bench`)"
+--                                          if the file or the row is absent
+-- Each placeholder's expansion is markdown, read by pandoc's markdown reader in its place. An inline
+-- placeholder is found in the markdown of the paragraph that holds it (the reader may have taken the
+-- '*' or '^' of an expression for emphasis or a superscript: written back, they are the source again).
+-- Errors: a referenced result, figure or file missing, a figure older than a summary.tsv of its
+-- experiment, a malformed placeholder: each is named on stderr (FILE:LINE: PLACEHOLDER: reason), and
+-- pandoc exits 1 writing nothing. MKPAPER_ALLOW_MISSING=1 (drafts): warnings, the gap marked in the
+-- output, exit 0. A placeholder that names the quick tier (@quick, results/P/E/quick/..., a figure
+-- NAME-quick.png) while results/P/E/quick holds neither summary.tsv nor INCOMPLETE (never committed;
+-- `make figures` computes it) is no error: it reads "*(quick tier: run `make figures`)*", and one
+-- stderr line counts them. An unpinned placeholder that finds no result stays an error.
+-- Verdicts come from tools/check --tsv (tools/lib/bands.awk: one source of truth with make check);
+-- the summary table's inputs column from build/freshness.tsv (tools/verify-results).
+-- env: DPD_ROOT (default the repository top), MKPAPER_ALLOW_MISSING, MKPAPER_FRESHNESS
+--      (default $DPD_ROOT/build/freshness.tsv)
+
+local NAME = 'paper-filter'
+local TOOLS = (PANDOC_SCRIPT_FILE or 'tools/lib/paper-filter.lua'):match('^(.*)/lib/[^/]*$') or 'tools'
+local ROOT = os.getenv('DPD_ROOT') or (TOOLS .. '/..')
+local ALLOW = os.getenv('MKPAPER_ALLOW_MISSING') == '1'
+local FRESHNESS = os.getenv('MKPAPER_FRESHNESS') or (ROOT .. '/build/freshness.tsv')
+local TIERS = { 'paper', 'reduced', 'quick' }
+local QUICK_MARK = '*(quick tier: run `make figures`)*'
+local NUM_RE = nil   -- see is_number
+
+-- ---------------------------------------------------------------- strings and numbers
+
+local function trim(s) return (s:gsub('^%s+', ''):gsub('%s+$', '')) end
+local function split(s, sep)           -- every field, empty ones kept
+    local t, i = {}, 1
+    while true do
+        local j = s:find(sep, i, true)
+        if not j then t[#t + 1] = s:sub(i); return t end
+        t[#t + 1] = s:sub(i, j - 1); i = j + #sep
+    end
+end
+local function before(s, sep) local j = s:find(sep, 1, true); return j and s:sub(1, j - 1) or s end
+local function after(s, sep) local j = s:find(sep, 1, true); return j and s:sub(j + #sep) or nil end
+local function before_last(s, sep) return s:match('^(.*)' .. sep) or s end
+local function after_last(s, sep) return s:match('.*' .. sep .. '(.*)$') or s end
+
+-- a decimal number as the awk tools accept it: [+-](digits[.digits]|.digits)[e[+-]digits]
+local function is_number(s)
+    if type(s) ~= 'string' then return false end
+    local m = s:match('^[+-]?%d+%.?%d*$') or s:match('^[+-]?%.%d+$')
+        or s:match('^[+-]?%d+%.?%d*[eE][+-]?%d+$') or s:match('^[+-]?%.%d+[eE][+-]?%d+$')
+    return m ~= nil
+end
+
+-- a string's numeric value as awk (mawk: strtod) takes it: nan, inf, a leading number, else 0
+local NAN = math.abs(0 / 0)
+local function awk_number(s)
+    s = trim(s or '')
+    local n = tonumber(s)
+    if n and not s:match('^[+-]?0[xX]') then return n end
+    local sign, word = s:lower():match('^([+-]?)(%a+)')
+    if word == 'nan' then return sign == '-' and -NAN or NAN end
+    if word == 'inf' or word == 'infinity' then return sign == '-' and -math.huge or math.huge end
+    local lead = s:match('^[+-]?%d*%.?%d+[eE][+-]?%d+') or s:match('^[+-]?%d+%.?%d*') or s:match('^[+-]?%.%d+')
+    return tonumber(lead or '') or 0
+end
+local function fmt(p, s) return string.format(p, awk_number(s)) end
+local function fmt_if_number(p, s) return is_number(s) and fmt(p, s) or s end
+local function md_escape(s) return (s:gsub('[|*_<>`\\]', '\\%0')) end
+local function pipe_escape(s) return (s:gsub('|', '\\|')) end
+
+-- ---------------------------------------------------------------- files and commands
+
+local function exists(path) local f = io.open(path, 'r'); if f then f:close(); return true end; return false end
+local function is_nonempty(path)
+    local f = io.open(path, 'r'); if not f then return false end
+    local size = f:seek('end'); f:close(); return size ~= nil and size > 0
+end
+local function read_lines(path)         -- nil if unreadable; '\r' of CRLF files dropped
+    local f = io.open(path, 'r'); if not f then return nil end
+    local t = {}
+    for l in f:lines() do t[#t + 1] = l:gsub('\r$', '') end
+    f:close(); return t
+end
+local function shell_quote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
+local function command_lines(cmd)
+    local p = io.popen(cmd); local t = {}
+    for l in p:lines() do t[#t + 1] = l end
+    p:close(); return t
+end
+local function first_line(cmd) return command_lines(cmd .. ' 2>/dev/null')[1] or '' end
+local function relative(path) return path:sub(1, #ROOT + 1) == ROOT .. '/' and path:sub(#ROOT + 2) or path end
+
+-- ---------------------------------------------------------------- reporting
+
+local nerr, npend, pending_ids = 0, 0, {}
+local source_lines = nil
+
+-- the line of the input that holds TEXT (for messages; 0 if not found)
+local function line_of(text)
+    if source_lines == nil then
+        local input = PANDOC_STATE and PANDOC_STATE.input_files and PANDOC_STATE.input_files[1]
+        source_lines = (input and input ~= '-' and read_lines(input)) or {}
+    end
+    for i, l in ipairs(source_lines) do if l:find(text, 1, true) then return i end end
+    return 0
+end
+local function input_name()
+    local input = PANDOC_STATE and PANDOC_STATE.input_files and PANDOC_STATE.input_files[1]
+    return input and input:match('[^/]*$') or 'stdin'
+end
+
+-- report a problem with placeholder PH; returns the draft note (markdown) or ''
+local function problem(ph, msg)
+    io.stderr:write(string.format('%s: %s:%d: %s: %s\n', NAME, input_name(), line_of(ph), ph, msg))
+    if ALLOW then return string.format('\n**[missing: %s -- %s]**\n\n', md_escape(ph), md_escape(msg)) end
+    nerr = nerr + 1
+    return ''
+end
+-- an inline placeholder that could not be filled: reported, replaced by a bold "missing"
+local function missing(ph, msg, shown) problem(ph, msg); return '**' .. shown .. '**' end
+-- a placeholder that awaits experiment ID's quick tier (counted once per placeholder)
+local function pending(id) npend = npend + 1; pending_ids[id] = true; return QUICK_MARK end
+
+-- ---------------------------------------------------------------- results
+
+local function valid_result(id, tier)
+    local r = ROOT .. '/results/' .. id .. '/' .. tier
+    return exists(r .. '/summary.tsv') and not exists(r .. '/INCOMPLETE')
+end
+-- the experiment exists and its quick tier (never committed) has not been computed here
+local function awaits_quick(id)
+    local r = ROOT .. '/results/' .. id .. '/quick'
+    return exists(ROOT .. '/experiments/' .. id) and not exists(r .. '/summary.tsv') and not exists(r .. '/INCOMPLETE')
+end
+-- the fields of the first line of FILE whose first field is KEY
+local function row_with_key(file, key)
+    for _, l in ipairs(read_lines(file) or {}) do
+        local f = split(l, '\t')
+        if f[1] == key then return f end
+    end
+end
+local function provenance(id, tier, key)
+    local f = row_with_key(ROOT .. '/results/' .. id .. '/' .. tier .. '/provenance.tsv', key)
+    return f and f[2] or ''
+end
+-- value and stderr (strings) of quantity Q in results/ID/TIER/summary.tsv, or nil
+local function summary_value(id, tier, q)
+    local f = row_with_key(ROOT .. '/results/' .. id .. '/' .. tier .. '/summary.tsv', q)
+    if f then return f[2] or '', f[3] or '' end
+end
+
+-- the band rows of every experiment at TIER, from tools/check --tsv (lib/bands.awk), by experiment:
+-- eid quantity value stderr lo hi k paper verdict dist source note
+local band_cache = {}
+local function band_rows(id, tier)
+    if not band_cache[tier] then
+        local by = {}
+        local cmd = 'DPD_ROOT=' .. shell_quote(ROOT) .. ' ' .. shell_quote(TOOLS .. '/check') .. ' --tsv --tier ' .. shell_quote(tier)
+        for _, l in ipairs(command_lines(cmd)) do
+            local f = split(l, '\t')
+            by[f[1]] = by[f[1]] or {}
+            table.insert(by[f[1]], f)
+        end
+        band_cache[tier] = by
+    end
+    return band_cache[tier][id] or {}
+end
+
+-- the experiment ids of the summary table (EXPERIMENTS.md, then experiments/*/*/; lib/common.sh)
+local function experiment_ids()
+    local cmd = 'DPD_ROOT=' .. shell_quote(ROOT) .. ' bash -c ' .. shell_quote('. "$0"; list_md_ids; list_exp_dirs')
+        .. ' ' .. shell_quote(TOOLS .. '/lib/common.sh')
+    local ids, seen = {}, {}
+    for _, id in ipairs(command_lines(cmd)) do
+        if not seen[id] then seen[id] = true; ids[#ids + 1] = id end
+    end
+    return ids
+end
+
+-- verdict of an experiment from the bands of the tier its numbers come from
+-- (paper if its results exist, else reduced, else quick): verdict, tier ('-' if none), worst, cpu
+local function verdict_of(id)
+    local v = { tier = '-', worst = '-', cpu = '-' }
+    if not exists(ROOT .. '/experiments/' .. id) then v.verdict = 'not yet built'; return v end
+    for _, t in ipairs(TIERS) do if valid_result(id, t) then v.tier = t; break end end
+    if v.tier == '-' then v.verdict = 'not run'; return v end
+    local rows = band_rows(id, v.tier)
+    if #rows == 0 then v.verdict = 'no bands for tier ' .. v.tier
+    else
+        local npass, worst, inf = 0, 0, false
+        for _, r in ipairs(rows) do
+            if r[9] == 'PASS' then npass = npass + 1 end
+            if r[10] == 'inf' or r[10] == '-' then inf = true
+            elseif awk_number(r[10]) > worst then worst = awk_number(r[10]) end
+        end
+        v.worst = inf and 'inf' or string.format('%.3g', worst)
+        if npass == #rows then v.verdict = '[Re]'
+        elseif npass > 0 then v.verdict = string.format('[~Re] (%d/%d)', npass, #rows)
+        else v.verdict = string.format('[¬Re] (0/%d)', #rows) end
+    end
+    local cpu = provenance(id, v.tier, 'cpu_seconds')
+    v.cpu = cpu ~= '' and cpu or '-'
+    return v
+end
+
+-- the inputs column of the summary table (build/freshness.tsv from tools/verify-results)
+local function freshness_of(id, tier)
+    if tier == '-' then return '-' end
+    for _, l in ipairs(read_lines(FRESHNESS) or {}) do
+        local f = split(l, '\t')
+        if f[1] == id and f[2] == tier then
+            return f[3] == 'fresh' and 'reanalysed' or f[3] == 'unverifiable' and 'scenes checked' or '**STALE**'
+        end
+    end
+    return '-'
+end
+
+-- ---------------------------------------------------------------- block placeholders (markdown out)
+
+local SUMMARY_CAPTION = table.concat({
+    ': Reproduction status. Verdict from the bands of the tier shown (paper if its results exist, else reduced, else quick):',
+    '[Re] all quantities inside their bands, [~Re] some, [¬Re] none.',
+    "Worst distance: largest |value - band centre| / (band half-width + k stderr) over the experiment's",
+    'quantities, so at most 1 means inside; for one-sided bands 1 + excess/|bound|; inf for a non-finite or missing value.',
+    'CPU s: cpu_seconds from provenance.tsv.',
+    'Inputs (tools/verify-results, run by make paper): *reanalysed* -- the analysis, redone by the current run.sh',
+    'from the kept simulation outputs, reproduces every table, and every simulation it asks for was made with',
+    'the same arguments and scene; *scenes checked* -- the analysis cannot be redone from the kept files (reason',
+    'in build/freshness.tsv), its scene files are unchanged since the result was committed; *STALE* -- cited anyway (draft).',
+    'The simulator binary is not checked: each result records the commit it was built from.' }, ' ')
+
+-- the paper tier's CPU hours per paper, from the provenance files
+local function paper_cpu_line(ids)
+    local hours, count, papers = {}, {}, {}
+    for _, id in ipairs(ids) do
+        if valid_result(id, 'paper') then
+            local p = before(id, '/')
+            if not hours[p] then hours[p] = 0; count[p] = 0; papers[#papers + 1] = p end
+            hours[p] = hours[p] + awk_number(provenance(id, 'paper', 'cpu_seconds')); count[p] = count[p] + 1
+        end
+    end
+    table.sort(papers)
+    local parts = {}
+    for i, p in ipairs(papers) do
+        parts[i] = string.format('%s `%s` %.2f h (%d experiments)', i > 1 and ';' or '', p, hours[p] / 3600, count[p])
+    end
+    return 'Paper tier, CPU time of the experiments that have paper-tier results (one core):' .. table.concat(parts) .. '.\n\n'
+end
+
+local function summary_table()
+    local out = { '', '| experiment | verdict | tier | worst distance | CPU s | inputs |', '|:---|:---|:---|---:|---:|:---|' }
+    local ids = experiment_ids()
+    for _, id in ipairs(ids) do
+        local v = verdict_of(id)
+        local tier = v.tier ~= '-' and '**' .. v.tier .. '**' or '-'
+        out[#out + 1] = string.format('| `%s` | %s | %s | %s | %s | %s |', id, v.verdict, tier, v.worst, v.cpu,
+                                      freshness_of(id, v.tier))
+    end
+    out[#out + 1] = ''; out[#out + 1] = SUMMARY_CAPTION; out[#out + 1] = ''
+    return table.concat(out, '\n') .. '\n' .. paper_cpu_line(ids)
+end
+
+local function verdict_cell(v)
+    if v == 'PASS' then return 'pass' elseif v == 'FAIL' then return '**FAIL**' else return '**' .. v .. '**' end
+end
+
+local function results_table(ph, arg)
+    local id = arg:gsub('^%./', ''):gsub('^experiments/', ''):gsub('^results/', ''):gsub('/$', '')
+    if not exists(ROOT .. '/experiments/' .. id) then return problem(ph, 'no experiment directory experiments/' .. id) end
+    if not exists(ROOT .. '/experiments/' .. id .. '/bands.tsv') then return problem(ph, 'no experiments/' .. id .. '/bands.tsv') end
+    local rows, cpus, any = {}, {}, false
+    for _, t in ipairs(TIERS) do
+        if valid_result(id, t) then
+            any = true
+            for _, r in ipairs(band_rows(id, t)) do
+                local ours = r[3] == '-' and 'missing' or fmt_if_number('%.6g', r[3]) .. ' ± ' .. fmt_if_number('%.2g', r[4])
+                local band = '[' .. r[5] .. ', ' .. r[6] .. ']' .. (awk_number(r[7]) > 0 and ' ± ' .. r[7] .. ' σ' or '')
+                rows[#rows + 1] = string.format('| `%s` | %s | %s | %s | %s | %s |', r[2], pipe_escape(r[8]),
+                                                pipe_escape(ours), pipe_escape(band), t, verdict_cell(r[9]))
+            end
+            local c = provenance(id, t, 'cpu_seconds')
+            cpus[#cpus + 1] = t .. ' ' .. (c ~= '' and c or '?') .. ' s'
+        end
+    end
+    if not any then return problem(ph, 'no results/' .. id .. '/{paper,quick}/summary.tsv') end
+    local out = { '' }
+    if #rows == 0 then out[#out + 1] = '*No bands for the tiers that have results.*'
+    else
+        out[#out + 1] = '| quantity | paper | ours ± stderr | band | tier | verdict |'
+        out[#out + 1] = '|:---|---:|---:|:---|:---|:---|'
+        for _, r in ipairs(rows) do out[#out + 1] = r end
+    end
+    out[#out + 1] = ''
+    out[#out + 1] = ': `' .. id .. '`: our values against the tolerance bands (band widened by k × stderr). CPU time: '
+        .. table.concat(cpus, ', ') .. '.'
+    return table.concat(out, '\n') .. '\n\n'
+end
+
+-- the summary.tsv files of ID's complete results, each with whether it is newer than FIG
+local function results_newer_than(id, fig)
+    local script = 'cd "$0" || exit; for s in results/"$1"/*/summary.tsv; do [ -f "$s" ] || continue; '
+        .. '[ -e "${s%/*}/INCOMPLETE" ] && continue; if [ "$s" -nt "$2" ]; then echo "newer $s"; else echo "older $s"; fi; done'
+    return command_lines('bash -c ' .. shell_quote(script) .. ' ' .. shell_quote(ROOT) .. ' ' .. shell_quote(id) .. ' ' .. shell_quote(fig))
+end
+
+local function figure_line(ph, arg)
+    local spec, cap = arg, ''
+    if arg:find('|', 1, true) then spec, cap = before(arg, '|'), after(arg, '|') end
+    spec = trim(spec):gsub('^figures/', ''); cap = trim(cap)
+    if not (spec:match('^.*/.*/.*%.png$') or spec:match('^.*/.*/.*%.svg$')) then
+        return problem(ph, 'expected PAPER/EXP/NAME.png or .svg')
+    end
+    local rel, id, name = 'figures/' .. spec, before_last(spec, '/'), after_last(spec, '/')
+    if not exists(ROOT .. '/' .. rel) then
+        -- a figure of the quick tier (NAME-quick.png, plot.gp's naming) before that tier is computed
+        if (name:match('%-quick%.png$') or name:match('%-quick%.svg$')) and awaits_quick(id) then
+            pending(id)
+            return string.format('\n*Figure* `%s`%s %s\n\n', rel, cap ~= '' and ' (' .. md_escape(cap) .. ')' or '', QUICK_MARK)
+        end
+        return problem(ph, 'figure ' .. rel .. ' does not exist (make figures)')
+    end
+    local nres, newer = 0, ''
+    for _, l in ipairs(results_newer_than(id, rel)) do
+        nres = nres + 1
+        if l:match('^newer ') then newer = newer .. ' ' .. l:sub(7) end
+    end
+    if nres == 0 then return problem(ph, 'figure ' .. rel .. ': no results/' .. id .. '/*/summary.tsv it could derive from') end
+    if newer ~= '' then return problem(ph, 'figure ' .. rel .. ' is older than' .. newer .. ' (re-run make figures)') end
+    if cap == '' then cap = id .. ': ' .. name end
+    return string.format('![%s](%s)\n', cap, rel)
+end
+
+-- the non-blank lines of a TSV file as a pipe table; VERDICT_COLUMNS: header cells ending in '@'
+-- hold band quantity names, shown as their verdicts from VERDICTS (quantity -> verdict)
+local function pipe_table(lines, verdicts)
+    local out, ncol, is_verdict = { '' }, nil, {}
+    for _, l in ipairs(lines) do
+        if not l:match('^[ \t]*$') then
+            local f = split(l, '\t')
+            if not ncol then
+                ncol = #f
+                local head, sep = '|', '|'
+                for i = 1, ncol do
+                    local c = f[i]
+                    if verdicts and c:match('@$') then is_verdict[i] = true; c = c:sub(1, -2) end
+                    head = head .. ' ' .. pipe_escape(c) .. ' |'; sep = sep .. '---|'
+                end
+                out[#out + 1] = head; out[#out + 1] = sep
+            else
+                local row = '|'
+                for i = 1, ncol do
+                    local c = f[i] or ''
+                    if is_verdict[i] then
+                        local v = verdicts[c] or 'no band'
+                        c = v == 'PASS' and 'pass' or v == 'no band' and 'no band' or '**' .. v .. '**'
+                    end
+                    row = row .. ' ' .. pipe_escape(c) .. ' |'
+                end
+                out[#out + 1] = row
+            end
+        end
+    end
+    return table.concat(out, '\n') .. '\n\n'
+end
+
+-- results/P/E/quick/... of an experiment whose quick tier awaits `make figures`: that experiment
+local function quick_path_awaiting(p)
+    local id = p:match('^results/([^/]*/[^/]*)/quick/')
+    if id and awaits_quick(id) then return id end
+end
+
+local function tsv_table(ph, arg)
+    local p = trim(arg)
+    local f = p:sub(1, 1) == '/' and p or ROOT .. '/' .. p
+    if not exists(f) then
+        local id = quick_path_awaiting(p)
+        if id then pending(id); return string.format('\n*Table* `%s` %s\n\n', p, QUICK_MARK) end
+        return problem(ph, 'no file ' .. p)
+    end
+    if not is_nonempty(f) then return problem(ph, 'file ' .. p .. ' is empty') end
+    return pipe_table(read_lines(f))
+end
+
+local function result_table(ph, arg)
+    local spec = trim(arg)
+    if not spec:match('^.*/.*/.*%.tsv$') then return problem(ph, 'expected PAPER/EXP/NAME.tsv') end
+    local id, name = before_last(spec, '/'), after_last(spec, '/')
+    local tier
+    for _, t in ipairs(TIERS) do
+        if valid_result(id, t) and is_nonempty(ROOT .. '/results/' .. id .. '/' .. t .. '/' .. name) then tier = t; break end
+    end
+    if not tier then return problem(ph, 'no results/' .. id .. '/{paper,quick}/' .. name) end
+    local verdicts = {}
+    for _, r in ipairs(band_rows(id, tier)) do verdicts[r[2]] = r[9] end
+    local md = pipe_table(read_lines(ROOT .. '/results/' .. id .. '/' .. tier .. '/' .. name), verdicts)
+    if tier == 'quick' then md = md .. ': `' .. id .. '`: quick tier (no paper-tier result).\n\n' end
+    return md
+end
+
+local function environment_table()
+    local function row(name, value) return string.format('| %s | %s |', name, md_escape(value ~= '' and value or 'not found')) end
+    local function dpkg_version(pkg) return first_line("dpkg-query -W -f='${Version}' " .. pkg) end
+    local h5 = first_line("h5cc -showconfig | awk -F: '/HDF5 Version/ { gsub(/^[ \\t]+|[ \\t]+$/, \"\", $2); print $2; exit }'")
+    if h5 == '' then h5 = dpkg_version('libhdf5-dev') end
+    local cmocka = first_line('pkg-config --modversion cmocka')
+    if dpkg_version('libcmocka-dev') ~= '' then cmocka = cmocka .. ' (libcmocka-dev ' .. dpkg_version('libcmocka-dev') .. ')' end
+    local out = { '', '| component | version |', '|:---|:---|',
+        row('gcc', first_line('gcc --version')), row('GSL', first_line('gsl-config --version')), row('HDF5', h5),
+        row('libconfig', first_line('pkg-config --modversion libconfig')), row('Random123', dpkg_version('librandom123-dev')),
+        row('cmocka', cmocka), row('gnuplot', first_line('gnuplot --version')), row('pandoc', first_line('pandoc --version')),
+        row('source (git describe)', first_line('git -C ' .. shell_quote(ROOT) .. ' describe --always --dirty')),
+        row('kernel (uname -srm)', first_line('uname -srm')),
+        row('CPU', first_line("lscpu | awk -F: '/^Model name/ { gsub(/^[ \\t]+/, \"\", $2); print $2; exit }'")),
+        row('cores (nproc)', first_line('nproc')), row('built (UTC)', os.date('!%Y-%m-%d %H:%M')),
+        '', ': Build environment, captured when this document was generated.' }
+    return table.concat(out, '\n') .. '\n\n'
+end
+
+local BLOCK_PLACEHOLDERS = {
+    ['summary-table'] = summary_table, environment = environment_table, ['results:'] = results_table,
+    ['figure:'] = figure_line, ['tsv:'] = tsv_table, ['table:'] = result_table,
+}
+local BLOCK_KINDS = { 'summary-table', 'environment', 'results:', 'figure:', 'tsv:', 'table:' }
+-- kind and argument of a block placeholder (an HTML comment alone on its line), or nil
+local function block_placeholder(comment)
+    local body = trim(comment):match('^<!%-%-%s*(.-)%-%->$')
+    if not body then return nil end
+    for _, kind in ipairs(BLOCK_KINDS) do
+        if body:sub(1, #kind) == kind then return kind, trim(body:sub(#kind + 1)) end
+    end
+end
+-- the markdown of a block placeholder, or nil if COMMENT is none
+local function expand_block(comment)
+    local kind, arg = block_placeholder(comment)
+    if kind then return BLOCK_PLACEHOLDERS[kind](trim(comment), arg) end
+end
+
+-- ---------------------------------------------------------------- inline placeholders (markdown out)
+
+-- ID[@TIER] -> id, the tiers to search
+local function id_and_tiers(spec)
+    if spec:find('@', 1, true) then return before_last(spec, '@'), { after_last(spec, '@') } end
+    return spec, TIERS
+end
+local function only_quick(tiers) return #tiers == 1 and tiers[1] == 'quick' end
+
+local function inline_value(spec, q)
+    local ph = '{{' .. spec .. ':' .. q .. '}}'
+    local id, tiers = id_and_tiers(spec)
+    for _, t in ipairs(tiers) do
+        local v, se
+        if valid_result(id, t) then v, se = summary_value(id, t, q) end
+        if v then
+            return string.format('%.4g +- %.2g', awk_number(v), awk_number(se)) .. (t ~= 'paper' and ' (' .. t .. ' tier)' or '')
+        end
+    end
+    if only_quick(tiers) and awaits_quick(id) then return pending(id) end
+    return missing(ph, 'no such quantity in results/' .. id .. '/{' .. table.concat(tiers, ',') .. '}/summary.tsv',
+                   'missing: ' .. spec .. ':' .. q)
+end
+
+local function inline_verdict(id)
+    local v = verdict_of(id)
+    if v.tier == '-' then return missing('{{verdict:' .. id .. '}}', 'no results for ' .. id, 'missing verdict: ' .. id) end
+    return '**' .. v.verdict .. '** (' .. v.tier .. ' tier)'
+end
+
+local function inline_cpu(spec)
+    local tier, cpu
+    if spec:find('@', 1, true) then
+        local id = before_last(spec, '@'); tier = after_last(spec, '@')
+        if tier == 'quick' and awaits_quick(id) then return pending(id) end
+        cpu = valid_result(id, tier) and provenance(id, tier, 'cpu_seconds') or ''
+        if not valid_result(id, tier) then tier = '-' end
+    else
+        local v = verdict_of(spec); tier, cpu = v.tier, v.cpu
+    end
+    if tier == '-' or cpu == '' or cpu == '-' then
+        return missing('{{cpu:' .. spec .. '}}', 'no results or no cpu_seconds for ' .. spec, 'missing CPU time: ' .. spec)
+    end
+    return fmt('%.0f', cpu) .. (tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
+end
+
+-- a quantity Q of experiment ID[@TIER] (or OTHER/EXP[@TIER]#Q, or a number) as {{ID:Q}} finds it:
+-- returns 'ok', value, stderr, tier ('-' for a number) | 'missing' | 'quick', id (awaits the quick tier)
+local function quantity_of(spec, q)
+    if is_number(q) then return 'ok', q, '0', '-' end
+    if q:find('#', 1, true) then spec, q = before(q, '#'), after(q, '#') end
+    local id, tiers = id_and_tiers(spec)
+    for _, t in ipairs(tiers) do
+        if valid_result(id, t) then
+            local v, se = summary_value(id, t, q)
+            if v then return 'ok', v, se, t end
+        end
+    end
+    if only_quick(tiers) and awaits_quick(id) then return 'quick', id end
+    return 'missing'
+end
+
+local function derived_text(kind, a, sa, b, sb)
+    if not sa:match('^[0-9.eE+%-]+$') then sa = '0' end
+    if not sb:match('^[0-9.eE+%-]+$') then sb = '0' end
+    a, sa, b, sb = awk_number(a), awk_number(sa), awk_number(b), awk_number(sb)
+    local d = math.sqrt(sa * sa + sb * sb)
+    if kind == 'diff' then return string.format(d > 0 and '%+.4g +- %.2g' or '%+.4g', a - b, d) end
+    if kind == 'sigmas' then if d == 0 then return nil end; return string.format('%.1f', (a - b) / d) end
+    if a == 0 or b == 0 then return nil end
+    local r = a / b
+    local e = math.abs(r) * math.sqrt((sa / a) ^ 2 + (sb / b) ^ 2)
+    if kind == 'pct' then return string.format(e > 0 and '%+.2g +- %.2g %%' or '%+.2g %%', 100 * (r - 1), 100 * e) end
+    return string.format(e > 0 and '%.3g +- %.2g' or '%.3g', r, e)
+end
+
+-- split "A<op>B" where names may hold the operator (1e-10, phan-thien-2016/...): at the first place
+-- where A resolves; returns a, b ('ok'), or the experiment awaiting its quick tier, or nil
+local function split_operands(id, spec, op)
+    local head, tail, first_a, awaiting = '', spec, nil, nil
+    while tail:find(op, 1, true) do
+        head = head .. before(tail, op); tail = after(tail, op)
+        local a, b = head, tail
+        first_a = first_a or (a ~= '' and a or nil)
+        if a ~= '' then
+            local status, qid = quantity_of(id, a)
+            if status == 'ok' then return 'ok', a, b end
+            if status == 'quick' and not awaiting and quantity_of(id, b) ~= 'missing' then awaiting = qid end
+        end
+        head = head .. op
+    end
+    if awaiting then return 'quick', awaiting end
+    return 'missing', first_a or ''
+end
+
+local function inline_derived(kind, arg)
+    local ph, shown = '{{' .. kind .. ':' .. arg .. '}}', 'missing: ' .. kind .. ':' .. arg
+    local op = (kind == 'sigmas' or kind == 'diff') and '-' or '/'
+    local id, spec = before(arg, ':'), after(arg, ':') or arg
+    if not spec:find(op, 1, true) then return missing(ph, 'expected ' .. kind .. ':PAPER/EXP:A' .. op .. 'B', shown) end
+    local status, a, b = split_operands(id, spec, op)
+    if status == 'quick' then return pending(a) end
+    if status == 'missing' then return missing(ph, 'no quantity ' .. a .. ' for ' .. id, shown) end
+    local _, av, as, at = quantity_of(id, a)
+    local sb, bv, bs, bt = quantity_of(id, b)
+    if sb == 'quick' then return pending(bv) end
+    if sb ~= 'ok' then return missing(ph, 'no quantity ' .. b .. ' for ' .. id, shown) end
+    local v = derived_text(kind, av, as, bv, bs)
+    if not v then return missing(ph, 'cannot compute (zero value or zero error)', shown) end
+    local mark
+    for _, t in ipairs({ at, bt }) do if t ~= '-' and t ~= 'paper' then mark = t end end
+    return v .. (mark and ' (' .. mark .. ' tier)' or '')
+end
+
+-- one cell of a TSV file: the cell text, or nil and the reason
+local function tsv_cell(lines, row, col, raw)
+    local keys
+    if row:find('=', 1, true) then
+        keys = {}
+        for _, kv in ipairs(split(row, '&')) do keys[#keys + 1] = { before(kv, '='), after(kv, '=') or '' } end
+    end
+    local vname, sename = col, nil
+    if col:find('+-', 1, true) then vname, sename = before(col, '+-'), after(col, '+-') end
+    local columns
+    local function num(s, p) return raw and s or fmt_if_number(p, s) end
+    for _, l in ipairs(lines) do
+        if not (l:match('^#') or l:match('^[ \t]*$')) then
+            local f = split(l, '\t')
+            if not columns then
+                columns = {}
+                for i, c in ipairs(f) do columns[c] = i end
+                for _, k in ipairs(keys or {}) do if not columns[k[1]] then return nil, 'no column ' .. k[1] end end
+                if not columns[vname] then return nil, 'no column ' .. vname end
+                if sename and not columns[sename] then return nil, 'no column ' .. sename end
+            else
+                local hit = f[1] == row
+                if keys then
+                    hit = true
+                    for _, k in ipairs(keys) do if (f[columns[k[1]]] or '') ~= k[2] then hit = false end end
+                end
+                if hit then
+                    local v = num(f[columns[vname]] or '', '%.4g')
+                    if sename then v = v .. ' +- ' .. num(f[columns[sename]] or '', '%.2g') end
+                    return v
+                end
+            end
+        end
+    end
+    return nil, columns and 'no row ' .. row or 'empty file'
+end
+
+-- {{tsv:PATH:ROW:COL}}: returns 'ok', text, tier ('' if not a result's file) | 'quick', id | 'error', markdown
+local function tsv_lookup(spec, raw)
+    local ph, shown = '{{tsv:' .. spec .. '}}', 'missing: tsv:' .. spec
+    local parts = split(spec, ':')
+    if #parts ~= 3 or parts[3] == '' then return 'error', missing(ph, 'expected tsv:PATH:ROW:COL', shown) end
+    local p, row, col = parts[1], parts[2], parts[3]
+    local id, tier = p:match('^results/([^/]*/[^/]*)/([^/]*)/.')
+    if id then
+        if not valid_result(id, tier) then
+            if tier == 'quick' and awaits_quick(id) then return 'quick', id end
+            return 'error', missing(ph, 'results/' .. id .. '/' .. tier .. ' is not a valid result (no summary.tsv or INCOMPLETE)', shown)
+        end
+    end
+    local lines = read_lines(ROOT .. '/' .. p)
+    if not lines then return 'error', missing(ph, 'no file ' .. p, shown) end
+    local v, why = tsv_cell(lines, row, col, raw)
+    if not v then return 'error', missing(ph, p .. ': ' .. why, shown) end
+    return 'ok', v, tier or ''
+end
+
+local function inline_tsv(spec)
+    local status, v, tier = tsv_lookup(spec, false)
+    if status == 'quick' then return pending(v) end
+    if status == 'error' then return v end
+    return v .. (tier ~= '' and tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
+end
+
+-- ---- {{calc:}}: a recursive-descent parser of + - * / ^ ( ), sqrt log exp and numbers;
+-- operands ([...]) are resolved to numbers before. Grammar (as awk's precedence):
+--   sum = product {(+|-) product};  product = unary {(*|/) unary};  unary = (+|-) unary | power;
+--   power = atom [^ unary];  atom = number | operand | (sum) | sqrt(sum) | log(sum) | exp(sum)
+local CALC_FUNCTIONS = { sqrt = math.sqrt, log = math.log, exp = math.exp }
+
+-- tokens of EXPR: {kind = 'num'|'op'|'fn'|'operand', text}; nil and the offending text if a
+-- character or a word is none of these
+local function calc_tokens(expr)
+    local tokens, i = {}, 1
+    while i <= #expr do
+        local c = expr:sub(i, i)
+        local num = expr:match('^%d+%.?%d*[eE][+-]?%d+', i) or expr:match('^%.%d+[eE][+-]?%d+', i)
+            or expr:match('^%d+%.?%d*', i) or expr:match('^%.%d+', i)
+        if c:match('%s') then i = i + 1
+        elseif num then tokens[#tokens + 1] = { kind = 'num', text = num }; i = i + #num
+        elseif c:match('[-+*/^()]') then tokens[#tokens + 1] = { kind = 'op', text = c }; i = i + 1
+        elseif c == '[' then
+            local body = expr:match('^%[([^]]+)%]', i)
+            if not body then return nil, expr:sub(i) end
+            tokens[#tokens + 1] = { kind = 'operand', text = body }; i = i + #body + 2
+        else
+            local word = expr:match('^%a+', i)
+            if word and CALC_FUNCTIONS[word] then tokens[#tokens + 1] = { kind = 'fn', text = word }; i = i + #word
+            else return nil, expr:sub(i) end
+        end
+    end
+    return tokens
+end
+
+-- the value of TOKENS, operands looked up in VALUES (by token index); error() on a syntax error
+local function calc_evaluate(tokens, values)
+    local pos = 1
+    local function peek() return tokens[pos] end
+    local function accept(text) if tokens[pos] and tokens[pos].kind == 'op' and tokens[pos].text == text then pos = pos + 1; return true end end
+    local function expect(text) if not accept(text) then error("expected '" .. text .. "'", 0) end end
+    local sum
+    local function atom()
+        local t = peek()
+        if not t then error('unexpected end', 0) end
+        pos = pos + 1
+        if t.kind == 'num' then return tonumber(t.text) * 1.0 end
+        if t.kind == 'operand' then return values[pos - 1] end
+        if t.kind == 'fn' then expect('('); local x = sum(); expect(')'); return CALC_FUNCTIONS[t.text](x) end
+        if t.text == '(' then local x = sum(); expect(')'); return x end
+        error("unexpected '" .. t.text .. "'", 0)
+    end
+    local unary
+    local function power() local x = atom(); if accept('^') then return x ^ unary() end; return x end
+    unary = function()
+        if accept('-') then return -unary() end
+        if accept('+') then return unary() end
+        return power()
+    end
+    local function product()
+        local x = unary()
+        while true do
+            if accept('*') then x = x * unary() elseif accept('/') then x = x / unary() else return x end
+        end
+    end
+    sum = function()
+        local x = product()
+        while true do
+            if accept('+') then x = x + product() elseif accept('-') then x = x - product() else return x end
+        end
+    end
+    local x = sum()
+    if pos <= #tokens then error("unexpected '" .. tokens[pos].text .. "'", 0) end
+    return x
+end
+
+-- an operand's number: 'ok', value, tier | 'quick', id | 'error', markdown (already reported)
+local function calc_operand(ph, shown, tok)
+    if tok:sub(1, 4) == 'tsv:' then
+        local status, v, tier = tsv_lookup(tok:sub(5), true)
+        if status ~= 'ok' then return status, v end
+        if not is_number(v) then return 'error', missing(ph, 'operand [' .. tok .. '] is not a finite number (' .. v .. ')', shown) end
+        return 'ok', tonumber(v) * 1.0, tier
+    end
+    local id, q = before(tok, ':'), after(tok, ':')
+    local want_se = q and q:match(':se$')
+    if want_se then q = q:sub(1, -4) end
+    local status, v, se, tier = 'missing'
+    if q then status, v, se, tier = quantity_of(id, q) end
+    if status == 'quick' then return 'quick', v end
+    if status ~= 'ok' then return 'error', missing(ph, 'operand [' .. tok .. ']: no such quantity', shown) end
+    if want_se then v = se end
+    if not is_number(v) then return 'error', missing(ph, 'operand [' .. tok .. '] is not a finite number (' .. v .. ')', shown) end
+    return 'ok', tonumber(v) * 1.0, tier
+end
+
+local function inline_calc(arg)
+    local ph, shown = '{{calc:' .. arg .. '}}', 'missing: calc:' .. arg
+    local format, expr = before(arg, ':'), after(arg, ':')
+    if not expr or not (format:match('^%%[-+ 0#]*%d*[eEfgG]$') or format:match('^%%[-+ 0#]*%d*%.%d+[eEfgG]$')) then
+        return missing(ph, 'expected calc:FMT:EXPR with FMT a printf number format (%.3g, %.0f ...)', shown)
+    end
+    local tokens, bad = calc_tokens(expr)
+    local values, mark, awaiting = {}, nil, nil
+    for i, t in ipairs(tokens or {}) do
+        if t.kind == 'operand' then
+            local status, v, tier = calc_operand(ph, shown, t.text)
+            if status == 'error' then return '**' .. shown .. '**' end   -- reported under its own name
+            if status == 'quick' then awaiting = v; values[i] = 1.0
+            else
+                values[i] = v
+                if tier ~= '' and tier ~= '-' and tier ~= 'paper' then mark = tier end
+            end
+        end
+    end
+    if not tokens then
+        return missing(ph, 'expression holds something other than numbers, operators and sqrt/log/exp (at "' .. bad .. '")', shown)
+    end
+    local ok, x = pcall(calc_evaluate, tokens, values)
+    if not ok then return missing(ph, 'cannot evaluate ' .. expr .. ': ' .. x, shown) end
+    if awaiting then return pending(awaiting) end     -- every other operand checked: not evaluated
+    if x ~= x or x == math.huge or x == -math.huge then return missing(ph, 'cannot evaluate ' .. expr .. ': not finite', shown) end
+    return string.format(format, x) .. (mark and ' (' .. mark .. ' tier)' or '')
+end
+
+local function inline_bench(arg)
+    local ph, shown = '{{bench:' .. arg .. '}}', 'missing: bench:' .. arg
+    local parts = split(arg, ':')
+    if #parts ~= 3 or parts[1] == '' or parts[1]:find('/', 1, true) or parts[3] == '' then
+        return missing(ph, 'expected bench:FILE:ROW:COL (FILE in bench/)', shown)
+    end
+    local file, row, col = parts[1], parts[2], parts[3]
+    local columns, value, date_commit = nil, '', ''
+    for _, l in ipairs(read_lines(ROOT .. '/bench/' .. file) or {}) do
+        if not (l:match('^#') or l:match('^[ \t]*$')) then
+            local f = split(l, '\t')
+            if not columns then columns = {}; for i, c in ipairs(f) do columns[c] = i end
+            else
+                if f[1] == 'date, commit' then date_commit = ' ' .. (f[2] or '') .. ', ' .. (f[3] or '') end
+                if f[1] == row and columns[col] and (f[columns[col]] or '') ~= '' then value = f[columns[col]] end
+            end
+        end
+    end
+    if value == '' then return 'not measured (run `make bench`)' end
+    return value .. ' (`make bench`' .. date_commit .. ')'
+end
+
+-- the markdown of inline placeholder {{KIND:ARG}}
+local function expand_inline(kind, arg)
+    if kind == 'verdict' then return inline_verdict(arg)
+    elseif kind == 'cpu' then return inline_cpu(arg)
+    elseif kind == 'tsv' then return inline_tsv(arg)
+    elseif kind == 'pct' or kind == 'ratio' or kind == 'diff' or kind == 'sigmas' then return inline_derived(kind, arg)
+    elseif kind == 'calc' then return inline_calc(arg)
+    elseif kind == 'bench' then return inline_bench(arg)
+    else return inline_value(kind, arg) end
+end
+
+-- ---------------------------------------------------------------- the document tree
+
+local INLINE_RE = '{{([^:}\n]+):([^}\n]+)}}'
+local MARKDOWN_OUT = { wrap_text = 'wrap-preserve' }
+
+-- the markdown of a placeholder as written back by pandoc's writer, back to its source text
+local function unescape(s) return (s:gsub('\\(%p)', '%1')) end
+
+-- a line of written markdown that is a raw HTML comment alone: the comment
+local function raw_comment_line(l) return l:match('^`+(<!%-%-.-%-%->)`+{=html}$') end
+
+-- every inline placeholder of markdown text MD replaced by its expansion; every line that is
+-- a block placeholder (a raw HTML comment alone on its line) by its blocks
+local function expand_markdown(md)
+    local lines = split(md, '\n')
+    for i, l in ipairs(lines) do
+        local comment = raw_comment_line(l)
+        local block = comment and expand_block(comment)
+        if block then lines[i] = block
+        else
+            local out, pos = {}, 1
+            while true do
+                local s, e, kind, arg = l:find(INLINE_RE, pos)
+                if not s then out[#out + 1] = l:sub(pos); break end
+                out[#out + 1] = l:sub(pos, s - 1)
+                out[#out + 1] = expand_inline(unescape(kind), unescape(arg))
+                pos = e + 1
+            end
+            lines[i] = table.concat(out)
+        end
+    end
+    return table.concat(lines, '\n')
+end
+
+local function holds_placeholder(md)
+    if md:find(INLINE_RE) then return true end
+    for _, l in ipairs(split(md, '\n')) do
+        local comment = raw_comment_line(l)
+        if comment and block_placeholder(comment) then return true end
+    end
+    return false
+end
+
+-- read with the options of the document's own reading (its columns decide a pipe table's widths)
+local function read_markdown(md) return pandoc.read(md, 'markdown', PANDOC_READER_OPTIONS).blocks end
+
+-- The markdown reader may pair a '*' or '^' inside a placeholder with one in another placeholder or
+-- in the text ("[a]^2*1500}} in torque^2 ... ([b]/0.005)^2}}" holds a superscript); such a container,
+-- which straddles a placeholder's braces, is put back as its delimiters around its content.
+local DELIMITERS = { Emph = '*', Strong = '**', Superscript = '^', Subscript = '~', Strikeout = '~~' }
+local function straddles_braces(el)
+    local text = pandoc.utils.stringify(el):gsub('{{[^{}]-}}', '')
+    return text:find('{{', 1, true) or text:find('}}', 1, true)
+end
+local function unpair_delimiters(inlines)
+    local out = pandoc.List()
+    for _, el in ipairs(inlines) do
+        local d = DELIMITERS[el.t]
+        if d and straddles_braces(el) then
+            out:insert(pandoc.Str(d)); out:extend(unpair_delimiters(el.content)); out:insert(pandoc.Str(d))
+        else
+            if d then el.content = unpair_delimiters(el.content) end
+            out:insert(el)
+        end
+    end
+    return out
+end
+
+-- a paragraph (or plain block) holding placeholders: written back to markdown, filled, read again
+local function fill_inlines(block)
+    local raw = false
+    for _, el in ipairs(block.content) do if el.t == 'RawInline' and el.format == 'html' then raw = true end end
+    if not raw and not pandoc.utils.stringify(block):find('{{', 1, true) then return nil end
+    block.content = unpair_delimiters(block.content)
+    local md = pandoc.write(pandoc.Pandoc({ block }), 'markdown', MARKDOWN_OUT)
+    if not holds_placeholder(md) then return nil end
+    local blocks = read_markdown(expand_markdown(md))
+    if block.t == 'Plain' and #blocks == 1 and blocks[1].t == 'Para' then return pandoc.Plain(blocks[1].content) end
+    return blocks
+end
+
+-- a raw HTML comment block that is a block placeholder: its blocks
+local function fill_raw_block(block)
+    if block.format ~= 'html' then return nil end
+    local md = expand_block(block.text)
+    if md == nil then return nil end
+    return read_markdown(md)
+end
+
+-- at the end: a placeholder the walk did not reach (a heading, metadata) is an error, not left as is
+local function report_leftovers(doc)
+    local text = pandoc.write(doc, 'markdown', MARKDOWN_OUT)
+    for kind, arg in text:gmatch(INLINE_RE) do
+        problem('{{' .. unescape(kind) .. ':' .. unescape(arg) .. '}}', 'placeholder in a place the filter does not fill (a heading, the metadata)')
+    end
+end
+
+local function finish(doc)
+    report_leftovers(doc)
+    if npend > 0 then
+        local n = 0; for _ in pairs(pending_ids) do n = n + 1 end
+        io.stderr:write(string.format('%s: %d placeholder(s) await the quick tier of %d experiment(s), which is not committed: '
+            .. 'marked "(quick tier: run `make figures`)"; `make figures` computes it\n', NAME, npend, n))
+    end
+    if nerr > 0 then
+        io.stderr:write(string.format('%s: %d placeholder(s) could not be filled; no output written\n', NAME, nerr))
+        os.exit(1)
+    end
+    return doc
+end
+
+return {
+    { RawBlock = fill_raw_block, Para = fill_inlines, Plain = fill_inlines },
+    { Pandoc = finish },
+}
