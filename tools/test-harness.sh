@@ -192,6 +192,9 @@ has "check: default run lists x/y" '^x/y '
 has "check: default run count" '^6 passed, 8 failed, 1 unresolved'
 lacks "check: no awk errors" 'awk:'
 T "check: bad option" 2 "$C" --bogus
+T "check --tsv: the band rows, exit 0 on a failure" 0 "$C" --tsv x/out
+has "check --tsv: a row as lib/bands.awk gives it" "^x/out	q	5.5	0.1	1	2	0	1.5	FAIL	"
+lacks "check --tsv: no table" 'passed'
 
 # ---------------------------------------------------------------- the paper filter
 # M [-i IN] [-o OUT.md]: tools/render-paper's markdown output of the filter (default OUT: $G),
@@ -425,6 +428,46 @@ touch -d '2003-01-01' "$root/results/x/paperonly/quick/summary.tsv"
 T "paper-filter: a stale quick figure stays an error" 1 "$M" -i "$root/quick.md" -o "$QG"
 has "paper-filter: stale quick figure named" 'plot-quick.png is older than results/x/paperonly/quick/summary.tsv'
 rm -rf "$root/results/x/paperonly/quick" "$root/figures/x/paperonly"
+
+# {{calc:}}'s parser: precedence and associativity as awk's, functions, operands; the '*' and '^'
+# of expressions that the markdown reader pairs with each other or with the text around
+cat > "$root/calc.md" <<'EOF2'
+c1 {{calc:%.0f:2^3^2}} c2 {{calc:%.0f:-2^2}} c3 {{calc:%.2f:2^-1}} c4 {{calc:%.0f:2+3*4-6/2}} c5 {{calc:%.3f:exp(log(2))+sqrt([x/y:eta]-[x/y:eta]+4)}} c6 {{calc:%.2f:-(1+2)*-[x/y:eta:se]}} c7 {{calc:%.0f: 1 + 2 }} c8 {{calc:%g:1e3/4}}.
+s1 {{calc:%.0f:[x/y:eta]*2}} and {{calc:%.0f:2*[x/y:eta]}} s2 {{calc:%.0f:[x/y:eta:se]^2*100}} in x^2 y {{calc:%.0f:100*([x/y:eta:se])^2}} s3 *{{x/y:eta}}* s4 {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
+
+| what | value |
+|---|---|
+| eta | {{x/y:eta}} |
+
+before
+<!-- figure: x/y/fig.png | inline -->
+after
+EOF2
+CG="$root/build/calc.gen.md"
+T "paper-filter: calc, emphasis, table cells, a figure line in a paragraph" 0 "$M" -i "$root/calc.md" -o "$CG"
+# 2^(3^2); -(2^2); 2^(-1); 2 + 12 - 3; 2 + sqrt(4); -3 x -0.3; 3; 250
+in_file "paper-filter: calc as awk: ^ right-associative and above unary minus, functions, operands" "$CG" \
+    '^c1 512 c2 -4 c3 0.50 c4 11 c5 4.000 c6 0.90 c7 3 c8 250\.$'
+# 30.9 x 2; 0.3^2 x 100 (the reader's superscript across "x^2 y" undone: plain spaces, no NBSP)
+in_file "paper-filter: '*' and '^' of expressions are not emphasis or superscripts" "$CG" \
+    '^s1 62 and 62 s2 9 in x^2 y 9 s3 \*30.9 +- 0.3\* s4 1.49\.$'
+in_file "paper-filter: a placeholder in a table cell" "$CG" '^| eta | 30.9 +- 0.3 |$'
+if awk '/^before$/ { getline a; getline b; ok = (a == "![inline](figures/x/y/fig.png)" && b == "after") } END { exit !ok }' "$CG"; then
+    ok "paper-filter: a figure line inside a paragraph stays in it"
+else bad "paper-filter: a figure line inside a paragraph left it" "$CG"; fi
+printf '%s\n' '# Heading {{x/y:eta}}' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
+    'e {{calc:%.1f:log(-1)}} f {{calc:%.1f:[x/y:eta]e}} g {{calc:%.1f:os.exit(0)}} h {{calc:%.1f:[x/y:eta}}' > "$root/calcbad.md"
+T "paper-filter: malformed expressions fail" 1 "$M" -i "$root/calcbad.md" -o "$root/build/calcbad.gen.md"
+has "paper-filter: an expression ending early" '{{calc:%.1f:1+}}: cannot evaluate 1+: unexpected end'
+has "paper-filter: an unclosed parenthesis" "{{calc:%.1f:(1}}: cannot evaluate (1: expected ')'"
+has "paper-filter: two operators" "{{calc:%.1f:2\*\*3}}: cannot evaluate 2\*\*3: unexpected '\*'"
+has "paper-filter: a function without parentheses" "{{calc:%.1f:sqrt 4}}: cannot evaluate sqrt 4: expected '('"
+has "paper-filter: a non-finite result" '{{calc:%.1f:log(-1)}}: cannot evaluate log(-1): not finite'
+has "paper-filter: a letter after an operand" '{{calc:%.1f:\[x/y:eta\]e}}: expression holds something other'
+has "paper-filter: a name other than sqrt, log, exp" '{{calc:%.1f:os.exit(0)}}: expression holds something other'
+has "paper-filter: an unclosed operand" '{{calc:%.1f:\[x/y:eta}}: expression holds something other'
+has "paper-filter: a placeholder in a heading is an error" 'calcbad.md:1: {{x/y:eta}}: placeholder in a place the filter does not fill'
+has "paper-filter: counts them" '^paper-filter: 9 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then

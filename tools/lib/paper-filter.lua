@@ -821,7 +821,7 @@ local function expand_markdown(md)
     for i, l in ipairs(lines) do
         local comment = raw_comment_line(l)
         local block = comment and expand_block(comment)
-        if block then lines[i] = block
+        if block then lines[i] = block:gsub('\n$', '')     -- the line's own end is the join's
         else
             local out, pos = {}, 1
             while true do
