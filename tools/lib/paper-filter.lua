@@ -62,7 +62,6 @@ local ALLOW = os.getenv('MKPAPER_ALLOW_MISSING') == '1'
 local FRESHNESS = os.getenv('MKPAPER_FRESHNESS') or (ROOT .. '/build/freshness.tsv')
 local TIERS = { 'paper', 'reduced', 'quick' }
 local QUICK_MARK = '*(quick tier: run `make figures`)*'
-local NUM_RE = nil   -- see is_number
 
 -- ---------------------------------------------------------------- strings and numbers
 
@@ -119,13 +118,13 @@ local function read_lines(path)         -- nil if unreadable; '\r' of CRLF files
     f:close(); return t
 end
 local function shell_quote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
+-- the lines a shell command prints, and whether it exited 0
 local function command_lines(cmd)
     local p = io.popen(cmd); local t = {}
     for l in p:lines() do t[#t + 1] = l end
-    p:close(); return t
+    return t, p:close() == true
 end
-local function first_line(cmd) return command_lines(cmd .. ' 2>/dev/null')[1] or '' end
-local function relative(path) return path:sub(1, #ROOT + 1) == ROOT .. '/' and path:sub(#ROOT + 2) or path end
+local function first_line(cmd) return command_lines('{ ' .. cmd .. '; } 2>/dev/null')[1] or '' end
 
 -- ---------------------------------------------------------------- reporting
 
@@ -193,7 +192,9 @@ local function band_rows(id, tier)
     if not band_cache[tier] then
         local by = {}
         local cmd = 'DPD_ROOT=' .. shell_quote(ROOT) .. ' ' .. shell_quote(TOOLS .. '/check') .. ' --tsv --tier ' .. shell_quote(tier)
-        for _, l in ipairs(command_lines(cmd)) do
+        local lines, ok = command_lines(cmd)
+        if not ok then problem('tools/check --tsv --tier ' .. tier, 'failed (its rows give every verdict)') end
+        for _, l in ipairs(lines) do
             local f = split(l, '\t')
             by[f[1]] = by[f[1]] or {}
             table.insert(by[f[1]], f)
@@ -586,41 +587,50 @@ local function inline_derived(kind, arg)
     return v .. (mark and ' (' .. mark .. ' tier)' or '')
 end
 
--- one cell of a TSV file: the cell text, or nil and the reason
-local function tsv_cell(lines, row, col, raw)
-    local keys
-    if row:find('=', 1, true) then
-        keys = {}
-        for _, kv in ipairs(split(row, '&')) do keys[#keys + 1] = { before(kv, '='), after(kv, '=') or '' } end
-    end
-    local vname, sename = col, nil
-    if col:find('+-', 1, true) then vname, sename = before(col, '+-'), after(col, '+-') end
-    local columns
-    local function num(s, p) return raw and s or fmt_if_number(p, s) end
+-- the lines of a TSV file that are data ('#' and blank lines skipped), split: the header's fields
+-- (nil for no data), its columns by name, the other rows
+local function tsv_rows(lines)
+    local header, columns, rows = nil, {}, {}
     for _, l in ipairs(lines) do
         if not (l:match('^#') or l:match('^[ \t]*$')) then
-            local f = split(l, '\t')
-            if not columns then
-                columns = {}
-                for i, c in ipairs(f) do columns[c] = i end
-                for _, k in ipairs(keys or {}) do if not columns[k[1]] then return nil, 'no column ' .. k[1] end end
-                if not columns[vname] then return nil, 'no column ' .. vname end
-                if sename and not columns[sename] then return nil, 'no column ' .. sename end
-            else
-                local hit = f[1] == row
-                if keys then
-                    hit = true
-                    for _, k in ipairs(keys) do if (f[columns[k[1]]] or '') ~= k[2] then hit = false end end
-                end
-                if hit then
-                    local v = num(f[columns[vname]] or '', '%.4g')
-                    if sename then v = v .. ' +- ' .. num(f[columns[sename]] or '', '%.2g') end
-                    return v
-                end
-            end
+            if header then rows[#rows + 1] = split(l, '\t')
+            else header = split(l, '\t'); for i, c in ipairs(header) do columns[c] = i end end
         end
     end
-    return nil, columns and 'no row ' .. row or 'empty file'
+    return header, columns, rows
+end
+
+-- ROW -> the columns it names and a test of a row: its first field is ROW, or, for
+-- NAME=VALUE[&NAME=VALUE...], column NAME holds VALUE for every pair
+local function row_test(row)
+    if not row:find('=', 1, true) then return {}, function(f) return f[1] == row end end
+    local keys, names = {}, {}
+    for _, kv in ipairs(split(row, '&')) do
+        keys[#keys + 1] = { before(kv, '='), after(kv, '=') or '' }; names[#names + 1] = keys[#keys][1]
+    end
+    return names, function(f, columns)
+        for _, k in ipairs(keys) do if (f[columns[k[1]]] or '') ~= k[2] then return false end end
+        return true
+    end
+end
+
+-- one cell of a TSV file (COL, or VCOL+-SECOL for "value +- stderr"; numbers printed to 4 and 2
+-- digits unless RAW): the cell text, or nil and the reason
+local function tsv_cell(lines, row, col, raw)
+    local header, columns, rows = tsv_rows(lines)
+    if not header then return nil, 'empty file' end
+    local vname, sename = col, nil
+    if col:find('+-', 1, true) then vname, sename = before(col, '+-'), after(col, '+-') end
+    local names, matches = row_test(row)
+    names[#names + 1] = vname; names[#names + 1] = sename
+    for _, n in ipairs(names) do if not columns[n] then return nil, 'no column ' .. n end end
+    local function cell(f, name, p) local c = f[columns[name]] or ''; return raw and c or fmt_if_number(p, c) end
+    for _, f in ipairs(rows) do
+        if matches(f, columns) then
+            return cell(f, vname, '%.4g') .. (sename and ' +- ' .. cell(f, sename, '%.2g') or '')
+        end
+    end
+    return nil, 'no row ' .. row
 end
 
 -- {{tsv:PATH:ROW:COL}}: returns 'ok', text, tier ('' if not a result's file) | 'quick', id | 'error', markdown
@@ -777,16 +787,11 @@ local function inline_bench(arg)
         return missing(ph, 'expected bench:FILE:ROW:COL (FILE in bench/)', shown)
     end
     local file, row, col = parts[1], parts[2], parts[3]
-    local columns, value, date_commit = nil, '', ''
-    for _, l in ipairs(read_lines(ROOT .. '/bench/' .. file) or {}) do
-        if not (l:match('^#') or l:match('^[ \t]*$')) then
-            local f = split(l, '\t')
-            if not columns then columns = {}; for i, c in ipairs(f) do columns[c] = i end
-            else
-                if f[1] == 'date, commit' then date_commit = ' ' .. (f[2] or '') .. ', ' .. (f[3] or '') end
-                if f[1] == row and columns[col] and (f[columns[col]] or '') ~= '' then value = f[columns[col]] end
-            end
-        end
+    local _, columns, rows = tsv_rows(read_lines(ROOT .. '/bench/' .. file) or {})
+    local value, date_commit = '', ''
+    for _, f in ipairs(rows) do
+        if f[1] == 'date, commit' then date_commit = ' ' .. (f[2] or '') .. ', ' .. (f[3] or '') end
+        if f[1] == row and columns[col] and (f[columns[col]] or '') ~= '' then value = f[columns[col]] end
     end
     if value == '' then return 'not measured (run `make bench`)' end
     return value .. ' (`make bench`' .. date_commit .. ')'
