@@ -455,7 +455,7 @@ in_file "paper-filter: a placeholder in a table cell" "$CG" '^| eta | 30.9 +- 0.
 if awk '/^before$/ { getline a; getline b; ok = (a == "![inline](figures/x/y/fig.png)" && b == "after") } END { exit !ok }' "$CG"; then
     ok "paper-filter: a figure line inside a paragraph stays in it"
 else bad "paper-filter: a figure line inside a paragraph left it" "$CG"; fi
-printf '%s\n' '# Heading {{x/y:eta}}' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
+printf '%s\n' '---' 'subtitle: "{{x/y@paper:eta}}"' '---' '# Heading {{x/y:eta}}' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
     'e {{calc:%.1f:log(-1)}} f {{calc:%.1f:[x/y:eta]e}} g {{calc:%.1f:os.exit(0)}} h {{calc:%.1f:[x/y:eta}}' > "$root/calcbad.md"
 T "paper-filter: malformed expressions fail" 1 "$M" -i "$root/calcbad.md" -o "$root/build/calcbad.gen.md"
 has "paper-filter: an expression ending early" '{{calc:%.1f:1+}}: cannot evaluate 1+: unexpected end'
@@ -466,8 +466,9 @@ has "paper-filter: a non-finite result" '{{calc:%.1f:log(-1)}}: cannot evaluate 
 has "paper-filter: a letter after an operand" '{{calc:%.1f:\[x/y:eta\]e}}: expression holds something other'
 has "paper-filter: a name other than sqrt, log, exp" '{{calc:%.1f:os.exit(0)}}: expression holds something other'
 has "paper-filter: an unclosed operand" '{{calc:%.1f:\[x/y:eta}}: expression holds something other'
-has "paper-filter: a placeholder in a heading is an error" 'calcbad.md:1: {{x/y:eta}}: placeholder in a place the filter does not fill'
-has "paper-filter: counts them" '^paper-filter: 9 placeholder(s) could not be filled'
+has "paper-filter: a placeholder in a heading is an error" 'calcbad.md:4: {{x/y:eta}}: placeholder in a place the filter does not fill'
+has "paper-filter: a placeholder in the metadata is an error" 'calcbad.md:2: {{x/y@paper:eta}}: placeholder in a place the filter does not fill'
+has "paper-filter: counts them" '^paper-filter: 10 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then

@@ -899,7 +899,7 @@ end
 
 -- at the end: a placeholder the walk did not reach (a heading, metadata) is an error, not left as is
 local function report_leftovers(doc)
-    local text = pandoc.write(doc, 'markdown', MARKDOWN_OUT)
+    local text = pandoc.write(doc, 'markdown', MARKDOWN_OUT) .. '\n' .. pandoc.utils.stringify(doc.meta)
     for kind, arg in text:gmatch(INLINE_RE) do
         problem('{{' .. unescape(kind) .. ':' .. unescape(arg) .. '}}', 'placeholder in a place the filter does not fill (a heading, the metadata)')
     end
