@@ -2,6 +2,9 @@
 # Environment from tools/run-experiment: DPD (simulator), TIER, OUT (result dir).
 set -euo pipefail
 : "${DPD:?run through tools/run-experiment}" "${OUT:?}" "${TIER:?}"
+# the statistics (means, errors, fits, propagation) are num_* functions of one tested
+# library, tools/lib/numerics.awk, called through num_awk
+. "$DPD_ROOT/tools/lib/numerics.sh"
 mkdir -p "$OUT/runs"
 [ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
 
@@ -167,27 +170,27 @@ emit_from() {
 emit_diff() {
     local a b
     a=$(get "$2" "$3") b=$(get "$4" "$5")
-    awk -F'\t' -v q="$1" -v a="$a" -v b="$b" 'BEGIN{split(a,x,"\t"); split(b,y,"\t");
-        printf "%s\t%.10g\t%.4g\n", q, x[1]-y[1], sqrt(x[2]^2+y[2]^2)}' >> "$OUT/summary.tsv"
+    num_awk -v q="$1" -v a="$a" -v b="$b" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
+        num_diff(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
 }
 
 # emit_ratio QUANTITY NAME1 Q1 NAME2 Q2: value1 / value2 with first-order error propagation.
 emit_ratio() {
     local a b
     a=$(get "$2" "$3") b=$(get "$4" "$5")
-    awk -F'\t' -v q="$1" -v a="$a" -v b="$b" 'BEGIN{split(a,x,"\t"); split(b,y,"\t"); r=x[1]/y[1];
-        printf "%s\t%.10g\t%.4g\n", q, r, (r<0?-r:r)*sqrt((x[2]/x[1])^2+(y[2]/y[1])^2)}' >> "$OUT/summary.tsv"
+    num_awk -v q="$1" -v a="$a" -v b="$b" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
+        num_ratio(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
 }
 
 # emit_mean AS QUANTITY NAME...: mean over independent runs of a run quantity,
-# standard error = sample standard deviation / sqrt(number of runs).
+# standard error = sample standard deviation / sqrt(number of runs) (0 for a single run).
 emit_mean() {
     local as=$1 q=$2; shift 2
     local vals="" n
     for n in "$@"; do vals="$vals $(get "$n" "$q" | cut -f1)" || return 1; done
-    awk -v q="$as" -v v="$vals" 'BEGIN{k=split(v,x," "); s=0; for(i=1;i<=k;i++) s+=x[i]; m=s/k;
-        ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; se=(k>1)?sqrt(ss/(k-1)/k):0;
-        printf "%s\t%.10g\t%.4g\n", q, m, se}' >> "$OUT/summary.tsv"
+    num_awk -v q="$as" -v v="$vals" 'BEGIN { k = split(v, x, " "); num_mean_se(x, k, o)
+        if (k == 1) o["se"] = 0
+        print num_row(q, o) }' >> "$OUT/summary.tsv"
 }
 
 # lattice_pair KP:KQ DIGITS - the Mai-Duy et al. suspensions: the paper's KP^3
@@ -215,8 +218,8 @@ emit_drag_torque() {
     emit "torque_theory_row$r" "$Tth" 0
     for q in drag torque; do
         [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
-        printf '%s\t%s\n' "$v" "$u" | awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{ x = $1/t
-            printf "%s\t%.10g\t%.4g\n", q, x, (x < 0 ? -x : x) * sqrt(($2/$1)^2 + ($4/$3)^2) }' >> "$OUT/summary.tsv"
+        printf '%s\t%s\n' "$v" "$u" | num_awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{
+            num_rel2($1 / t, $1, $2, $3, $4, o); print num_row(q, o) }' >> "$OUT/summary.tsv"
     done
 }
 
@@ -225,23 +228,19 @@ emit_drag_torque() {
 # with measure.profile.per_block) and averaged; the error from the scatter of the block
 # slopes. The bins of one profile share the flow's fluctuations (and at m = 0 are solved
 # together), so a fit of the averaged profile taking its bins as independent understates it.
-block_slope() {
-    awk -F'\t' -v b="$2" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
-        $3>=r[1] && $3<=r[2] {k=$1; n[k]++; sx[k]+=$3; sy[k]+=$5; sxx[k]+=$3*$3; sxy[k]+=$3*$5}
-        END{for(k in n){s=(n[k]*sxy[k]-sx[k]*sy[k])/(n[k]*sxx[k]-sx[k]^2); m++; t+=s; tt+=s*s}
-            if(m<2){printf "nan\tnan\n"; exit} mean=t/m; printf "%.10g\t%.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
-        "$OUT/runs/$1/profile_blocks.tsv"
-}
+block_slope() { _blocks "$1" "$2" '$3 >= r[1] && $3 <= r[2]' num_block_slope; }
 
 # block_mean NAME LO:HI -> "mean<TAB>stderr": v_x averaged over the bins with LO < pos < HI
 # in each block's profile (runs/NAME/profile_blocks.tsv), then over the blocks; the error
 # from the scatter of the block means (neighbouring bins share the flow's fluctuations:
 # their errors do not add in quadrature).
-block_mean() {
-    awk -F'\t' -v b="$2" 'BEGIN{split(b,r,":")} NR==1||$5=="nan"{next}
-        $3>r[1] && $3<r[2] {n[$1]++; s[$1]+=$5}
-        END{for(k in n){x=s[k]/n[k]; m++; t+=x; tt+=x*x}
-            if(m<2){printf "nan\tnan\n"; exit} mean=t/m; printf "%.10g\t%.4g\n", mean, sqrt((tt/m-mean^2)/(m-1))}' \
+block_mean() { _blocks "$1" "$2" '$3 > r[1] && $3 < r[2]' num_block_mean; }
+# _blocks NAME LO:HI CONDITION FUNCTION: FUNCTION (numerics.awk) of the (pos, v_x) rows of
+# each block that meet CONDITION, blocks in the file's order
+_blocks() {
+    num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } NR == 1 || $5 == "nan" { next }
+        '"$3"' { num_block_add($1, $3, $5) }
+        END { '"$4"'(o); printf "%s\t%s\n", num_fmt("%.10g", o["v"]), num_fmt("%.4g", o["se"]) }' \
         "$OUT/runs/$1/profile_blocks.tsv"
 }
 
@@ -259,7 +258,8 @@ couette_viscosity() {
     local name=$1 lx=$2 bulk=$3 g gse tau tause
     read -r g gse < <(block_slope "$name" "$bulk" | tr '\t' ' ')
     read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get "$name" "force_on_${w}_x"; done |
-        awk -F'\t' -v lx="$lx" '{s=(NR<=2)?1:-1; v+=s*$1; e+=$2} END{printf "%.10g %.4g\n", v/(2*lx), e/(2*lx)}')
-    awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \
-        'BEGIN{e=t/g; printf "%s %s %s %s %.10g %.4g\n", g, gs, t, ts, e, e*sqrt((ts/t)^2+(gs/g)^2)}'
+        num_awk -F'\t' -v lx="$lx" '{ x[NR] = (NR <= 2 ? 1 : -1) * $1; se[NR] = $2 }
+            END { num_sum_linear(x, se, NR, o); printf "%.10g %.4g\n", o["v"] / (2 * lx), o["se"] / (2 * lx) }')
+    num_awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \
+        'BEGIN { num_ratio(t, ts, g, gs, o); printf "%s %s %s %s %.10g %.4g\n", g, gs, t, ts, o["v"], o["se"] }'
 }

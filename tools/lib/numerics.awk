@@ -1,0 +1,135 @@
+# tools/lib/numerics.awk - the statistics of the experiments' analyses, in one place.
+# Loaded before an analysis's own awk program by num_awk (tools/lib/numerics.sh):
+#     num_awk -F'\t' 'PROGRAM calling num_* functions' FILE...
+# POSIX awk (mawk, gawk, busybox). Every sum runs over indices 1..n in order, never
+# `for (k in a)` (whose order awk leaves undefined): a result's rounding does not depend
+# on the awk implementation. Tests: tests/numerics.sh (make test).
+#
+# Conventions. A sample is an array x[1..n] (se[1..n] for its errors). A function with
+# one result returns it; one with a value and an error fills the array o: o["v"] and
+# o["se"] (a fit: o["slope"], o["slope_se"], o["icpt"], o["icpt_se"], o["n"]) and returns
+# o["v"] (the slope). An undefined result is the string "nan" (num_fmt prints it as nan
+# whatever the awk). Errors: first order, operands independent, unless said otherwise.
+# Local variables are the extra parameters after the blank gap, as awk wants.
+
+# num_fmt(FMT, X): X printed with FMT, "nan" for the string nan
+function num_fmt(fmt, x) { return (x "" == "nan") ? "nan" : sprintf(fmt, x) }
+# num_row(Q, O): the summary row "Q<TAB>value<TAB>stderr" of O (%.10g, %.4g: emit's convention)
+function num_row(q, o) { return q "\t" num_fmt("%.10g", o["v"]) "\t" num_fmt("%.4g", o["se"]) }
+function num_abs(x) { return x < 0 ? -x : x }
+function num_set(o, v, se) { o["v"] = v; o["se"] = se; return v }
+
+# num_mean(X, N): the arithmetic mean, "nan" for N < 1
+function num_mean(x, n,    i, s) {
+    if (n < 1) return "nan"
+    for (i = 1; i <= n; i++) s += x[i]
+    return s / n
+}
+# num_mean_se(X, N, O): the mean and its standard error, sample standard deviation (two
+# passes: no cancellation) / sqrt(N), for N independent values (runs, blocks, seeds);
+# the error is "nan" for N < 2
+function num_mean_se(x, n, o,    i, m, ss) {
+    m = num_mean(x, n)
+    if (n < 2) return num_set(o, m, "nan")
+    for (i = 1; i <= n; i++) ss += (x[i] - m)^2
+    return num_set(o, m, sqrt(ss / (n - 1) / n))
+}
+# num_wmean_se(X, SE, N, O): the inverse-variance weighted mean and its error
+# 1 / sqrt(sum of the weights); "nan" when no value has a positive error
+function num_wmean_se(x, se, n, o,    i, w, sw, swx) {
+    for (i = 1; i <= n; i++) if (se[i] > 0) { w = 1 / se[i]^2; sw += w; swx += w * x[i] }
+    if (sw == 0) return num_set(o, "nan", "nan")
+    return num_set(o, swx / sw, 1 / sqrt(sw))
+}
+# num_sum_linear(X, SE, N, O): the sum of X[1..N] with the errors added linearly (fully
+# correlated operands, or an upper bound)
+function num_sum_linear(x, se, n, o,    i, v, e) {
+    for (i = 1; i <= n; i++) { v += x[i]; e += se[i] }
+    return num_set(o, v, e)
+}
+# num_quad(E, N): the errors E[1..N] added in quadrature
+function num_quad(e, n,    i, s) { for (i = 1; i <= n; i++) s += e[i]^2; return sqrt(s) }
+
+# two values with errors (a +- sa, b +- sb) into one
+function num_sum(a, sa, b, sb, o) { return num_set(o, a + b, sqrt(sa^2 + sb^2)) }
+function num_diff(a, sa, b, sb, o) { return num_set(o, a - b, sqrt(sa^2 + sb^2)) }
+# num_rel2(X, A, SA, B, SB, O): X, a product or quotient of powers +-1 of a and b, whose
+# relative error is a's and b's in quadrature
+function num_rel2(x, a, sa, b, sb, o) { return num_set(o, x, num_abs(x) * sqrt((sa / a)^2 + (sb / b)^2)) }
+function num_ratio(a, sa, b, sb, o) { return num_rel2(a / b, a, sa, b, sb, o) }
+function num_product(a, sa, b, sb, o) { return num_rel2(a * b, a, sa, b, sb, o) }
+# num_scale: f (a +- sa) for an exact factor f
+function num_scale(a, sa, f, o) { return num_set(o, a * f, sa * num_abs(f)) }
+
+# num_line(X, Y, N, O): unweighted least-squares line y = icpt + slope x; the errors from
+# the residuals (N - 2 degrees of freedom; "nan" for N < 3); "nan" for N < 2 or equal x
+function num_line(x, y, n, o,    i, sx, sy, sxx, sxy, d, b, a, r) {
+    o["n"] = n
+    for (i = 1; i <= n; i++) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }
+    d = n * sxx - sx^2
+    if (n < 2 || d == 0) { o["slope"] = o["icpt"] = o["slope_se"] = o["icpt_se"] = "nan"; return "nan" }
+    b = (n * sxy - sx * sy) / d; a = (sy - b * sx) / n
+    o["slope"] = b; o["icpt"] = a
+    if (n < 3) { o["slope_se"] = o["icpt_se"] = "nan"; return b }
+    for (i = 1; i <= n; i++) r += (y[i] - a - b * x[i])^2
+    o["slope_se"] = sqrt(r / (n - 2) * n / d); o["icpt_se"] = sqrt(r / (n - 2) * sxx / d)
+    return b
+}
+# num_wline(X, Y, SE, N, O): the weighted (1 / SE^2) least-squares line; the errors from
+# SE (not from the scatter), as a chi-square fit with known errors; rows with SE <= 0
+# are left out; "nan" for fewer than 2 rows or equal x
+function num_wline(x, y, se, n, o,    i, w, sw, sx, sy, sxx, sxy, d, b, m) {
+    for (i = 1; i <= n; i++) if (se[i] > 0) {
+        w = 1 / se[i]^2; m++
+        sw += w; sx += w * x[i]; sy += w * y[i]; sxx += w * x[i] * x[i]; sxy += w * x[i] * y[i]
+    }
+    o["n"] = m
+    d = sw * sxx - sx^2
+    if (m < 2 || d == 0) { o["slope"] = o["icpt"] = o["slope_se"] = o["icpt_se"] = "nan"; return "nan" }
+    b = (sw * sxy - sx * sy) / d
+    o["slope"] = b; o["icpt"] = (sy - b * sx) / sw
+    o["slope_se"] = sqrt(sw / d); o["icpt_se"] = sqrt(sxx / d)
+    return b
+}
+
+# num_interp(X, Y, SE, N, XQ, XQSE, O): Y (tabulated at increasing X[1..N]) at XQ, linear
+# between the two bracketing points; the error from theirs (weights 1 - f, f) and, through
+# the local slope, from XQ's; "nan" outside [X[1], X[N]]
+function num_interp(x, y, se, n, xq, xqse, o,    i, f, b) {
+    for (i = 1; i < n; i++) if (x[i] <= xq && xq <= x[i + 1]) {
+        f = (xq - x[i]) / (x[i + 1] - x[i]); b = (y[i + 1] - y[i]) / (x[i + 1] - x[i])
+        return num_set(o, (1 - f) * y[i] + f * y[i + 1], sqrt(((1 - f) * se[i])^2 + (f * se[i + 1])^2 + (b * xqse)^2))
+    }
+    return num_set(o, "nan", "nan")
+}
+
+# Blocks. num_block_add(K, X, Y) collects the point (X, Y) of block K (rows read in any
+# order); the blocks are kept in the order of their first row, so the statistics below
+# sum them in the file's order.
+function num_block_add(k, x, y) {
+    if (!((k, 0) in NUM_BLK)) { NUM_BLK[k, 0] = 0; NUM_BLKS[++NUM_NBLK] = k }
+    NUM_BLK[k, 0]++
+    NUM_BLK[k, "x", NUM_BLK[k, 0]] = x; NUM_BLK[k, "y", NUM_BLK[k, 0]] = y
+}
+# num_block_slope(O): each block's straight-line slope (num_line), then their mean and
+# standard error (num_mean_se: the blocks as independent samples); "nan" for fewer than
+# 2 blocks
+function num_block_slope(o,    j, i, k, m, x, y, l, s) {
+    for (j = 1; j <= NUM_NBLK; j++) {
+        k = NUM_BLKS[j]; m = NUM_BLK[k, 0]
+        for (i = 1; i <= m; i++) { x[i] = NUM_BLK[k, "x", i]; y[i] = NUM_BLK[k, "y", i] }
+        s[j] = num_line(x, y, m, l)
+    }
+    if (NUM_NBLK < 2) return num_set(o, "nan", "nan")
+    return num_mean_se(s, NUM_NBLK, o)
+}
+# num_block_mean(O): each block's mean of y, then their mean and standard error
+function num_block_mean(o,    j, i, k, m, y, s) {
+    for (j = 1; j <= NUM_NBLK; j++) {
+        k = NUM_BLKS[j]; m = NUM_BLK[k, 0]
+        for (i = 1; i <= m; i++) y[i] = NUM_BLK[k, "y", i]
+        s[j] = num_mean(y, m)
+    }
+    if (NUM_NBLK < 2) return num_set(o, "nan", "nan")
+    return num_mean_se(s, NUM_NBLK, o)
+}
