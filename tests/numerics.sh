@@ -1,0 +1,140 @@
+#!/bin/bash
+# numerics.sh - tools/lib/numerics.awk, the statistics of the experiments' analyses, through
+# num_awk (tools/lib/numerics.sh): every function on inputs whose result is known in closed
+# form. Tolerances: inputs of a few significant digits give results exact up to the roundings
+# of at most ~20 operations, each within half an ulp (1.1e-16 relative), so a relative 1e-14
+# holds every correct result and fails any wrong formula (a swapped n - 1, a missing square
+# root, an unweighted fit, a different row order) by far more. Where the order of a sum or
+# the form of a formula matters the expected value is the exact one and the wrong way's is
+# off by O(1) (cancellation tests). Prints "N passed, M failed".
+set -u
+cd "$(dirname "$0")/.."
+. tests/shlib.sh numerics
+. tools/lib/numerics.sh
+
+# is NAME GOT WANT [REL]: |GOT - WANT| <= REL |WANT| (default 1e-14; an absolute 1e-14 at 0),
+# "nan" only for "nan"
+is() {
+    local rel=${4:-1e-14}
+    if awk -v g="$2" -v w="$3" -v r="$rel" 'BEGIN {
+            if (w == "nan" || g == "nan") exit !(w == g)
+            d = g - w; t = r * (w < 0 ? -w : w); if (t == 0) t = r
+            exit !(d <= t && -d <= t) }'; then ok "$1"; else bad "$1" "got $2, want $3"; fi
+}
+# n PROGRAM: num_awk's output of a BEGIN-only program (%.17g: full precision)
+n() { num_awk "BEGIN { $1 }"; }
+
+# ---- formatting
+is "num_fmt of a number" "$(n 'print num_fmt("%.3f", 1.5)')" 1.500
+[ "$(n 'print num_fmt("%.3f", "nan")')" = nan ] && ok "num_fmt prints the string nan as nan" || bad "num_fmt nan" "$(n 'print num_fmt("%.3f", "nan")')"
+got=$(n 'o["v"] = 1/3; o["se"] = 2/3; print num_row("q", o)')
+[ "$got" = $'q\t0.3333333333\t0.6667' ] && ok "num_row: %.10g and %.4g" || bad "num_row" "$got"
+is "num_abs" "$(n 'print num_abs(-2.5) + num_abs(1)')" 3.5
+
+# ---- means
+is "num_mean of 1..4" "$(n 'x[1] = 1; x[2] = 2; x[3] = 3; x[4] = 4; printf "%.17g", num_mean(x, 4)')" 2.5
+is "num_mean of nothing is nan" "$(n 'print num_mean(x, 0)')" nan
+# 1..4: sample variance 5/3, standard error sqrt(5/3/4)
+got=$(n 'x[1] = 1; x[2] = 2; x[3] = 3; x[4] = 4; num_mean_se(x, 4, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_mean_se: mean" "${got% *}" 2.5
+is "num_mean_se: sd / sqrt(n)" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(5 / 12) }')"
+# the same shifted by 1e8: a one-pass variance (sum x^2 / n - mean^2) loses every digit here
+got=$(n 'for (i = 1; i <= 4; i++) x[i] = 1e8 + i; num_mean_se(x, 4, o); printf "%.17g", o["se"]')
+is "num_mean_se: two passes, no cancellation at an offset 1e8" "$got" "$(awk 'BEGIN { printf "%.17g", sqrt(5 / 12) }')"
+is "num_mean_se: one value has no error" "$(n 'x[1] = 3; num_mean_se(x, 1, o); print o["se"]')" nan
+# weights 1 and 4: (1 + 4 * 3) / 5, error 1 / sqrt(5); a row with se 0 is left out
+got=$(n 'x[1] = 1; s[1] = 1; x[2] = 3; s[2] = 0.5; x[3] = 100; s[3] = 0; num_wmean_se(x, s, 3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_wmean_se: weighted mean" "${got% *}" 2.6
+is "num_wmean_se: 1 / sqrt(sum of weights)" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 1 / sqrt(5) }')"
+is "num_wmean_se: no positive error gives nan" "$(n 'x[1] = 1; s[1] = 0; num_wmean_se(x, s, 1, o); print o["v"] o["se"]')" nannan
+
+# ---- combining values with errors
+is "num_quad: 3, 4 -> 5" "$(n 'e[1] = 3; e[2] = 4; printf "%.17g", num_quad(e, 2)')" 5
+got=$(n 'x[1] = 1; x[2] = -2; x[3] = 3; s[1] = 0.1; s[2] = 0.2; s[3] = 0.3; num_sum_linear(x, s, 3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_sum_linear: value" "${got% *}" 2
+is "num_sum_linear: errors added linearly" "${got#* }" 0.6
+got=$(n 'num_sum(5, 0.3, 3, 0.4, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_sum: value" "${got% *}" 8; is "num_sum: quadrature" "${got#* }" 0.5
+got=$(n 'num_diff(5, 0.3, 3, 0.4, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_diff: value" "${got% *}" 2; is "num_diff: quadrature" "${got#* }" 0.5
+# 6 +- 5 % over 3 +- 4 %: 2 +- 2 sqrt(0.05^2 + 0.04^2); a negative ratio keeps a positive error
+got=$(n 'num_ratio(6, 0.3, 3, 0.12, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_ratio: value" "${got% *}" 2; is "num_ratio: relative errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 2 * sqrt(0.0041) }')"
+got=$(n 'num_ratio(-6, 0.3, 3, 0.12, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_ratio: negative value" "${got% *}" -2; is "num_ratio: positive error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 2 * sqrt(0.0041) }')"
+got=$(n 'num_product(2, 0.1, 3, 0.3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_product: value" "${got% *}" 6; is "num_product: relative errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 6 * sqrt(0.0125) }')"
+got=$(n 'num_rel2(10, 2, 0.1, 3, 0.3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_rel2: the value given" "${got% *}" 10; is "num_rel2: its relative error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 10 * sqrt(0.0125) }')"
+got=$(n 'num_scale(2, 0.1, -3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_scale: value" "${got% *}" -6; is "num_scale: |factor| times the error" "${got#* }" 0.3
+
+# ---- lines
+# (0,0) (1,1) (2,1) (3,3): slope 0.9, intercept -0.1, residual sum of squares 0.7,
+# slope error sqrt(0.7 / 2 * 4 / 20), intercept error sqrt(0.7 / 2 * 14 / 20)
+pts='x[1] = 0; y[1] = 0; x[2] = 1; y[2] = 1; x[3] = 2; y[3] = 1; x[4] = 3; y[4] = 3'
+got=$(n "$pts"'; num_line(x, y, 4, o); printf "%.17g %.17g %.17g %.17g %d", o["slope"], o["icpt"], o["slope_se"], o["icpt_se"], o["n"]')
+read -r b a bs as np <<< "$got"
+is "num_line: slope" "$b" 0.9; is "num_line: intercept" "$a" -0.1
+is "num_line: slope error from the residuals" "$bs" "$(awk 'BEGIN { printf "%.17g", sqrt(0.07) }')"
+is "num_line: intercept error from the residuals" "$as" "$(awk 'BEGIN { printf "%.17g", sqrt(0.245) }')"
+[ "$np" = 4 ] && ok "num_line: points" || bad "num_line points" "$np"
+got=$(n 'for (i = 1; i <= 10; i++) { x[i] = i; y[i] = 1 + 2 * i }; num_line(x, y, 10, o); printf "%.17g %.17g", o["slope"], o["slope_se"]')
+is "num_line: an exact line" "${got% *}" 2; is "num_line: an exact line has no error" "${got#* }" 0
+got=$(n 'x[1] = 0; y[1] = 0; x[2] = 1; y[2] = 2; num_line(x, y, 2, o); print o["slope"] " " o["slope_se"]')
+[ "$got" = "2 nan" ] && ok "num_line: two points, slope without error" || bad "num_line two points" "$got"
+got=$(n 'x[1] = 1; y[1] = 0; x[2] = 1; y[2] = 2; x[3] = 1; y[3] = 3; print num_line(x, y, 3, o)')
+[ "$got" = nan ] && ok "num_line: equal x gives nan" || bad "num_line equal x" "$got"
+# weights: a point of error 1/sqrt(2) counts as that point twice with error 1, so the
+# weighted fit of (0,0) (1,1) (2,1 +- 0.707) (3,3) is the plain fit of five points:
+# slope 22/26, intercept (6 - 8 * 22/26) / 5, errors sqrt(5/26) and sqrt(18/26)
+got=$(n "$pts"'; for (i = 1; i <= 4; i++) s[i] = 1; s[3] = sqrt(0.5); x[5] = 9; y[5] = 99; s[5] = 0
+    num_wline(x, y, s, 5, o); printf "%.17g %.17g %.17g %.17g %d", o["slope"], o["icpt"], o["slope_se"], o["icpt_se"], o["n"]')
+read -r b a bs as np <<< "$got"
+is "num_wline: slope" "$b" "$(awk 'BEGIN { printf "%.17g", 22 / 26 }')"
+is "num_wline: intercept" "$a" "$(awk 'BEGIN { printf "%.17g", (6 - 8 * 22 / 26) / 5 }')"
+is "num_wline: slope error from the weights" "$bs" "$(awk 'BEGIN { printf "%.17g", sqrt(5 / 26) }')"
+is "num_wline: intercept error from the weights" "$as" "$(awk 'BEGIN { printf "%.17g", sqrt(18 / 26) }')"
+[ "$np" = 4 ] && ok "num_wline: the row with error 0 left out" || bad "num_wline points" "$np"
+
+# ---- interpolation: (1,10 +- 1) (2,20 +- 1) (4,0 +- 2) at 3 +- 0.5: 10, error
+# sqrt((0.5 * 1)^2 + (0.5 * 2)^2 + (-10 * 0.5)^2)
+tab='x[1] = 1; y[1] = 10; s[1] = 1; x[2] = 2; y[2] = 20; s[2] = 1; x[3] = 4; y[3] = 0; s[3] = 2'
+got=$(n "$tab"'; num_interp(x, y, s, 3, 3, 0.5, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_interp: value" "${got% *}" 10; is "num_interp: error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(26.25) }')"
+got=$(n "$tab"'; num_interp(x, y, s, 3, 2, 0, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_interp: at a node" "${got% *}" 20; is "num_interp: a node's error" "${got#* }" 1
+got=$(n "$tab"'; num_interp(x, y, s, 3, 5, 0, o); print o["v"] o["se"]')
+[ "$got" = nannan ] && ok "num_interp: outside the table gives nan" || bad "num_interp outside" "$got"
+
+# ---- blocks: rows of three blocks interleaved, each an exact line (slopes 2, 4, 9 and
+# means 2, 3, 10 over x = 0, 1): mean slope 5, its error sd / sqrt(3) = sqrt(13 / 3); mean of
+# the means 5, its error sqrt(19 / 3)
+rows=$'7\t0\t1\n3\t0\t1\n7\t1\t3\n3\t1\t5\n1\t0\t5.5\n1\t1\t14.5'
+got=$(printf '%s\n' "$rows" | num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { num_block_slope(o); printf "%.17g %.17g", o["v"], o["se"] }')
+is "num_block_slope: mean of the blocks' slopes" "${got% *}" 5
+is "num_block_slope: their standard error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(13 / 3) }')"
+got=$(printf '%s\n' "$rows" | num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { num_block_mean(o); printf "%.17g %.17g", o["v"], o["se"] }')
+is "num_block_mean: mean of the blocks' means" "${got% *}" 5
+is "num_block_mean: their standard error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(19 / 3) }')"
+got=$(printf '1\t0\t1\n1\t1\t2\n' | num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { num_block_slope(o); print o["v"] o["se"] }')
+[ "$got" = nannan ] && ok "num_block_slope: one block gives nan" || bad "one block" "$got"
+# the order of the sum is the file's: block means 1e16, 1 (38 blocks), -1e16 in this order sum
+# to 0 in double precision (1e16 + 1 rounds back to 1e16), and to a positive number in any order
+# that does not put every 1 between the two; the 40 blocks' names are not in sorted order
+got=$(awk 'BEGIN { for (b = 40; b >= 1; b--) { v = (b == 40) ? 1e16 : (b == 1) ? -1e16 : 1
+                       printf "k%d\t0\t%.17g\n", b * 37 % 41, v } }' |
+      num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { num_block_mean(o); printf "%.17g", o["v"] * 40 }')
+is "num_block_mean: blocks summed in the file's order" "$got" 0
+got=$(printf '%s\n' "$rows" | num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { for (j = 1; j <= NUM_NBLK; j++) printf "%s ", NUM_BLKS[j] }')
+[ "$got" = "7 3 1 " ] && ok "num_block_add: blocks in the order of their first row" || bad "block order" "$got"
+
+# ---- num_awk passes awk's options and files through
+got=$(printf 'a:4\n' | num_awk -F: -v k=2 -vj=3 '{ print $2 * k * j }')
+[ "$got" = 24 ] && ok "num_awk: -F, -v VAR=VALUE and -vVAR=VALUE" || bad "num_awk options" "$got"
+printf '1\n2\n' > "$tmp/f1"; printf '3\n' > "$tmp/f2"
+got=$(num_awk '{ x[NR] = $1 } END { print num_mean(x, NR) }' "$tmp/f1" "$tmp/f2")
+[ "$got" = 2 ] && ok "num_awk: files" || bad "num_awk files" "$got"
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
