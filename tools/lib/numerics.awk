@@ -56,6 +56,12 @@ function num_diff(a, sa, b, sb, o) { return num_set(o, a - b, sqrt(sa^2 + sb^2))
 # num_rel2(X, A, SA, B, SB, O): X, a product or quotient of powers +-1 of a and b, whose
 # relative error is a's and b's in quadrature
 function num_rel2(x, a, sa, b, sb, o) { return num_set(o, x, num_abs(x) * sqrt((sa / a)^2 + (sb / b)^2)) }
+# num_rel1(X, A, SA, O): X, a power +-1 of a times an exact factor, with a's relative error
+function num_rel1(x, a, sa, o) { return num_set(o, x, num_abs(x) * sa / num_abs(a)) }
+# num_inverse(C, A, SA, O): c / a for an exact c, error |c| sa / a^2
+function num_inverse(c, a, sa, o) { return num_set(o, c / a, num_abs(c) * sa / a^2) }
+# num_lin2(W1, A, SA, W2, B, SB, O): w1 a + w2 b for exact weights, errors in quadrature
+function num_lin2(w1, a, sa, w2, b, sb, o) { return num_set(o, w1 * a + w2 * b, sqrt((w1 * sa)^2 + (w2 * sb)^2)) }
 function num_ratio(a, sa, b, sb, o) { return num_rel2(a / b, a, sa, b, sb, o) }
 function num_product(a, sa, b, sb, o) { return num_rel2(a * b, a, sa, b, sb, o) }
 # num_scale: f (a +- sa) for an exact factor f
@@ -99,6 +105,19 @@ function num_interp(x, y, se, n, xq, xqse, o,    i, f, b) {
     for (i = 1; i < n; i++) if (x[i] <= xq && xq <= x[i + 1]) {
         f = (xq - x[i]) / (x[i + 1] - x[i]); b = (y[i + 1] - y[i]) / (x[i + 1] - x[i])
         return num_set(o, (1 - f) * y[i] + f * y[i + 1], sqrt(((1 - f) * se[i])^2 + (f * se[i + 1])^2 + (b * xqse)^2))
+    }
+    return num_set(o, "nan", "nan")
+}
+
+# num_crossing(X, Y, SE, N, YQ, YQSE, O): the x where the tabulated Y (at increasing X[1..N])
+# first reaches YQ, linear between the two bracketing points (the first pair from X[1]);
+# the errors of YQ and of the two points' Y propagated to first order (the x exact);
+# "nan" when Y never reaches YQ
+function num_crossing(x, y, se, n, yq, yqse, o,    i, f, dx, dy) {
+    for (i = 1; i < n; i++) if ((y[i] - yq) * (y[i + 1] - yq) <= 0 && y[i] != y[i + 1]) {
+        f = (yq - y[i]) / (y[i + 1] - y[i]); dx = x[i + 1] - x[i]; dy = y[i + 1] - y[i]
+        return num_set(o, x[i] + f * (x[i + 1] - x[i]),
+                       sqrt((dx / dy * yqse)^2 + (dx * (yq - y[i + 1]) / dy^2 * se[i])^2 + (-dx * (yq - y[i]) / dy^2 * se[i + 1])^2))
     }
     return num_set(o, "nan", "nan")
 }

@@ -2,17 +2,19 @@
 # statistics library tools/lib/numerics.awk loaded before the program.
 NUMERICS_AWK=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)/numerics.awk
 
-# num_awk [-F SEP] [-v VAR=VALUE ...] PROGRAM [FILE...]: as awk, with the num_* functions
-# defined. POSIX awk takes either a program text or -f files, never both: the program goes
-# in as a second -f (a process substitution).
+# num_awk [-F SEP] [-v VAR=VALUE ...] PROGRAM [FILE...], or with -f PROGFILE instead of
+# PROGRAM: as awk, with the num_* functions defined. POSIX awk takes either a program text
+# or -f files, never both: a program text goes in as a second -f (a process substitution).
 num_awk() {
-    local opts=()
+    local opts=() progfile=0
     while [ $# -gt 1 ]; do
         case $1 in
             -F|-v) opts+=("$1" "$2"); shift 2 ;;
+            -f) opts+=("$1" "$2"); progfile=1; shift 2 ;;
             -F?*|-v?*) opts+=("$1"); shift ;;
             *) break ;;
         esac
     done
-    awk "${opts[@]}" -f "$NUMERICS_AWK" -f <(printf '%s\n' "$1") "${@:2}"
+    if [ $progfile = 1 ]; then awk -f "$NUMERICS_AWK" "${opts[@]}" "$@"
+    else awk "${opts[@]}" -f "$NUMERICS_AWK" -f <(printf '%s\n' "$1") "${@:2}"; fi
 }

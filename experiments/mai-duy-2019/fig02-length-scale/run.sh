@@ -26,20 +26,7 @@ emit_from constrained colloid_spring_extension_rms spring_extension_rms
 emit_from constrained temperature temperature_constrained
 # k_eff: linear interpolation of the free eta(k) between the two shells that bracket the
 # constrained eta(k -> 0); errors of the three values (independent) propagated to first order
-awk -F'\t' -v ec="$(get constrained tcaf_eta_k0)" '
-    BEGIN { split(ec, c, "\t"); e = c[1]; se = c[2] }
-    /^#/ || $1 == "k" { next }
-    $4 != "nan" { n++; k[n] = $1; v[n] = $4; s[n] = $5 }
-    END {
-        for (i = 1; i < n; i++) if ((v[i] - e) * (v[i + 1] - e) <= 0 && v[i] != v[i + 1]) {
-            f = (e - v[i]) / (v[i + 1] - v[i]); ke = k[i] + f * (k[i + 1] - k[i])
-            dk = k[i + 1] - k[i]; den = v[i + 1] - v[i]
-            d_e = dk / den; d_1 = dk * (e - v[i + 1]) / den ^ 2; d_2 = -dk * (e - v[i]) / den ^ 2
-            sk = sqrt((d_e * se) ^ 2 + (d_1 * s[i]) ^ 2 + (d_2 * s[i + 1]) ^ 2)
-            printf "k_eff\t%.10g\t%.4g\n", ke, sk
-            printf "lambda_eff\t%.10g\t%.4g\n", 2 * 3.14159265358979 / ke, 2 * 3.14159265358979 * sk / ke ^ 2
-            found = 1; exit
-        }
-        if (!found) { printf "k_eff\tnan\tnan\nlambda_eff\tnan\tnan\n" }
-    }' "$OUT/runs/free/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+num_awk -F'\t' -v tag=x -v ec="$(get constrained tcaf_eta_k0 | cut -f1)" -v se="$(get constrained tcaf_eta_k0 | cut -f2)" \
+    -f ../tab02-effective-viscosity/keff.awk "$OUT/runs/free/tcaf_eta.tsv" |
+    awk -F'\t' '$1 ~ /^(k|lambda)_eff_x$/ { sub(/_x$/, "", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
 for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done

@@ -108,8 +108,8 @@ for pair in $PAIRS; do
         # eta(k) at the cube and sphere k (the high-k runs), free system and solvent alone in the same box
         emit_from freehk_$tag temperature temperature_freehk_$tag
         for sys in free solvent; do
-            awk -F'\t' -v lambda="$lc" -v name="eta_${sys}_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
-            awk -F'\t' -v lambda="$ls" -v name="eta_${sys}_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+            num_awk -F'\t' -v lambda="$lc" -v name="eta_${sys}_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+            num_awk -F'\t' -v lambda="$ls" -v name="eta_${sys}_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
             cp "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_${sys}hk_$tag.tsv"
         done
         printf 'lambda_cube_%s\t%s\t0\nlambda_sphere_%s\t%s\t0\n' "$tag" "$lc" "$tag" "$ls" >> "$OUT/summary.tsv"

@@ -37,7 +37,7 @@ for pair in $PAIRS; do
     emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
     ec=$(get constrained_$tag tcaf_eta_k0)
-    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
+    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
         awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
@@ -53,7 +53,7 @@ if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
         printf "eta_k0_free_minus_constrained_%s\t%.10g\t%.4g\n", t, v[a] - v[b], sqrt(s[a]^2 + s[b]^2) }' "$OUT/summary.tsv" > "$OUT/.rows"
     cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
     ec=$(awk -F'\t' '$1 == "eta_eff_phi0.49" { print $2 "\t" $3 }' "$F04/summary.tsv")
-    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
+    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
         awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
     cp "$F04/tcaf_eta_free_phi0.49.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$F04/tcaf_eta_constrained_phi0.49.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"

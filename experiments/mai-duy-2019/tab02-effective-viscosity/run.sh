@@ -39,7 +39,7 @@ for pair in $PAIRS; do
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
     emit_from constrained_$tag temperature temperature_constrained_$tag
     ec=$(get constrained_$tag tcaf_eta_k0)
-    awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
     awk -F'\t' -v t="$tag" -v kp="$kp" '
@@ -61,7 +61,7 @@ if [ -f "$F01" ]; then
     printf 'phi\tk_eff, paper\teta_eff, paper\tsolvent eta(k_eff, paper) (fig01)\tse\n' > "$OUT/solvent_at_paper_keff.tsv"
     awk -F'\t' '$1 !~ /^#/ && $1 != "k" { print $2 "\t" $3 "\t" $4 "\t" $5 }' paper-table2.tsv | \
     while IFS=$'\t' read -r phi ke le ee; do
-        r=$(awk -F'\t' -v lambda="$le" -v name=x -f etak.awk "$F01")
+        r=$(num_awk -F'\t' -v lambda="$le" -v name=x -f etak.awk "$F01")
         printf '%s\t%s\t%s\t%s\n' "$phi" "$ke" "$ee" "$(echo "$r" | cut -f2-3)" >> "$OUT/solvent_at_paper_keff.tsv"
     done
 fi

@@ -106,7 +106,7 @@ curve() {
 # k_eff (keff.awk) of the value "v<TAB>se" on a curve file -> "k_eff<TAB>se"
 keff() {
     case ${2%	*} in nan|-nan|inf|-inf) printf 'nan\tnan\n'; return ;; esac
-    awk -F'\t' -v ec="${2%	*}" -v se="${2#*	}" -v tag=x -f "$T02/keff.awk" "$1" | awk -F'\t' '$1 == "k_eff_x" { print $2 "\t" $3 }'
+    num_awk -F'\t' -v ec="${2%	*}" -v se="${2#*	}" -v tag=x -f "$T02/keff.awk" "$1" | awk -F'\t' '$1 == "k_eff_x" { print $2 "\t" $3 }'
 }
 # at CURVE "k<TAB>se": the curve's eta at k (linear between the bracketing shells), its error from the
 # two shells' and, through the slope, from k's; nan outside the curve
