@@ -15,8 +15,9 @@ dpd_run diff colloid-diffusion.cfg "${tier[@]}"
 emit_from diff D D_colloid
 emit_from diff D_t_ratio_late_half D_t_ratio_late_half
 # eq. 16 with c = 6: R = kBT / (6 pi mu D); error from D alone
-get diff D | awk -F'\t' -v m=$MU '{R = 1/(6*3.141592653589793*m*$1); printf "R\t%.10g\t%.4g\n", R, R*$2/$1}' >> "$OUT/summary.tsv"
+get diff D | num_awk -F'\t' -v m=$MU '{ num_rel1(1/(6*3.141592653589793*m*$1), $1, $2, o); print num_row("R", o) }' >> "$OUT/summary.tsv"
 # the periodic box slows diffusion by 2.837 kBT / (6 pi mu L) (Yeh & Hummer 2004): D and R corrected
-get diff D | awk -F'\t' -v m=$MU -v L=$L '{c = 2.837297/(6*3.141592653589793*m*L); D = $1 + c; R = 1/(6*3.141592653589793*m*D);
-    printf "D_colloid_box_corrected\t%.10g\t%.4g\nR_box_corrected\t%.10g\t%.4g\n", D, $2, R, R*$2/D}' >> "$OUT/summary.tsv"
+get diff D | num_awk -F'\t' -v m=$MU -v L=$L '{c = 2.837297/(6*3.141592653589793*m*L); D = $1 + c
+    printf "D_colloid_box_corrected\t%.10g\t%.4g\n", D, $2
+    num_rel1(1/(6*3.141592653589793*m*D), D, $2, o); print num_row("R_box_corrected", o) }' >> "$OUT/summary.tsv"
 cp "$OUT/runs/diff/msd.tsv" "$OUT/msd.tsv"
