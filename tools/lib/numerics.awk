@@ -17,6 +17,9 @@ function num_fmt(fmt, x) { return (x "" == "nan") ? "nan" : sprintf(fmt, x) }
 # num_row(Q, O): the summary row "Q<TAB>value<TAB>stderr" of O (%.10g, %.4g: emit's convention)
 function num_row(q, o) { return q "\t" num_fmt("%.10g", o["v"]) "\t" num_fmt("%.4g", o["se"]) }
 function num_abs(x) { return x < 0 ? -x : x }
+# num_sq(X): x * x (not x^2: mawk computes ^ with pow(), which this glibc rounds differently
+# from x * x in the last bit for some x, and gawk multiplies: a square is the same everywhere)
+function num_sq(x) { return x * x }
 function num_set(o, v, se) { o["v"] = v; o["se"] = se; return v }
 
 # num_mean(X, N): the arithmetic mean, "nan" for N < 1
@@ -31,13 +34,13 @@ function num_mean(x, n,    i, s) {
 function num_mean_se(x, n, o,    i, m, ss) {
     m = num_mean(x, n)
     if (n < 2) return num_set(o, m, "nan")
-    for (i = 1; i <= n; i++) ss += (x[i] - m)^2
+    for (i = 1; i <= n; i++) ss += num_sq(x[i] - m)
     return num_set(o, m, sqrt(ss / (n - 1) / n))
 }
 # num_wmean_se(X, SE, N, O): the inverse-variance weighted mean and its error
 # 1 / sqrt(sum of the weights); "nan" when no value has a positive error
 function num_wmean_se(x, se, n, o,    i, w, sw, swx) {
-    for (i = 1; i <= n; i++) if (se[i] > 0) { w = 1 / se[i]^2; sw += w; swx += w * x[i] }
+    for (i = 1; i <= n; i++) if (se[i] > 0) { w = 1 / num_sq(se[i]); sw += w; swx += w * x[i] }
     if (sw == 0) return num_set(o, "nan", "nan")
     return num_set(o, swx / sw, 1 / sqrt(sw))
 }
@@ -48,20 +51,22 @@ function num_sum_linear(x, se, n, o,    i, v, e) {
     return num_set(o, v, e)
 }
 # num_quad(E, N): the errors E[1..N] added in quadrature
-function num_quad(e, n,    i, s) { for (i = 1; i <= n; i++) s += e[i]^2; return sqrt(s) }
+function num_quad(e, n,    i, s) { for (i = 1; i <= n; i++) s += num_sq(e[i]); return sqrt(s) }
 
 # two values with errors (a +- sa, b +- sb) into one
-function num_sum(a, sa, b, sb, o) { return num_set(o, a + b, sqrt(sa^2 + sb^2)) }
-function num_diff(a, sa, b, sb, o) { return num_set(o, a - b, sqrt(sa^2 + sb^2)) }
+function num_sum(a, sa, b, sb, o) { return num_set(o, a + b, sqrt(num_sq(sa) + num_sq(sb))) }
+function num_diff(a, sa, b, sb, o) { return num_set(o, a - b, sqrt(num_sq(sa) + num_sq(sb))) }
 # num_rel2(X, A, SA, B, SB, O): X, a product or quotient of powers +-1 of a and b, whose
 # relative error is a's and b's in quadrature
-function num_rel2(x, a, sa, b, sb, o) { return num_set(o, x, num_abs(x) * sqrt((sa / a)^2 + (sb / b)^2)) }
+function num_rel2(x, a, sa, b, sb, o) { return num_set(o, x, num_abs(x) * sqrt(num_sq(sa / a) + num_sq(sb / b))) }
+# num_relerr(X, R, N, O): X with the relative errors R[1..N] in quadrature
+function num_relerr(x, r, n, o) { return num_set(o, x, num_abs(x) * num_quad(r, n)) }
 # num_rel1(X, A, SA, O): X, a power +-1 of a times an exact factor, with a's relative error
 function num_rel1(x, a, sa, o) { return num_set(o, x, num_abs(x) * sa / num_abs(a)) }
 # num_inverse(C, A, SA, O): c / a for an exact c, error |c| sa / a^2
-function num_inverse(c, a, sa, o) { return num_set(o, c / a, num_abs(c) * sa / a^2) }
+function num_inverse(c, a, sa, o) { return num_set(o, c / a, num_abs(c) * sa / num_sq(a)) }
 # num_lin2(W1, A, SA, W2, B, SB, O): w1 a + w2 b for exact weights, errors in quadrature
-function num_lin2(w1, a, sa, w2, b, sb, o) { return num_set(o, w1 * a + w2 * b, sqrt((w1 * sa)^2 + (w2 * sb)^2)) }
+function num_lin2(w1, a, sa, w2, b, sb, o) { return num_set(o, w1 * a + w2 * b, sqrt(num_sq(w1 * sa) + num_sq(w2 * sb))) }
 function num_ratio(a, sa, b, sb, o) { return num_rel2(a / b, a, sa, b, sb, o) }
 function num_product(a, sa, b, sb, o) { return num_rel2(a * b, a, sa, b, sb, o) }
 # num_scale: f (a +- sa) for an exact factor f
@@ -72,12 +77,12 @@ function num_scale(a, sa, f, o) { return num_set(o, a * f, sa * num_abs(f)) }
 function num_line(x, y, n, o,    i, sx, sy, sxx, sxy, d, b, a, r) {
     o["n"] = n
     for (i = 1; i <= n; i++) { sx += x[i]; sy += y[i]; sxx += x[i] * x[i]; sxy += x[i] * y[i] }
-    d = n * sxx - sx^2
+    d = n * sxx - num_sq(sx)
     if (n < 2 || d == 0) { o["slope"] = o["icpt"] = o["slope_se"] = o["icpt_se"] = "nan"; return "nan" }
     b = (n * sxy - sx * sy) / d; a = (sy - b * sx) / n
     o["slope"] = b; o["icpt"] = a
     if (n < 3) { o["slope_se"] = o["icpt_se"] = "nan"; return b }
-    for (i = 1; i <= n; i++) r += (y[i] - a - b * x[i])^2
+    for (i = 1; i <= n; i++) r += num_sq(y[i] - a - b * x[i])
     o["slope_se"] = sqrt(r / (n - 2) * n / d); o["icpt_se"] = sqrt(r / (n - 2) * sxx / d)
     return b
 }
@@ -86,11 +91,11 @@ function num_line(x, y, n, o,    i, sx, sy, sxx, sxy, d, b, a, r) {
 # are left out; "nan" for fewer than 2 rows or equal x
 function num_wline(x, y, se, n, o,    i, w, sw, sx, sy, sxx, sxy, d, b, m) {
     for (i = 1; i <= n; i++) if (se[i] > 0) {
-        w = 1 / se[i]^2; m++
+        w = 1 / num_sq(se[i]); m++
         sw += w; sx += w * x[i]; sy += w * y[i]; sxx += w * x[i] * x[i]; sxy += w * x[i] * y[i]
     }
     o["n"] = m
-    d = sw * sxx - sx^2
+    d = sw * sxx - num_sq(sx)
     if (m < 2 || d == 0) { o["slope"] = o["icpt"] = o["slope_se"] = o["icpt_se"] = "nan"; return "nan" }
     b = (sw * sxy - sx * sy) / d
     o["slope"] = b; o["icpt"] = (sy - b * sx) / sw
@@ -104,7 +109,7 @@ function num_wline(x, y, se, n, o,    i, w, sw, sx, sy, sxx, sxy, d, b, m) {
 function num_interp(x, y, se, n, xq, xqse, o,    i, f, b) {
     for (i = 1; i < n; i++) if (x[i] <= xq && xq <= x[i + 1]) {
         f = (xq - x[i]) / (x[i + 1] - x[i]); b = (y[i + 1] - y[i]) / (x[i + 1] - x[i])
-        return num_set(o, (1 - f) * y[i] + f * y[i + 1], sqrt(((1 - f) * se[i])^2 + (f * se[i + 1])^2 + (b * xqse)^2))
+        return num_set(o, (1 - f) * y[i] + f * y[i + 1], sqrt(num_sq((1 - f) * se[i]) + num_sq(f * se[i + 1]) + num_sq(b * xqse)))
     }
     return num_set(o, "nan", "nan")
 }
@@ -117,7 +122,7 @@ function num_crossing(x, y, se, n, yq, yqse, o,    i, f, dx, dy) {
     for (i = 1; i < n; i++) if ((y[i] - yq) * (y[i + 1] - yq) <= 0 && y[i] != y[i + 1]) {
         f = (yq - y[i]) / (y[i + 1] - y[i]); dx = x[i + 1] - x[i]; dy = y[i + 1] - y[i]
         return num_set(o, x[i] + f * (x[i + 1] - x[i]),
-                       sqrt((dx / dy * yqse)^2 + (dx * (yq - y[i + 1]) / dy^2 * se[i])^2 + (-dx * (yq - y[i]) / dy^2 * se[i + 1])^2))
+                       sqrt(num_sq(dx / dy * yqse) + num_sq(dx * (yq - y[i + 1]) / num_sq(dy) * se[i]) + num_sq(-dx * (yq - y[i]) / num_sq(dy) * se[i + 1])))
     }
     return num_set(o, "nan", "nan")
 }

@@ -39,6 +39,6 @@ done
 # torque ratio to eq. 18 at the calibrated gamma^S_cf = 5.5, gamma^C_cf = 0
 get gC0.0_gS5.5 torque_on_colloid_z | awk -F'\t' -v t=$T18 '{printf "torque_ratio_gS5.5\t%.10g\t%.4g\n", $1/t, $2/t}' >> "$OUT/summary.tsv"
 # slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares)
-awk -F'\t' 'NR > 1 && $2 == 5.5 { w = 1/($4*$4); S += w; Sx += w*$1; Sy += w*$3; Sxx += w*$1*$1; Sxy += w*$1*$3; n++ }
-    END { d = S*Sxx - Sx*Sx; printf "torque_slope_gC\t%.10g\t%.4g\n", (S*Sxy - Sx*Sy)/d, sqrt(S/d) }' \
+num_awk -F'\t' 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3; s[n] = $4 }
+    END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \
     "$OUT/torque.tsv" >> "$OUT/summary.tsv"

@@ -26,6 +26,6 @@ for N in $NS; do
     printf '%s\t%s\t%s\n' $N "$Ts" "$(get N$N torque_on_chain_x)" >> "$OUT/shape_factor.tsv"
 done
 # the fall with N: (T_s(1) - T_s(8)) in units of its standard error
-awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
-    END { se = sqrt(sa^2 + sb^2); printf "Ts_drop_N8\t%.10g\t%.4g\nTs_drop_N8_sigmas\t%.4g\t0\n", a - b, se, (a - b)/se }' \
+num_awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
+    END { num_diff(a, sa, b, sb, o); printf "%s\nTs_drop_N8_sigmas\t%.4g\t0\n", num_row("Ts_drop_N8", o), o["v"] / o["se"] }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"

@@ -22,8 +22,8 @@ for k in $ks; do
     emit_from "k$k" viscosity "eta_k$k"
     emit_ratio "eta_r_k$k" "k$k" viscosity k0 viscosity
     e=$(get "k$k" viscosity) e0=$(get k0 viscosity) es=$(get "k$k" viscosity_spring)
-    awk -F'\t' -v k=$k -v e="$e" -v e0="$e0" -v es="$es" 'BEGIN { split(e, a, "\t"); split(e0, b, "\t"); split(es, c, "\t")
-        phi = 3 * k / (144 + 3 * k); r = a[1] / b[1]; rse = r * sqrt((a[2] / a[1])^2 + (b[2] / b[1])^2)
+    num_awk -F'\t' -v k=$k -v e="$e" -v e0="$e0" -v es="$es" 'BEGIN { split(e, a, "\t"); split(e0, b, "\t"); split(es, c, "\t")
+        phi = 3 * k / (144 + 3 * k); r = num_ratio(a[1], a[2], b[1], b[2], o); rse = o["se"]
         printf "%d\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.6g\t%.4g\n", k, phi, a[1], a[2], r, rse, r - 1, c[1], c[2] }' >> "$OUT/eta_r.tsv"
 done
 # eq. 53 slope: eta_r - 1 = s phi through (0, 1), weighted (GSL gsl_fit_wmul), phi <= 0.06 (k = 1, 2, 3)

@@ -12,8 +12,8 @@ amp() { local lo hi; lo=$(get "$1" "com_${2}_min" | cut -f1); hi=$(get "$1" "com
         awk -v a="$lo" -v b="$hi" 'BEGIN{a=a<0?-a:a; b=b<0?-b:b; printf "%.10g", (a>b)?a:b}'; }
 # emit_list AS VALUES...: mean and standard error over independent runs
 emit_list() { local q=$1; shift
-    awk -v q="$q" -v v="$*" 'BEGIN{k=split(v,x," "); s=0; for(i=1;i<=k;i++) s+=x[i]; m=s/k;
-        ss=0; for(i=1;i<=k;i++) ss+=(x[i]-m)^2; printf "%s\t%.10g\t%.4g\n", q, m, (k>1)?sqrt(ss/(k-1)/k):0}' >> "$OUT/summary.tsv"; }
+    num_awk -v q="$q" -v v="$*" 'BEGIN { k = split(v, x, " "); num_mean_se(x, k, o); if (k == 1) o["se"] = 0
+        print num_row(q, o) }' >> "$OUT/summary.tsv"; }
 # the simulations
 for solver in scheme1 scheme2_paper; do
     for seed in "${seeds[@]}"; do
