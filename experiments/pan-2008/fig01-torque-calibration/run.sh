@@ -37,7 +37,7 @@ for run in $RUNS; do
     printf '%s\t%s\t%s\n' "$gC" "$gS" "$(get $name torque_on_colloid_z)" >> "$OUT/torque.tsv"
 done
 # torque ratio to eq. 18 at the calibrated gamma^S_cf = 5.5, gamma^C_cf = 0
-get gC0.0_gS5.5 torque_on_colloid_z | awk -F'\t' -v t=$T18 '{printf "torque_ratio_gS5.5\t%.10g\t%.4g\n", $1/t, $2/t}' >> "$OUT/summary.tsv"
+get gC0.0_gS5.5 torque_on_colloid_z | num_awk -F'\t' -v t=$T18 '{ num_div($1, $2, t, o); print num_row("torque_ratio_gS5.5", o) }' >> "$OUT/summary.tsv"
 # slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares)
 num_awk -F'\t' 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3; s[n] = $4 }
     END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \

@@ -45,5 +45,6 @@ for run in $RUNS; do
     echo "$line" | awk -F'\t' -v q="u_gC$gC" '{printf "%s\t%s\t%s\n", q, $1, $2}' >> "$OUT/summary.tsv"
 done
 # ratio of the calibrated point to eq. 19 and to Hasimoto's value
-awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { printf "u_ratio_eq19_gC3.5\t%.10g\t%.4g\nu_ratio_hasimoto_gC3.5\t%.10g\t%.4g\n", $2/a, $3/a, $2/h, $3/h }' \
+num_awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { num_div($2, $3, a, o); print num_row("u_ratio_eq19_gC3.5", o)
+    num_div($2, $3, h, o); print num_row("u_ratio_hasimoto_gC3.5", o) }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"

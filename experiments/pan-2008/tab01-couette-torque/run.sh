@@ -41,7 +41,7 @@ for r in $ROWS; do
     emit "torque_row$r" $T
     the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
     emit "theory_row$r" "$the" 0
-    echo "$T" | awk -F'\t' -v t=$the -v r=$r '{printf "torque_ratio_row%s\t%.10g\t%.4g\n", r, $1/t, $2/t}' >> "$OUT/summary.tsv"
+    echo "$T" | num_awk -F'\t' -v t=$the -v r=$r '{ num_div($1, $2, t, o); print num_row("torque_ratio_row" r, o) }' >> "$OUT/summary.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done

@@ -30,14 +30,14 @@ for r in $rates; do
     emit_from "k0_rate$r" viscosity "eta_solvent_rate$r"
     emit_ratio "eta_r_rate$r" "k1_rate$r" viscosity "k0_rate$r" viscosity
     e=$(get "k1_rate$r" viscosity) e0=$(get "k0_rate$r" viscosity)
-    awk -F'\t' -v r=$r -v a="$a" -v D="$D" -v e="$e" -v e0="$e0" 'BEGIN { split(e, x, "\t"); split(e0, y, "\t")
-        q = x[1] / y[1]; qs = q * sqrt((x[2] / x[1])^2 + (y[2] / y[1])^2)
+    num_awk -F'\t' -v r=$r -v a="$a" -v D="$D" -v e="$e" -v e0="$e0" 'BEGIN { split(e, x, "\t"); split(e0, y, "\t")
+        q = num_ratio(x[1], x[2], y[1], y[2], o); qs = o["se"]
         printf "%s\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.4g\n", r, r * a * a / D, x[1], x[2], y[1], y[2], q, qs }' >> "$OUT/thinning.tsv"
 done
 lo=${rates%% *} hi=${rates##* }
 emit_ratio thinning_ratio "k1_rate$lo" viscosity "k1_rate$hi" viscosity
 emit_ratio solvent_thinning_ratio "k0_rate$lo" viscosity "k0_rate$hi" viscosity
 awk -F'\t' '$1=="thinning_ratio"{ printf "thinning_significance\t%.6g\t0\n", ($2 - 1) / $3 }' "$OUT/summary.tsv" >> "$OUT/summary.tsv"
-awk -F'\t' -v lo=$lo -v hi=$hi 'NR > 1 && $1 == lo { a = $7; as = $8 } NR > 1 && $1 == hi { b = $7; bs = $8 }
-    END { q = a / b; printf "relative_thinning_ratio\t%.10g\t%.4g\n", q, q * sqrt((as / a)^2 + (bs / b)^2) }' \
+num_awk -F'\t' -v lo=$lo -v hi=$hi 'NR > 1 && $1 == lo { a = $7; as = $8 } NR > 1 && $1 == hi { b = $7; bs = $8 }
+    END { num_ratio(a, as, b, bs, o); print num_row("relative_thinning_ratio", o) }' \
     "$OUT/thinning.tsv" >> "$OUT/summary.tsv"
