@@ -37,6 +37,19 @@ function num_mean_se(x, n, o,    i, m, ss) {
     for (i = 1; i <= n; i++) ss += num_sq(x[i] - m)
     return num_set(o, m, sqrt(ss / (n - 1) / n))
 }
+# num_jackknife_se(X, N, O): X[1..N] the estimates leaving out one of N samples each: their
+# mean and the jackknife error sqrt((N - 1) / N sum (x - mean)^2); "nan" for N < 2
+function num_jackknife_se(x, n, o,    i, m, ss) {
+    m = num_mean(x, n)
+    if (n < 2) return num_set(o, m, "nan")
+    for (i = 1; i <= n; i++) ss += num_sq(x[i] - m)
+    return num_set(o, m, sqrt((n - 1) / n * ss))
+}
+# num_project(X, W, N): the amplitude of X along W, sum x w / sum w^2 ("nan" for W = 0)
+function num_project(x, w, n,    i, sxw, sww) {
+    for (i = 1; i <= n; i++) { sxw += x[i] * w[i]; sww += w[i] * w[i] }
+    return sww == 0 ? "nan" : sxw / sww
+}
 # num_wmean_se(X, SE, N, O): the inverse-variance weighted mean and its error
 # 1 / sqrt(sum of the weights); "nan" when no value has a positive error
 function num_wmean_se(x, se, n, o,    i, w, sw, swx) {

@@ -30,7 +30,7 @@ for m in m0 m1; do
         fi
         files+=("$vb")
     done
-    zcat "${files[@]}" | awk -v ts=$ts -v name=$m -v out="$OUT" -f growth.awk >> "$OUT/summary.tsv"
+    zcat "${files[@]}" | num_awk -v ts=$ts -v name=$m -v out="$OUT" -f growth.awk >> "$OUT/summary.tsv"
     runs=(); for seed in "${seeds[@]}"; do runs+=(${m}_s$seed); done
     emit_mean "temperature_$m" temperature "${runs[@]}"
 done
