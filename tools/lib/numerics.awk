@@ -82,6 +82,8 @@ function num_inverse(c, a, sa, o) { return num_set(o, c / a, num_abs(c) * sa / n
 function num_lin2(w1, a, sa, w2, b, sb, o) { return num_set(o, w1 * a + w2 * b, sqrt(num_sq(w1 * sa) + num_sq(w2 * sb))) }
 function num_ratio(a, sa, b, sb, o) { return num_rel2(a / b, a, sa, b, sb, o) }
 function num_product(a, sa, b, sb, o) { return num_rel2(a * b, a, sa, b, sb, o) }
+# num_sqrt: sqrt(a +- sa), error sa / (2 sqrt(a))
+function num_sqrt(a, sa, o,    r) { r = sqrt(a); return num_set(o, r, 0.5 * sa / r) }
 # num_div: (a +- sa) / c for an exact c (a theory, a unit)
 function num_div(a, sa, c, o) { return num_set(o, a / c, sa / num_abs(c)) }
 # num_scale: f (a +- sa) for an exact factor f

@@ -50,16 +50,15 @@ sphere_blocks() {
     [ -f "$OUT/runs/$1/run.h5" ] || { echo "tab03: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
     paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
           <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        awk -F'\t' -v B=$B '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
+        num_awk -F'\t' -v B=$B '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
             END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
-                for (b = 0; b < B; b++) { f = t = 0
-                    for (i = skip + b * len + 1; i <= skip + (b + 1) * len; i++) { f += F[i]; t += T[i] }
-                    printf "%d\t%.10g\t%.10g\n", b, f / len, t / len } }' > "$f.tmp" && mv "$f.tmp" "$f"
+                for (b = 0; b < B; b++) {
+                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
+                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
 }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
 column_mean() {
-    awk -F'\t' -v c=$2 'NR > 1 {n++; s += $c; ss += $c * $c}
-        END{m = s / n; printf "%.10g\t%.4g", m, sqrt((ss / n - m * m) / (n - 1))}' "$1"
+    num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%.10g\t%.4g", o["v"], o["se"] }' "$1"
 }
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
 printf 'l\tu\tF paper\tF ours\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"

@@ -32,12 +32,12 @@ for m in 0 1; do
             rows+="$(awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
         done
         # mean and standard error over the seeds
-        printf '%s' "$rows" | awk -F'\t' -v P="$P" -v m="$m" '
-            { r[NR] = $1; d[NR] = $2; u[NR] = $4; sr += $1; sd += $2; su += $4 }
-            END { n = NR; mr = sr / n; md = sd / n; mu = su / n
-                  for (k = 1; k <= n; k++) { vr += (r[k] - mr)^2; vd += (d[k] - md)^2; vu += (u[k] - mu)^2 }
-                  f = 1 / (n * (n - 1))
-                  printf "%s\t%s\t%.6g\t%.3g\t%.6g\t%.3g\t%.6g\t%.3g\n", P, m, mr, sqrt(vr * f), md, sqrt(vd * f), mu, sqrt(vu * f) }' \
+        printf '%s' "$rows" | num_awk -F'\t' -v P="$P" -v m="$m" '
+            { r[NR] = $1; d[NR] = $2; u[NR] = $4 }
+            END { printf "%s\t%s", P, m
+                  num_mean_se(r, NR, o); printf "\t%.6g\t%.3g", o["v"], o["se"]
+                  num_mean_se(d, NR, o); printf "\t%.6g\t%.3g", o["v"], o["se"]
+                  num_mean_se(u, NR, o); printf "\t%.6g\t%.3g\n", o["v"], o["se"] }' \
             >> "$OUT/fields.tsv"
         # momentum balance: at m = 0 exact at every step; at m = 1 on average in the steady state
         emit_from "m${m}_P${P}_s1" force_on_cylinder_x "drag_m${m}_P$P"
@@ -47,19 +47,19 @@ for m in 0 1; do
 done
 # Mach number of the m = 1 runs: U / c_T with the isothermal speed of sound
 # c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %, runs eos_N137 and eos_N151), central difference
-c2=$(awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
+c2=$(num_awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
         split(lo, a, "\t"); split(hi, b, "\t"); dn = (151 - 137) / 36.0
-        c2 = (b[1] - a[1]) / dn; printf "%.10g\t%.4g", c2, sqrt(a[2]^2 + b[2]^2) / dn }')
-echo "$c2" | awk -F'\t' '{ c = sqrt($1); printf "sound_speed_m1\t%.6g\t%.3g\n", c, 0.5 * $2 / c }' >> "$OUT/summary.tsv"
+        num_diff(b[1], b[2], a[1], a[2], o); num_div(o["v"], o["se"], dn, o); printf "%.10g\t%.4g", o["v"], o["se"] }')
+echo "$c2" | num_awk -F'\t' '{ num_sqrt($1, $2, o); printf "sound_speed_m1\t%.6g\t%.3g\n", o["v"], o["se"] }' >> "$OUT/summary.tsv"
 printf 'P\tmach\tmach_se\n' > "$OUT/mach.tsv"
-awk -F'\t' -v c2="$c2" 'BEGIN { split(c2, x, "\t"); c = sqrt(x[1]); cse = 0.5 * x[2] / c }
-    NR > 1 && $2 == 1 { M = $7 / c; printf "%s\t%.6g\t%.3g\n", $1, M, M * sqrt(($8 / $7)^2 + (cse / c)^2) }' \
+num_awk -F'\t' -v c2="$c2" 'BEGIN { split(c2, x, "\t"); num_sqrt(x[1], x[2], cs) }
+    NR > 1 && $2 == 1 { num_ratio($7, $8, cs["v"], cs["se"], o); printf "%s\t%.6g\t%.3g\n", $1, o["v"], o["se"] }' \
     "$OUT/fields.tsv" >> "$OUT/mach.tsv"
 awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { printf "mach_m1_P%s\t%s\t%s\n", $1, $2, $3 }' "$OUT/mach.tsv" >> "$OUT/summary.tsv"
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
-awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2, $1] = $4; D[$2, $1] = $5; Dse[$2, $1] = $6 }
-    function ratio(q, a, as, b, bs) { g = a / b; e = g * sqrt((as / a)^2 + (bs / b)^2); G[q] = g; E[q] = e
-                                      printf "%s\t%.6g\t%.3g\n", q, g, e }
+num_awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2, $1] = $4; D[$2, $1] = $5; Dse[$2, $1] = $6 }
+    function ratio(q, a, as, b, bs) { G[q] = num_ratio(a, as, b, bs, o); E[q] = o["se"]
+                                      printf "%s\t%.6g\t%.3g\n", q, G[q], E[q] }
     END { for (m = 0; m <= 1; m++) {
               ratio("residual_growth_m" m, R[m, "1.0"], Rse[m, "1.0"], R[m, "0.1"], Rse[m, "0.1"])
               ratio("divu_growth_m" m, D[m, "1.0"], Dse[m, "1.0"], D[m, "0.1"], Dse[m, "0.1"]) }

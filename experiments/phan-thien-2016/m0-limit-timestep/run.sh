@@ -18,8 +18,8 @@ analyse() {
     read -r g gse tau tause eta etase < <(couette_viscosity $1 10 2:10)   # tools/lib/exp.sh
     emit "shear_rate_$2" "$g" "$gse"
     emit "eta_$2" "$eta" "$etase"
-    emit "density_bulk_max_rel_dev_$2" $(awk -F'\t' '/^#/||$1=="pos"{next} $1>=2 && $1<=10 {n++; d[n]=$2; e[n]=$3; s+=$2}
-        END{m=s/n; for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>b){b=x; be=e[k]/m}} printf "%.10g\t%.4g", b, be}' "$p")
+    emit "density_bulk_max_rel_dev_$2" $(num_awk -F'\t' '/^#/||$1=="pos"{next} $1>=2 && $1<=10 {n++; d[n]=$2; e[n]=$3}
+        END{m=num_mean(d, n); for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>b){b=x; be=e[k]/m}} printf "%.10g\t%.4g", b, be}' "$p")
     emit_from $1 temperature "temperature_$2"
 }
 mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
@@ -45,8 +45,8 @@ for m in $masses; do
         "$(get m$m temperature | cut -f1)" >> "$OUT/m-limit.tsv"
 done
 mmin=${masses##* }
-emit shear_rate_m_smallest_minus_m0 $(awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x=$2; xs=$3} $1=="shear_rate_m0"{y=$2; ys=$3}
-    END{printf "%.10g\t%.4g", x-y, sqrt(xs^2+ys^2)}' "$OUT/summary.tsv")
+emit shear_rate_m_smallest_minus_m0 $(num_awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x=$2; xs=$3} $1=="shear_rate_m0"{y=$2; ys=$3}
+    END{num_diff(x, xs, y, ys, o); printf "%.10g\t%.4g", o["v"], o["se"]}' "$OUT/summary.tsv")
 # 2. time step of the m = 0 run
 printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OUT/dt-scan.tsv"
 for dt in $dts; do analyse dt$dt dt$dt; done
