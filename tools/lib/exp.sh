@@ -244,6 +244,15 @@ _blocks() {
         "$OUT/runs/$1/profile_blocks.tsv"
 }
 
+# max_rel_dev PROFILE LO:HI -> "dev<TAB>stderr": the largest relative deviation of a bin's
+# density from the mean over the bins with LO <= pos <= HI of a profile.tsv; the error that
+# bin's (num_max_rel_dev)
+max_rel_dev() {
+    num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } /^#/ || $1 == "pos" { next }
+        $1 >= r[1] && $1 <= r[2] { n++; d[n] = $2; e[n] = $3 }
+        END { num_max_rel_dev(d, e, n, o); printf "%.10g\t%.4g", o["v"], o["se"] }' "$1"
+}
+
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016
 # fig03 (walls bottom_inner/outer, top_inner/outer; run with
 # measure.profile.per_block=true) -> "rate rate_se tau tau_se eta eta_se".

@@ -50,6 +50,13 @@ function num_project(x, w, n,    i, sxw, sww) {
     for (i = 1; i <= n; i++) { sxw += x[i] * w[i]; sww += w[i] * w[i] }
     return sww == 0 ? "nan" : sxw / sww
 }
+# num_max_rel_dev(X, SE, N, O): the largest |x - mean| / mean of X[1..N] (the first if tied),
+# its error that x's SE / mean (the mean's own error neglected)
+function num_max_rel_dev(x, se, n, o,    i, m, d, best, be) {
+    m = num_mean(x, n)
+    for (i = 1; i <= n; i++) { d = num_abs((x[i] - m) / m); if (d > best) { best = d; be = se[i] / m } }
+    return num_set(o, best, be)
+}
 # num_wmean_se(X, SE, N, O): the inverse-variance weighted mean and its error
 # 1 / sqrt(sum of the weights); "nan" when no value has a positive error
 function num_wmean_se(x, se, n, o,    i, w, sw, swx) {

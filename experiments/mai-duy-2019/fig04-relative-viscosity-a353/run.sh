@@ -86,8 +86,7 @@ for r in 0 1 2 3 4; do
     rdfs="$rdfs $(cat "$OUT/runs/$name/r_half")"
 done
 cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
-awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); for (i = 1; i <= n; i++) s += x[i]; m = s / n
-    for (i = 1; i <= n; i++) ss += (x[i] - m)^2; e = sqrt(ss / (n - 1) / n)
+num_awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); m = num_mean_se(x, n, o); e = o["se"]
     printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", m, e, d + m, e }' >> "$OUT/summary.tsv"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 for pair in $PAIRS; do
@@ -114,16 +113,15 @@ for pair in $PAIRS; do
         done
         printf 'lambda_cube_%s\t%s\t0\nlambda_sphere_%s\t%s\t0\n' "$tag" "$lc" "$tag" "$ls" >> "$OUT/summary.tsv"
         # ratios and the TCAF - original difference (errors of the shared eta_susp counted once)
-        awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 }
+        num_awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 }
             function r(name, den) { if (!(den in v) || v[den] == "nan") { printf "%s\tnan\tnan\n", name; return }
-                x = v["eta_susp_" t] / v[den]; e = x * sqrt((s["eta_susp_" t] / v["eta_susp_" t])^2 + (s[den] / v[den])^2)
-                printf "%s\t%.10g\t%.4g\n", name, x, e }
+                num_ratio(v["eta_susp_" t], s["eta_susp_" t], v[den], s[den], o); print num_row(name, o) }
             END { r("eta_r_cube_" t, "eta_free_cube_" t); r("eta_r_sphere_" t, "eta_free_sphere_" t)
                   r("eta_r_cube_solvent_" t, "eta_solvent_cube_" t); r("eta_r_sphere_solvent_" t, "eta_solvent_sphere_" t)
                   es = v["eta_susp_" t]; a = v["eta_eff_" t]; b = v["eta_solvent"]
                   d = es / a - es / b
-                  e = sqrt((s["eta_susp_" t] * (1 / a - 1 / b))^2 + (es * s["eta_eff_" t] / a^2)^2 + (es * s["eta_solvent"] / b^2)^2)
-                  printf "eta_r_tcaf_minus_original_%s\t%.10g\t%.4g\n", t, d, e }' "$OUT/summary.tsv" > "$OUT/.rows"
+                  q[1] = s["eta_susp_" t] * (1 / a - 1 / b); q[2] = es * s["eta_eff_" t] / num_sq(a); q[3] = es * s["eta_solvent"] / num_sq(b)
+                  printf "eta_r_tcaf_minus_original_%s\t%.10g\t%.4g\n", t, d, num_quad(q, 3) }' "$OUT/summary.tsv" > "$OUT/.rows"
         cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
         cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
         cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"

@@ -34,26 +34,25 @@ for solver in pcg scheme2_paper; do
     emit "wall_stress$sfx" "$tau" "$tause"
     emit "eta$sfx" "$eta" "$etase"
     # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)
-    read -r sb sbse < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
-        $1>=r[1] && $1<=r[2] && $13!="nan" {s+=$12; e+=$13; n++} END{printf "%.10g\t%.4g\n", s/n, e/n}' "$p")
-    emit "eta_bulk_ik$sfx" $(awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{e=t/g; printf "%.10g\t%.4g", e, e*sqrt((ts/t)^2+(gs/g)^2)}')
-    emit "eta_wall_minus_bulk$sfx" $(awk -v a=$tau -v as=$tause -v b=$sb -v bs=$sbse -v g=$g 'BEGIN{printf "%.10g\t%.4g", (a-b)/g, sqrt(as^2+bs^2)/g}')
+    read -r sb sbse < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
+        $1>=r[1] && $1<=r[2] && $13!="nan" {n++; s[n]=$12; e[n]=$13} END{printf "%.10g\t%.4g\n", num_mean(s, n), num_mean(e, n)}' "$p")
+    emit "eta_bulk_ik$sfx" $(num_awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{num_ratio(t, ts, g, gs, o); printf "%.10g\t%.4g", o["v"], o["se"]}')
+    emit "eta_wall_minus_bulk$sfx" $(num_awk -v a=$tau -v as=$tause -v b=$sb -v bs=$sbse -v g=$g 'BEGIN{num_diff(a, as, b, bs, o); num_div(o["v"], o["se"], g, o)
+        printf "%.10g\t%.4g", o["v"], o["se"]}')
     # density: largest relative deviation of a bulk bin from the bulk mean (error: that bin's)
-    emit "density_bulk_max_rel_dev$sfx" $(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
-        $1>=r[1] && $1<=r[2] {n++; d[n]=$2; e[n]=$3; s+=$2} END{m=s/n; for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>best){best=x; be=e[k]/m}}
-        printf "%.10g\t%.4g", best, be}' "$p")
+    emit "density_bulk_max_rel_dev$sfx" $(max_rel_dev "$p" $BULK)
     emit "density_wall_bin$sfx" $(awk -F'\t' '/^#/||$1=="pos"{next} $2!="nan"{print $2 "\t" $3; exit}' "$p")
     emit_from $solver solver_iterations "iterations$sfx"
 done
 # the published Scheme 2 against the solution of A v = f: does time averaging hide its error?
-emit shear_rate_scheme2_minus_pcg $(awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
-    END{printf "%.10g\t%.4g", b-a, sqrt(as^2+bs^2)}' "$OUT/summary.tsv")
+emit shear_rate_scheme2_minus_pcg $(num_awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
+    END{num_diff(b, bs, a, as, o); printf "%.10g\t%.4g", o["v"], o["se"]}' "$OUT/summary.tsv")
 # Cross-check without walls: Lees-Edwards shear of the same fluid (fig07's shear.cfg, 10 x 10, dt and
 # rate as here) at the channel's bulk density, which exceeds the nominal 4 because the fluid is
 # depleted next to the walls; the wall viscosity must equal it (at the nominal density it is lower:
 # eta grows roughly as the density squared). Bulk density error: bins taken as independent.
-read -r rho rhose < <(awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
-    $1>=r[1] && $1<=r[2] {s+=$2; e+=$3^2; n++} END{printf "%.6f\t%.4g\n", s/n, sqrt(e)/n}' "$OUT/profile.tsv")
+read -r rho rhose < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
+    $1>=r[1] && $1<=r[2] {n++; d[n]=$2; e[n]=$3} END{printf "%.6f\t%.4g\n", num_mean(d, n), num_quad(e, n)/n}' "$OUT/profile.tsv")
 emit density_bulk "$rho" "$rhose"
 read -r g _ < <(awk -F'\t' '$1=="shear_rate"{print $2 "\t" $3}' "$OUT/summary.tsv")
 # a simulation after the analysis: its density and shear rate are the measured rho and g
@@ -62,5 +61,6 @@ dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg"
     --set "types.[0].density=$rho" --set "shear_rate=$g" --set dt=0.01 --set seed=2017
 emit_from le viscosity eta_lees_edwards_bulk_density
 # the LE density is held at the measured mean: its error enters through d eta / d rho ~ 2 eta / rho
-emit eta_wall_minus_lees_edwards $(awk -F'\t' -v r=$rho -v rs=$rhose -v le="$(get le viscosity)" '
-    $1=="eta"{a=$2; as=$3} END{split(le, L, "\t"); printf "%.10g\t%.4g", a-L[1], sqrt(as^2+L[2]^2+(2*L[1]/r*rs)^2)}' "$OUT/summary.tsv")
+emit eta_wall_minus_lees_edwards $(num_awk -F'\t' -v r=$rho -v rs=$rhose -v le="$(get le viscosity)" '
+    $1=="eta"{a=$2; as=$3} END{split(le, L, "\t"); e[1] = as; e[2] = L[2]; e[3] = 2*L[1]/r*rs
+        printf "%.10g\t%.4g", a-L[1], num_quad(e, 3)}' "$OUT/summary.tsv")

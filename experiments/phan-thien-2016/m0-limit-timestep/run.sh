@@ -18,8 +18,7 @@ analyse() {
     read -r g gse tau tause eta etase < <(couette_viscosity $1 10 2:10)   # tools/lib/exp.sh
     emit "shear_rate_$2" "$g" "$gse"
     emit "eta_$2" "$eta" "$etase"
-    emit "density_bulk_max_rel_dev_$2" $(num_awk -F'\t' '/^#/||$1=="pos"{next} $1>=2 && $1<=10 {n++; d[n]=$2; e[n]=$3}
-        END{m=num_mean(d, n); for(k=1;k<=n;k++){x=(d[k]-m)/m; x=x<0?-x:x; if(x>b){b=x; be=e[k]/m}} printf "%.10g\t%.4g", b, be}' "$p")
+    emit "density_bulk_max_rel_dev_$2" $(max_rel_dev "$p" 2:10)
     emit_from $1 temperature "temperature_$2"
 }
 mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
