@@ -127,6 +127,27 @@ function num_wline(x, y, se, n, o,    i, w, sw, sx, sy, sxx, sxy, d, b, m) {
     return b
 }
 
+# num_wpoly2(X, Y, SE, N, O): the weighted (1 / SE^2) least-squares parabola
+# y = c0 + c1 x + c2 x^2 (Cramer's rule on the normal equations); o["c0"] and its error
+# o["c0_se"] from the inverse of the normal matrix; "nan" for fewer than 3 points
+function num_wpoly2(x, y, se, n, o,    i, w, p, xp, S, B, D) {
+    for (i = 1; i <= n; i++) {
+        w = 1 / num_sq(se[i]); xp = 1
+        for (p = 0; p <= 4; p++) { S[p] += w * xp; if (p <= 2) B[p] += w * y[i] * xp; xp *= x[i] }
+    }
+    D = num_det3(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4])
+    if (n < 3 || D == 0) { o["c0"] = o["c0_se"] = "nan"; return "nan" }
+    o["c0"] = num_det3(B[0], S[1], S[2], B[1], S[2], S[3], B[2], S[3], S[4]) / D
+    o["c0_se"] = sqrt((S[2] * S[4] - S[3] * S[3]) / D)
+    return o["c0"]
+}
+function num_det3(a11, a12, a13, a21, a22, a23, a31, a32, a33) {
+    return a11 * (a22 * a33 - a23 * a32) - a12 * (a21 * a33 - a23 * a31) + a13 * (a21 * a32 - a22 * a31)
+}
+# num_uniform_se(LO, HI): the standard deviation of a value known only to lie in [LO, HI]
+# (uniform: (HI - LO) / sqrt(12)), e.g. a threshold between two rungs of a ladder
+function num_uniform_se(lo, hi) { return (hi - lo) / sqrt(12) }
+
 # num_interp(X, Y, SE, N, XQ, XQSE, O): Y (tabulated at increasing X[1..N]) at XQ, linear
 # between the two bracketing points; the error from theirs (weights 1 - f, f) and, through
 # the local slope, from XQ's; "nan" outside [X[1], X[N]]

@@ -88,33 +88,29 @@ mv "$OUT/ladder-dt.tmp" "$OUT/ladder-dt.tsv"
 # Groot-Warren fluid, lambda = 0.5: (a) weighted fit T = T0 + c1 dt + c2 dt^2 (FDT: T0 = kBT);
 # (b) the order p of the error, weighted straight line through log |T - 1| against log dt
 # (points whose error exceeds 2 stderr); (c) |T - 1| at lambda 0.65 over that at 0.5, largest dt.
-awk -F'\t' -v big=0.06 '$1=="gw" {
+num_awk -F'\t' -v big=0.06 '$1=="gw" {
         if ($4 == "nan") next
         if ($2 == 0.5) { n++; x[n]=$3; y[n]=$4; s[n]=$5 }
         if ($3 == big) { e[$2]=$4-1; es[$2]=$5 } }
-    function det3(a11,a12,a13,a21,a22,a23,a31,a32,a33) { return a11*(a22*a33-a23*a32)-a12*(a21*a33-a23*a31)+a13*(a21*a32-a22*a31) }
     END {
         # (a) weighted quadratic least squares; the covariance is the inverse of the normal matrix
-        for (i = 1; i <= n; i++) { w = 1/s[i]^2; for (p = 0; p <= 4; p++) S[p] += w*x[i]^p; for (p = 0; p <= 2; p++) B[p] += w*y[i]*x[i]^p }
-        D = det3(S[0],S[1],S[2], S[1],S[2],S[3], S[2],S[3],S[4])
-        T0 = det3(B[0],S[1],S[2], B[1],S[2],S[3], B[2],S[3],S[4]) / D
-        T0se = sqrt((S[2]*S[4] - S[3]*S[3]) / D)
-        printf "T0_extrapolated_gw_lambda0.5\t%.6g\t%.4g\n", T0, T0se
+        num_wpoly2(x, y, s, n, o)
+        printf "T0_extrapolated_gw_lambda0.5\t%.6g\t%.4g\n", o["c0"], o["c0_se"]
         # (b) order: weighted line through (log dt, log |T - 1|), error of log|T-1| = s/|T-1|
-        m = 0; for (i = 1; i <= n; i++) { d = y[i]-1; d = d < 0 ? -d : d; if (d > 2*s[i]) { m++; X[m] = log(x[i]); Y[m] = log(d); W[m] = (d/s[i])^2 } }
-        if (m >= 2) { for (i = 1; i <= m; i++) { sw += W[i]; sx += W[i]*X[i]; sy += W[i]*Y[i]; sxx += W[i]*X[i]^2; sxy += W[i]*X[i]*Y[i] }
-                      dd = sw*sxx - sx*sx; pp = (sw*sxy - sx*sy)/dd; ps = sqrt(sw/dd)
-                      printf "T_error_order_gw_lambda0.5\t%.6g\t%.4g\n", pp, ps
+        m = 0; for (i = 1; i <= n; i++) { d = y[i]-1; d = d < 0 ? -d : d; if (d > 2*s[i]) { m++; X[m] = log(x[i]); Y[m] = log(d); W[m] = s[i]/d } }
+        if (m >= 2) { num_wline(X, Y, W, m, o)
+                      printf "T_error_order_gw_lambda0.5\t%.6g\t%.4g\n", o["slope"], o["slope_se"]
                       printf "T_error_order_points_gw_lambda0.5\t%d\t0\n", m }
         # (c) lambda 0.65 against 0.5 at the largest dt of the ladder
-        a = e[0.65]; a = a < 0 ? -a : a; b = e[0.5]; b = b < 0 ? -b : b; r = a/b
-        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%.6g\t%.4g\n", big, r, sqrt(es[0.65]^2 + (r*es[0.5])^2)/b
+        num_ratio(num_abs(e[0.65]), es[0.65], num_abs(e[0.5]), es[0.5], o)
+        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%.6g\t%.4g\n", big, o["v"], o["se"]
     }' "$OUT/ladder-dt.tsv" >> "$OUT/summary.tsv"
 # largest dt of each temperature ladder with |T - 1| <= 1 % (2 stderr allowed), and the next rung up
-awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -d : d
-        if (!(k in best)) { best[k] = 0; nxt[k] = "inf"; bad[k] = 0 }
+num_awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -d : d
+        if (!(k in best)) { best[k] = 0; nxt[k] = "inf"; bad[k] = 0; K[++nk] = k }
         if (d <= 0.01 + 2*$5 && !bad[k]) best[k] = $3; else if (!bad[k]) { bad[k] = 1; nxt[k] = $3 } }
-    END { for (k in best) printf "dt_T1pct_%s\t%s\t%s\n", k, best[k], (nxt[k] == "inf" ? "nan" : sprintf("%.3g", (nxt[k]-best[k])/sqrt(12))) }' \
+    END { for (j = 1; j <= nk; j++) { k = K[j]
+              printf "dt_T1pct_%s\t%s\t%s\n", k, best[k], (nxt[k] == "inf" ? "nan" : sprintf("%.3g", num_uniform_se(best[k], nxt[k]))) } }' \
     "$OUT/ladder-dt.tsv" | sort >> "$OUT/summary.tsv"
 
 # ---- 4: the m = 0 Couette viscosity against the solver tolerance -------------
@@ -128,7 +124,7 @@ for solver in pcg scheme2_consistent; do
         read -r _ _ _ _ eta etase < <(couette_viscosity $name 10 2:10)
         emit eta_${name} $eta $etase
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $solver $tol $eta $etase \
-            "$(awk -v e=$eta -v es=$etase -v r=$eta_ref -v rs=$eta_ref_se 'BEGIN{printf "%.6g\t%.4g", (e-r)/r, sqrt(es^2 + (e/r*rs)^2)/r}')" \
+            "$(num_awk -v e=$eta -v es=$etase -v r=$eta_ref -v rs=$eta_ref_se 'BEGIN{q[1] = es; q[2] = e/r*rs; printf "%.6g\t%.4g", (e-r)/r, num_quad(q, 2)/r}')" \
             "$(get $name solver_iterations | cut -f1)" "$(get $name solver_cpu_seconds_per_step | cut -f1)" \
             "$(get $name solver_true_rel_error | cut -f1)" >> "$OUT/ladder-tolerance.tsv"
     done
@@ -137,8 +133,7 @@ emit eta_fig03_paper_tier $eta_ref $eta_ref_se
 # the paper's tolerance (1e-7, PCG) against the fig03 paper tier: the same setting, shorter
 awk -F'\t' '$1=="pcg" && $2=="1e-7" {printf "eta_rel_error_pcg_1e-7\t%s\t%s\n", $5, $6}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
 # slope of log(true error) against log(tolerance), per solver (weighted equally)
-awk -F'\t' 'NR>1 && $9 > 0 { s=$1; n[s]++; x=log($2); y=log($9); sx[s]+=x; sy[s]+=y; sxx[s]+=x*x; sxy[s]+=x*y; X[s,n[s]]=x; Y[s,n[s]]=y }
-    END { for (s in n) { k=n[s]; d=k*sxx[s]-sx[s]^2; b=(k*sxy[s]-sx[s]*sy[s])/d; a=(sy[s]-b*sx[s])/k
-          for (i=1;i<=k;i++) r+= (Y[s,i]-a-b*X[s,i])^2; se=(k>2)?sqrt(r/(k-2)*k/d):0; r=0
-          printf "true_error_slope_%s\t%.6g\t%.4g\n", s, b, se } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
+num_awk -F'\t' 'NR>1 && $9 > 0 { s=$1; if (!(s in n)) S[++ns] = s; n[s]++; X[s,n[s]]=log($2); Y[s,n[s]]=log($9) }
+    END { for (j=1;j<=ns;j++) { s=S[j]; k=n[s]; for (i=1;i<=k;i++) { x[i]=X[s,i]; y[i]=Y[s,i] }
+          num_line(x, y, k, o); printf "true_error_slope_%s\t%.6g\t%.4g\n", s, o["slope"], (k>2) ? o["slope_se"] : 0 } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
 # (CPU of every run, the unstable ones included: tools/run-experiment sums runs/*/.cpu_seconds)
