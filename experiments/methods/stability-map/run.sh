@@ -62,11 +62,13 @@ bisect() {
         fi
         res="$res $lo:$hi"
     done
-    awk -v f=$fam -v p=$par -v v=$val -v r="$res" 'BEGIN{n=split(r,R," "); for(i=1;i<=n;i++){split(R[i],b,":"); lo[i]=b[1]; hi[i]=b[2]
+    # per seed the geometric middle of the last bracket, its error the bracket's (uniform); over
+    # the seeds their mean, the error the seeds' scatter and the brackets' (mean of n) in quadrature
+    num_awk -v f=$fam -v p=$par -v v=$val -v r="$res" 'BEGIN{n=split(r,R," "); for(i=1;i<=n;i++){split(R[i],b,":"); lo[i]=b[1]; hi[i]=b[2]
             if (hi[i]=="inf" || lo[i]==0) {bad=1; continue}
-            d[i]=sqrt(lo[i]*hi[i]); e[i]=(hi[i]-lo[i])/sqrt(12); s+=d[i]; L=(L==""||lo[i]<L)?lo[i]:L; H=(H==""||hi[i]>H)?hi[i]:H}
+            d[i]=sqrt(lo[i]*hi[i]); e[i]=num_uniform_se(lo[i], hi[i]); L=(L==""||lo[i]<L)?lo[i]:L; H=(H==""||hi[i]>H)?hi[i]:H}
         if (bad) { printf "%s\t%s\t%s\tnan\tnan\t%s\t%s\n", f, p, v, lo[1], hi[1]; exit }
-        m=s/n; if (n>1) {for(i=1;i<=n;i++) ss+=(d[i]-m)^2; se=sqrt(ss/(n-1)/n); be=0; for(i=1;i<=n;i++) be+=e[i]^2; be=sqrt(be)/n; se=sqrt(se^2+be^2)} else se=e[1]
+        m=num_mean_se(d, n, o); if (n>1) { q[1]=o["se"]; q[2]=num_quad(e, n)/n; se=num_quad(q, 2) } else se=e[1]
         printf "%s\t%s\t%s\t%.5g\t%.3g\t%s\t%s\n", f, p, v, m, se, L, H}' >> "$OUT/dt-max.tsv"
 }
 
@@ -104,9 +106,10 @@ awk -F'\t' 'NR>1 {printf "dt_max_%s_%s%s\t%s\t%s\n", $1, $2, $3, $4, $5}' "$OUT/
 # scaling exponents: weighted line through log dt_max against log(parameter) over the
 # values at and beyond the given threshold (the asymptotic regime of the theory)
 slope() {   # slope NAME FAMILY FROM TO: parameter values in [FROM, TO]
-    awk -F'\t' -v q=$1 -v f=$2 -v a=$3 -v b=$4 '$1==f && $3+0>=a && $3+0<=b && $4!="nan" {
-            n++; x=log($3); y=log($4); w=1/($5/$4)^2; sw+=w; sx+=w*x; sy+=w*y; sxx+=w*x*x; sxy+=w*x*y }
-        END { if (n < 2) { printf "%s\tnan\tnan\n", q; exit } d=sw*sxx-sx*sx; printf "%s\t%.5g\t%.3g\n", q, (sw*sxy-sx*sy)/d, sqrt(sw/d) }' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+    # (the error of log dt_max: dt_max's relative error)
+    num_awk -F'\t' -v q=$1 -v f=$2 -v a=$3 -v b=$4 '$1==f && $3+0>=a && $3+0<=b && $4!="nan" {
+            n++; x[n]=log($3); y[n]=log($4); s[n]=$5/$4 }
+        END { if (n < 2) { printf "%s\tnan\tnan\n", q; exit } num_wline(x, y, s, n, o); printf "%s\t%.5g\t%.3g\n", q, o["slope"], o["slope_se"] }' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 }
 slope dt_max_exponent_gamma_s2 gas_s2 450 1e9
 slope dt_max_exponent_gamma_s0.5 gas_s0.5 450 1e9
@@ -130,13 +133,13 @@ slope dt_max_exponent_H spring_m0 10000 1e9
 # and s = 0.5 (ideal gas, largest gamma) against the ratio of the mean sum_j w_D of an ideal
 # gas, 4 pi n int_0^1 r^2 (1 - r)^s dr = 8 pi n / ((s + 1)(s + 2)(s + 3))
 gmax=${GAS_GAMMAS##* }
-awk -F'\t' -v g=$gmax '$3==g && $1=="gas_s2"{a=$4; as=$5} $3==g && $1=="gas_s0.5"{b=$4; bs=$5}
-    END{r=a/b; printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%.5g\t%.3g\n", g, r, r*sqrt((as/a)^2+(bs/b)^2)
+num_awk -F'\t' -v g=$gmax '$3==g && $1=="gas_s2"{a=$4; as=$5} $3==g && $1=="gas_s0.5"{b=$4; bs=$5}
+    END{num_ratio(a, as, b, bs, o); printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%.5g\t%.3g\n", g, o["v"], o["se"]
         w2=2/(3*4*5); w05=2/(1.5*2.5*3.5); printf "sum_wD_ratio_s0.5_s2_ideal_gas\t%.5g\t0\n", w05/w2}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 # m = 0 solver against the inertial integrator at every mass <= 0.01 (the bands name m = 0.01, quick,
 # and 0.003, paper)
-emit_ratio_rows() { awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '$1==f1&&$3==v1{a=$4;as=$5} $1==f2&&$3==v2{b=$4;bs=$5}
-    END{r=a/b; printf "%s\t%.5g\t%.3g\n", q, r, r*sqrt((as/a)^2+(bs/b)^2)}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
+emit_ratio_rows() { num_awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '$1==f1&&$3==v1{a=$4;as=$5} $1==f2&&$3==v2{b=$4;bs=$5}
+    END{num_ratio(a, as, b, bs, o); printf "%s\t%.5g\t%.3g\n", q, o["v"], o["se"]}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
 for m in $MASSES; do
     if awk -v m=$m 'BEGIN{exit !(m <= 0.01)}'; then emit_ratio_rows dt_max_ratio_m0_solver_to_m$m mass_m0 0 mass $m; fi
 done
