@@ -90,12 +90,11 @@ val() { awk -F'\t' -v q="$1" '$1 == q { print $2 "\t" $3; f = 1; exit } END { ex
 # arithmetic on "value<TAB>stderr" pairs, first-order errors of independent operands:
 # pm OP X Y (OP: minus, over) and scale X FACTOR
 pm() {
-    awk -v op="$1" -v x="$2" -v y="$3" 'BEGIN { split(x, a, "\t"); split(y, b, "\t")
-        if (op == "minus") { v = a[1] - b[1]; e = sqrt(a[2]^2 + b[2]^2) }
-        else { v = a[1] / b[1]; e = (v < 0 ? -v : v) * sqrt((a[2] / a[1])^2 + (b[2] / b[1])^2) }
-        printf "%.10g\t%.4g\n", v, e }'
+    num_awk -v op="$1" -v x="$2" -v y="$3" 'BEGIN { split(x, a, "\t"); split(y, b, "\t")
+        if (op == "minus") num_diff(a[1], a[2], b[1], b[2], o); else num_ratio(a[1], a[2], b[1], b[2], o)
+        printf "%.10g\t%.4g\n", o["v"], o["se"] }'
 }
-scale() { awk -v x="$1" -v f="$2" 'BEGIN { split(x, a, "\t"); printf "%.10g\t%.4g\n", a[1] * f, a[2] * (f < 0 ? -f : f) }'; }
+scale() { num_awk -v x="$1" -v f="$2" 'BEGIN { split(x, a, "\t"); num_scale(a[1], a[2], f, o); printf "%.10g\t%.4g\n", o["v"], o["se"] }'; }
 # curve FILE [FREEHK_FILE]: the eta(k) shells (k n2 vectors eta eta_se) of a tcaf_eta.tsv where eta is
 # defined, continued by the shells of a high-k run above its last one
 curve() {
@@ -112,12 +111,8 @@ keff() {
 # two shells' and, through the slope, from k's; nan outside the curve
 at() {
     case ${2%	*} in nan|-nan|inf|-inf) printf 'nan\tnan\n'; return ;; esac
-    awk -F'\t' -v x="$2" 'BEGIN { split(x, q, "\t") } { n++; k[n] = $1; v[n] = $4; s[n] = $5 }
-        END { for (i = 1; i < n; i++) if (k[i] <= q[1] && q[1] <= k[i + 1]) {
-                  f = (q[1] - k[i]) / (k[i + 1] - k[i]); slope = (v[i + 1] - v[i]) / (k[i + 1] - k[i])
-                  printf "%.10g\t%.4g\n", (1 - f) * v[i] + f * v[i + 1], sqrt(((1 - f) * s[i])^2 + (f * s[i + 1])^2 + (slope * q[2])^2)
-                  exit }
-              printf "nan\tnan\n" }' "$1"
+    num_awk -F'\t' -v x="$2" 'BEGIN { split(x, q, "\t") } { n++; k[n] = $1; v[n] = $4; s[n] = $5 }
+        END { num_interp(k, v, s, n, q[1], q[2], o); printf "%s\t%s\n", num_fmt("%.10g", o["v"]), num_fmt("%.4g", o["se"]) }' "$1"
 }
 
 # ---- per repulsion and pair ----
@@ -247,18 +242,18 @@ for kind in propagated bound; do
                 $1 !~ /^#/ && $1 != "k" && ($2 in b) && $c != "nan" && $c > 0 { print log($c / b[$2]) }' \
                 "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/runs/$r/tcaf_fit_exp.tsv"
         done
-    done | awk -v q="exp_se_${kind}_over_blocks_a3.53" -v kind=$kind '{ n++; s += $1; ss += $1 * $1 }
-        END { m = s / n; e = sqrt((ss / n - m * m) / (n - 1)); printf "%s\t%.6g\t%.3g\n", q, exp(m), exp(m) * e
+    done | num_awk -v q="exp_se_${kind}_over_blocks_a3.53" -v kind=$kind '{ x[++n] = $1 }
+        END { m = num_mean_se(x, n, o); e = o["se"]; printf "%s\t%.6g\t%.3g\n", q, exp(m), exp(m) * e
               if (kind == "propagated") printf "exp_se_ratio_shells_a3.53\t%d\t0\n", n }' >> "$OUT/summary.tsv"
 done
 # paper: the eta_0 (1 - phi) test of Table 2 and the CPU that reading (b) at every phi would take
 if [ "$TIER" = paper ]; then
     e0=$(get solvent_shear_a3.53 viscosity)
     put eta0_solvent_a3.53 "$e0"
-    awk -F'\t' -v e0="$e0" 'NR == FNR { if ($1 ~ /^phi_phi/) phi[substr($1, 5)] = $2; next }
+    num_awk -F'\t' -v e0="$e0" 'NR == FNR { if ($1 ~ /^phi_phi/) phi[substr($1, 5)] = $2; next }
         /^#/ || $1 == "k" { next }
-        { split(e0, z, "\t"); t = sprintf("phi%.4f", $2); den = z[1] * (1 - phi[t]); r = $5 / den
-          printf "table2_eta_eff_over_eta0_one_minus_phi_%s\t%.10g\t%.4g\n", t, r, r * z[2] / z[1] }' "$OUT/summary.tsv" "$PAPER2" > "$OUT/.rows"
+        { split(e0, z, "\t"); t = sprintf("phi%.4f", $2); den = z[1] * (1 - phi[t])
+          num_rel1($5 / den, z[1], z[2], o); print num_row("table2_eta_eff_over_eta0_one_minus_phi_" t, o) }' "$OUT/summary.tsv" "$PAPER2" > "$OUT/.rows"
     cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
     for A in $AS; do
         awk -F'\t' '$1 == "cpu_seconds" { s += $2 } END { printf "%.1f\t0\n", s }' "$OUT"/runs/constrained_a${A}_phi*/provenance.tsv > "$OUT/.rows"
