@@ -49,8 +49,8 @@ if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
     tag=phi0.4940
     awk -F'\t' -v t="$tag" '$1 == "eta_k0_free_phi0.49" { print "eta_k0_free_" t "\t" $2 "\t" $3 }
         $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"
-    awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 } END { a = "eta_k0_free_" t; b = "eta_k0_constrained_" t
-        printf "eta_k0_free_minus_constrained_%s\t%.10g\t%.4g\n", t, v[a] - v[b], sqrt(s[a]^2 + s[b]^2) }' "$OUT/summary.tsv" > "$OUT/.rows"
+    num_awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 } END { a = "eta_k0_free_" t; b = "eta_k0_constrained_" t
+        num_diff(v[a], s[a], v[b], s[b], o); print num_row("eta_k0_free_minus_constrained_" t, o) }' "$OUT/summary.tsv" > "$OUT/.rows"
     cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
     ec=$(awk -F'\t' '$1 == "eta_eff_phi0.49" { print $2 "\t" $3 }' "$F04/summary.tsv")
     num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |

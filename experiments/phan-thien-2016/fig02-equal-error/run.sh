@@ -33,14 +33,15 @@ for solver in $solvers; do
     done
 done
 # interpolate each solver to E*; then the ratios of issue 3
-awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,k]=$3; its[s,k]=$4; cs[s,k]=$6; css[s,k]=$7}
+num_awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,k]=$3; its[s,k]=$4; cs[s,k]=$6; css[s,k]=$7}
   function interp(s, a, as,   k, j, i1, i2, w) {   # bracket log E* (or the nearest two when outside the ladder)
       i1 = 0; for (k = 1; k <= n[s]; k++) for (j = 1; j <= n[s]; j++) if (k != j && le[s,k] >= log(E) && le[s,j] <= log(E) && (i1 == 0 || le[s,k]-le[s,j] < le[s,i1]-le[s,i2])) { i1 = k; i2 = j }
       if (i1 == 0) { extrap[s] = 1; i1 = 1; i2 = 2; for (k = 1; k <= n[s]; k++) if ((le[s,k]-log(E))^2 < (le[s,i1]-log(E))^2) i1 = k
                      for (k = 1; k <= n[s]; k++) if (k != i1 && (i2 == i1 || (le[s,k]-log(E))^2 < (le[s,i2]-log(E))^2)) i2 = k }
       w = (le[s,i1] == le[s,i2]) ? 0.5 : (log(E) - le[s,i2]) / (le[s,i1] - le[s,i2])
-      V = w * a[s,i1] + (1 - w) * a[s,i2]; VS = sqrt((w * as[s,i1])^2 + ((1 - w) * as[s,i2])^2)
+      V = num_lin2(w, a[s,i1], as[s,i1], 1 - w, a[s,i2], as[s,i2], o); VS = o["se"]
   }
+  function ratio(q, v, vs, a, b) { num_ratio(v[a], vs[a], v[b], vs[b], o); printf "%s\t%.6g\t%.4g\n", q, o["v"], o["se"] }
   END {
       split("scheme1 scheme2_paper scheme2_consistent pcg pcg_2level", S, " ")
       bi = bt = ""
@@ -52,10 +53,10 @@ awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,k]=$
           if (extrap[s]) printf "extrapolated_%s\t1\t0\n", s
           if (bi == "" || I[s] < I[bi]) bi = s
           if (bt == "" || C[s] < C[bt]) bt = s }
-      r = I["scheme2_paper"] / I[bi]; printf "iteration_ratio_scheme2_best\t%.6g\t%.4g\n", r, r * sqrt((IS["scheme2_paper"]/I["scheme2_paper"])^2 + (IS[bi]/I[bi])^2)
-      r = C["scheme1"] / C[bt]; printf "time_ratio_scheme1_best\t%.6g\t%.4g\n", r, r * sqrt((CS["scheme1"]/C["scheme1"])^2 + (CS[bt]/C[bt])^2)
-      r = I["scheme1"] / I["scheme2_paper"]; printf "iteration_ratio_scheme1_scheme2\t%.6g\t%.4g\n", r, r * sqrt((IS["scheme1"]/I["scheme1"])^2 + (IS["scheme2_paper"]/I["scheme2_paper"])^2)
-      r = C["scheme1"] / C["scheme2_paper"]; printf "cpu_ratio_scheme1_scheme2_at_Estar\t%.6g\t%.4g\n", r, r * sqrt((CS["scheme1"]/C["scheme1"])^2 + (CS["scheme2_paper"]/C["scheme2_paper"])^2)
+      ratio("iteration_ratio_scheme2_best", I, IS, "scheme2_paper", bi)
+      ratio("time_ratio_scheme1_best", C, CS, "scheme1", bt)
+      ratio("iteration_ratio_scheme1_scheme2", I, IS, "scheme1", "scheme2_paper")
+      ratio("cpu_ratio_scheme1_scheme2_at_Estar", C, CS, "scheme1", "scheme2_paper")
       printf "best_iterations_is_pcg_2level\t%d\t0\n", bi == "pcg_2level"
       printf "best_time_is_pcg_2level\t%d\t0\n", bt == "pcg_2level"
   }' "$OUT/ladder.tsv" >> "$OUT/summary.tsv"
