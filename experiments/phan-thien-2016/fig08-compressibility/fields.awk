@@ -1,7 +1,7 @@
 # fields.awk - eq. 49 density residual and mean |div u| from a density map
 # (density_map.tsv: x y density vx vy, one block per grid row), over the bins
 # whose centre lies at least rex from the cylinder centre (cx, cy).
-# usage: awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk density_map.tsv
+# usage: num_awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk density_map.tsv
 BEGIN { FS = "\t"; row = 0; col = 0 }
 NR == 1 { next }
 NF == 0 { if (col > 0) { nx = col; row++ }; col = 0; next }
@@ -16,7 +16,7 @@ END {
         if (ddx * ddx + ddy * ddy < rex * rex) continue
         ip = (i + 1) % nx; im = (i + nx - 1) % nx; jp = (j + 1) % ny; jm = (j + ny - 1) % ny
         div = (U[ip, j] - U[im, j]) / (2 * dx) + (V[i, jp] - V[i, jm]) / (2 * dy)
-        ss += (N[i, j] - n0)^2; sdiv += (div < 0 ? -div : div); nb++
+        ss += num_sq(N[i, j] - n0); sdiv += num_abs(div); nb++
     }
     printf "%.10g\t%.10g\t%d\n", sqrt(ss) / nb, sdiv / nb, nb                     # eq. 49
 }

@@ -29,7 +29,7 @@ for m in 0 1; do
         rows=""
         for k in $seeds; do
             name="m${m}_P${P}_s$k"
-            rows+="$(awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
+            rows+="$(num_awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
         done
         # mean and standard error over the seeds
         printf '%s' "$rows" | num_awk -F'\t' -v P="$P" -v m="$m" '
