@@ -29,6 +29,7 @@ is "num_fmt of a number" "$(n 'print num_fmt("%.3f", 1.5)')" 1.500
 [ "$(n 'print num_fmt("%.3f", "nan")')" = nan ] && ok "num_fmt prints the string nan as nan" || bad "num_fmt nan" "$(n 'print num_fmt("%.3f", "nan")')"
 got=$(n 'o["v"] = 1/3; o["se"] = 2/3; print num_row("q", o)')
 [ "$got" = $'q\t0.3333333333\t0.6667' ] && ok "num_row: %.10g and %.4g" || bad "num_row" "$got"
+[ "$(n 'v = num_set(o, 1.5, 0.25); print v, o["v"], o["se"]')" = "1.5 1.5 0.25" ] && ok "num_set fills o and returns the value" || bad "num_set" "$(n 'v = num_set(o, 1.5, 0.25); print v, o["v"], o["se"]')"
 is "num_abs" "$(n 'print num_abs(-2.5) + num_abs(1)')" 3.5
 
 # ---- means
@@ -69,6 +70,35 @@ is "num_rel2: the value given" "${got% *}" 10; is "num_rel2: its relative error"
 got=$(n 'num_scale(2, 0.1, -3, o); printf "%.17g %.17g", o["v"], o["se"]')
 is "num_scale: value" "${got% *}" -6; is "num_scale: |factor| times the error" "${got#* }" 0.3
 
+got=$(n 'num_rel1(10, 4, 0.2, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_rel1: the value given" "${got% *}" 10; is "num_rel1: a's relative error" "${got#* }" 0.5
+got=$(n 'r[1] = 0.03; r[2] = 0.04; num_relerr(-2, r, 2, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_relerr: the value given" "${got% *}" -2; is "num_relerr: relative errors in quadrature" "${got#* }" 0.1
+# 2 / (4 +- 0.2): 0.5 +- 2 * 0.2 / 16
+got=$(n 'num_inverse(2, 4, 0.2, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_inverse: c / a" "${got% *}" 0.5; is "num_inverse: c sa / a^2" "${got#* }" 0.025
+got=$(n 'num_lin2(0.25, 8, 4, 0.75, 4, 4 / 3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_lin2: w1 a + w2 b" "${got% *}" 5; is "num_lin2: errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(2) }')"
+got=$(n 'num_div(3, 0.3, -2, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_div: value" "${got% *}" -1.5; is "num_div: positive error" "${got#* }" 0.15
+got=$(n 'num_sqrt(16, 2, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_sqrt: value" "${got% *}" 4; is "num_sqrt: sa / (2 sqrt a)" "${got#* }" 0.25
+# num_sq is x * x in every awk: at this x mawk's x^2 (pow) differs from x * x in the last bit
+got=$(n 'x = 45266225.18676623; printf "%d", num_sq(x) == x * x')
+[ "$got" = 1 ] && ok "num_sq is x * x" || bad "num_sq" "differs from x * x"
+is "num_uniform_se: (hi - lo) / sqrt(12)" "$(n 'printf "%.17g", num_uniform_se(1, 4)')" "$(awk 'BEGIN { printf "%.17g", 3 / sqrt(12) }')"
+# leave-one-out estimates 1, 2, 3, 4: mean 2.5, error sqrt(3/4 * 5)
+got=$(n 'x[1] = 1; x[2] = 2; x[3] = 3; x[4] = 4; num_jackknife_se(x, 4, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_jackknife_se: mean" "${got% *}" 2.5; is "num_jackknife_se: sqrt((n - 1) / n sum d^2)" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(3.75) }')"
+is "num_jackknife_se: one estimate has no error" "$(n 'x[1] = 3; num_jackknife_se(x, 1, o); print o["se"]')" nan
+is "num_project: (2, 4, 6.5) along (1, 2, 3)" "$(n 'x[1] = 2; x[2] = 4; x[3] = 6.5; w[1] = 1; w[2] = 2; w[3] = 3; printf "%.17g", num_project(x, w, 3)')" \
+    "$(awk 'BEGIN { printf "%.17g", 29.5 / 14 }')"
+is "num_project: along 0 is nan" "$(n 'x[1] = 1; w[1] = 0; print num_project(x, w, 1)')" nan
+# 9, 10, 12 (mean 31/3): the largest deviation is 12's, 5/31, its error 0.4 / (31/3)
+got=$(n 'x[1] = 9; x[2] = 10; x[3] = 12; s[1] = 0.1; s[2] = 0.2; s[3] = 0.4; num_max_rel_dev(x, s, 3, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_max_rel_dev: largest |x - mean| / mean" "${got% *}" "$(awk 'BEGIN { printf "%.17g", 5 / 31 }')"
+is "num_max_rel_dev: that x's error / mean" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 1.2 / 31 }')"
+
 # ---- lines
 # (0,0) (1,1) (2,1) (3,3): slope 0.9, intercept -0.1, residual sum of squares 0.7,
 # slope error sqrt(0.7 / 2 * 4 / 20), intercept error sqrt(0.7 / 2 * 14 / 20)
@@ -97,6 +127,19 @@ is "num_wline: slope error from the weights" "$bs" "$(awk 'BEGIN { printf "%.17g
 is "num_wline: intercept error from the weights" "$as" "$(awk 'BEGIN { printf "%.17g", sqrt(18 / 26) }')"
 [ "$np" = 4 ] && ok "num_wline: the row with error 0 left out" || bad "num_wline points" "$np"
 
+# parabola: y = 1 - 2 x + 3 x^2 exactly at x = 0..4 (errors 1): c0 = 1; with unit errors the
+# covariance of c0 is the (0, 0) element of the inverse of the normal matrix [[5, 10, 30],
+# [10, 30, 100], [30, 100, 354]]: 620 / 700 (its cofactor over its determinant)
+got=$(n 'for (i = 1; i <= 5; i++) { x[i] = i - 1; y[i] = 1 - 2 * x[i] + 3 * x[i] * x[i]; s[i] = 1 }
+    num_wpoly2(x, y, s, 5, o); printf "%.17g %.17g", o["c0"], o["c0_se"]')
+is "num_wpoly2: intercept of an exact parabola" "${got% *}" 1
+is "num_wpoly2: its error from the normal matrix" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(620 / 700) }')"
+got=$(n 'for (i = 1; i <= 5; i++) { x[i] = i - 1; y[i] = 1 - 2 * x[i] + 3 * x[i] * x[i]; s[i] = 1 }; s[2] = 0.5; y[2] += 0.1
+    num_wpoly2(x, y, s, 5, o); c = o["c0"]; for (i = 1; i <= 5; i++) s[i] *= 3; num_wpoly2(x, y, s, 5, o); printf "%.17g %.17g", c, o["c0"]')
+is "num_wpoly2: weights scaled alike leave c0" "${got% *}" "${got#* }"
+is "num_wpoly2: two points give nan" "$(n 'x[1] = 0; x[2] = 1; y[1] = 0; y[2] = 1; s[1] = s[2] = 1; print num_wpoly2(x, y, s, 2, o)')" nan
+is "num_det3" "$(n 'printf "%.17g", num_det3(2, 0, 1, 1, 3, 2, 1, 1, 2)')" 6
+
 # ---- interpolation: (1,10 +- 1) (2,20 +- 1) (4,0 +- 2) at 3 +- 0.5: 10, error
 # sqrt((0.5 * 1)^2 + (0.5 * 2)^2 + (-10 * 0.5)^2)
 tab='x[1] = 1; y[1] = 10; s[1] = 1; x[2] = 2; y[2] = 20; s[2] = 1; x[3] = 4; y[3] = 0; s[3] = 2'
@@ -106,6 +149,15 @@ got=$(n "$tab"'; num_interp(x, y, s, 3, 2, 0, o); printf "%.17g %.17g", o["v"], 
 is "num_interp: at a node" "${got% *}" 20; is "num_interp: a node's error" "${got#* }" 1
 got=$(n "$tab"'; num_interp(x, y, s, 3, 5, 0, o); print o["v"] o["se"]')
 [ "$got" = nannan ] && ok "num_interp: outside the table gives nan" || bad "num_interp outside" "$got"
+
+# crossing: y = 10, 20, 0 at x = 1, 2, 4 (errors 1, 1, 2) reaches 15 +- 1 at x = 1.5 (first pair);
+# dx/dyq = 1/10, dx/dy1 = 1 * (15 - 20) / 100, dx/dy2 = -1 * (15 - 10) / 100
+got=$(n "$tab"'; num_crossing(x, y, s, 3, 15, 1, o); printf "%.17g %.17g", o["v"], o["se"]')
+is "num_crossing: the first crossing" "${got% *}" 1.5; is "num_crossing: error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(0.01 + 0.0025 + 0.0025) }')"
+got=$(n "$tab"'; num_crossing(x, y, s, 3, 5, 1, o); printf "%.17g", o["v"]')
+is "num_crossing: on the falling side" "$got" 3.5
+got=$(n "$tab"'; num_crossing(x, y, s, 3, 25, 1, o); print o["v"] o["se"]')
+[ "$got" = nannan ] && ok "num_crossing: never reached gives nan" || bad "num_crossing never" "$got"
 
 # ---- blocks: rows of three blocks interleaved, each an exact line (slopes 2, 4, 9 and
 # means 2, 3, 10 over x = 0, 1): mean slope 5, its error sd / sqrt(3) = sqrt(13 / 3); mean of
@@ -135,6 +187,9 @@ got=$(printf 'a:4\n' | num_awk -F: -v k=2 -vj=3 '{ print $2 * k * j }')
 printf '1\n2\n' > "$tmp/f1"; printf '3\n' > "$tmp/f2"
 got=$(num_awk '{ x[NR] = $1 } END { print num_mean(x, NR) }' "$tmp/f1" "$tmp/f2")
 [ "$got" = 2 ] && ok "num_awk: files" || bad "num_awk files" "$got"
+printf '{ x[NR] = $1 } END { print num_mean(x, NR) * k }\n' > "$tmp/prog.awk"
+got=$(num_awk -v k=3 -f "$tmp/prog.awk" "$tmp/f1" "$tmp/f2")
+[ "$got" = 6 ] && ok "num_awk: -f PROGFILE" || bad "num_awk -f" "$got"
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
