@@ -23,6 +23,13 @@ is() {
 }
 # n PROGRAM: num_awk's output of a BEGIN-only program (%.17g: full precision)
 n() { num_awk "BEGIN { $1 }"; }
+# x EXPR: an expected value computed by plain awk, at full precision
+x() { awk "BEGIN { printf \"%.17g\", $1 }"; }
+# pair NAMES CALL WANT_VALUE WANT_ERROR: the value and the error that CALL leaves in o
+pair() {
+    local got; got=$(n "$2; printf \"%.17g %.17g\", o[\"v\"], o[\"se\"]")
+    is "${1%%; *}" "${got% *}" "$3"; is "${1#*; }" "${got#* }" "$4"
+}
 
 # ---- formatting
 is "num_fmt of a number" "$(n 'print num_fmt("%.3f", 1.5)')" 1.500
@@ -54,42 +61,28 @@ is "num_quad: 3, 4 -> 5" "$(n 'e[1] = 3; e[2] = 4; printf "%.17g", num_quad(e, 2
 got=$(n 'x[1] = 1; x[2] = -2; x[3] = 3; s[1] = 0.1; s[2] = 0.2; s[3] = 0.3; num_sum_linear(x, s, 3, o); printf "%.17g %.17g", o["v"], o["se"]')
 is "num_sum_linear: value" "${got% *}" 2
 is "num_sum_linear: errors added linearly" "${got#* }" 0.6
-got=$(n 'num_sum(5, 0.3, 3, 0.4, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_sum: value" "${got% *}" 8; is "num_sum: quadrature" "${got#* }" 0.5
-got=$(n 'num_diff(5, 0.3, 3, 0.4, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_diff: value" "${got% *}" 2; is "num_diff: quadrature" "${got#* }" 0.5
+pair "num_sum: value; num_sum: quadrature" 'num_sum(5, 0.3, 3, 0.4, o)' 8 0.5
+pair "num_diff: value; num_diff: quadrature" 'num_diff(5, 0.3, 3, 0.4, o)' 2 0.5
 # 6 +- 5 % over 3 +- 4 %: 2 +- 2 sqrt(0.05^2 + 0.04^2); a negative ratio keeps a positive error
-got=$(n 'num_ratio(6, 0.3, 3, 0.12, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_ratio: value" "${got% *}" 2; is "num_ratio: relative errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 2 * sqrt(0.0041) }')"
-got=$(n 'num_ratio(-6, 0.3, 3, 0.12, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_ratio: negative value" "${got% *}" -2; is "num_ratio: positive error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 2 * sqrt(0.0041) }')"
-got=$(n 'num_product(2, 0.1, 3, 0.3, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_product: value" "${got% *}" 6; is "num_product: relative errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 6 * sqrt(0.0125) }')"
-got=$(n 'num_rel2(10, 2, 0.1, 3, 0.3, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_rel2: the value given" "${got% *}" 10; is "num_rel2: its relative error" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 10 * sqrt(0.0125) }')"
-got=$(n 'num_scale(2, 0.1, -3, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_scale: value" "${got% *}" -6; is "num_scale: |factor| times the error" "${got#* }" 0.3
+pair "num_ratio: value; num_ratio: relative errors in quadrature" 'num_ratio(6, 0.3, 3, 0.12, o)' 2 "$(x '2 * sqrt(0.0041)')"
+pair "num_ratio: negative value; num_ratio: positive error" 'num_ratio(-6, 0.3, 3, 0.12, o)' -2 "$(x '2 * sqrt(0.0041)')"
+pair "num_product: value; num_product: relative errors in quadrature" 'num_product(2, 0.1, 3, 0.3, o)' 6 "$(x '6 * sqrt(0.0125)')"
+pair "num_rel2: the value given; num_rel2: its relative error" 'num_rel2(10, 2, 0.1, 3, 0.3, o)' 10 "$(x '10 * sqrt(0.0125)')"
+pair "num_scale: value; num_scale: |factor| times the error" 'num_scale(2, 0.1, -3, o)' -6 0.3
 
-got=$(n 'num_rel1(10, 4, 0.2, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_rel1: the value given" "${got% *}" 10; is "num_rel1: a's relative error" "${got#* }" 0.5
-got=$(n 'r[1] = 0.03; r[2] = 0.04; num_relerr(-2, r, 2, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_relerr: the value given" "${got% *}" -2; is "num_relerr: relative errors in quadrature" "${got#* }" 0.1
+pair "num_rel1: the value given; num_rel1: a's relative error" 'num_rel1(10, 4, 0.2, o)' 10 0.5
+pair "num_relerr: the value given; num_relerr: relative errors in quadrature" 'r[1] = 0.03; r[2] = 0.04; num_relerr(-2, r, 2, o)' -2 0.1
 # 2 / (4 +- 0.2): 0.5 +- 2 * 0.2 / 16
-got=$(n 'num_inverse(2, 4, 0.2, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_inverse: c / a" "${got% *}" 0.5; is "num_inverse: c sa / a^2" "${got#* }" 0.025
-got=$(n 'num_lin2(0.25, 8, 4, 0.75, 4, 4 / 3, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_lin2: w1 a + w2 b" "${got% *}" 5; is "num_lin2: errors in quadrature" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(2) }')"
-got=$(n 'num_div(3, 0.3, -2, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_div: value" "${got% *}" -1.5; is "num_div: positive error" "${got#* }" 0.15
-got=$(n 'num_sqrt(16, 2, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_sqrt: value" "${got% *}" 4; is "num_sqrt: sa / (2 sqrt a)" "${got#* }" 0.25
+pair "num_inverse: c / a; num_inverse: c sa / a^2" 'num_inverse(2, 4, 0.2, o)' 0.5 0.025
+pair "num_lin2: w1 a + w2 b; num_lin2: errors in quadrature" 'num_lin2(0.25, 8, 4, 0.75, 4, 4 / 3, o)' 5 "$(x 'sqrt(2)')"
+pair "num_div: value; num_div: positive error" 'num_div(3, 0.3, -2, o)' -1.5 0.15
+pair "num_sqrt: value; num_sqrt: sa / (2 sqrt a)" 'num_sqrt(16, 2, o)' 4 0.25
 # num_sq is x * x in every awk: at this x mawk's x^2 (pow) differs from x * x in the last bit
 got=$(n 'x = 45266225.18676623; printf "%d", num_sq(x) == x * x')
 [ "$got" = 1 ] && ok "num_sq is x * x" || bad "num_sq" "differs from x * x"
 is "num_uniform_se: (hi - lo) / sqrt(12)" "$(n 'printf "%.17g", num_uniform_se(1, 4)')" "$(awk 'BEGIN { printf "%.17g", 3 / sqrt(12) }')"
 # leave-one-out estimates 1, 2, 3, 4: mean 2.5, error sqrt(3/4 * 5)
-got=$(n 'x[1] = 1; x[2] = 2; x[3] = 3; x[4] = 4; num_jackknife_se(x, 4, o); printf "%.17g %.17g", o["v"], o["se"]')
-is "num_jackknife_se: mean" "${got% *}" 2.5; is "num_jackknife_se: sqrt((n - 1) / n sum d^2)" "${got#* }" "$(awk 'BEGIN { printf "%.17g", sqrt(3.75) }')"
+pair "num_jackknife_se: mean; num_jackknife_se: sqrt((n - 1) / n sum d^2)" 'x[1] = 1; x[2] = 2; x[3] = 3; x[4] = 4; num_jackknife_se(x, 4, o)' 2.5 "$(x 'sqrt(3.75)')"
 is "num_jackknife_se: one estimate has no error" "$(n 'x[1] = 3; num_jackknife_se(x, 1, o); print o["se"]')" nan
 is "num_project: (2, 4, 6.5) along (1, 2, 3)" "$(n 'x[1] = 2; x[2] = 4; x[3] = 6.5; w[1] = 1; w[2] = 2; w[3] = 3; printf "%.17g", num_project(x, w, 3)')" \
     "$(awk 'BEGIN { printf "%.17g", 29.5 / 14 }')"
