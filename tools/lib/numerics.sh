@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # tools/lib/numerics.sh - sourced (by tools/lib/exp.sh, the tests): num_awk, awk with the
 # statistics library tools/lib/numerics.awk loaded before the program.
 NUMERICS_AWK=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)/numerics.awk
