@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 is() {
     local rel=${4:-1e-14}
     if awk -v g="$2" -v w="$3" -v r="$rel" 'BEGIN {
-            if (w == "nan" || g == "nan") exit !(w == g)
+            if (w "" == "nan" || g "" == "nan") exit !(w "" == g "")
             d = g - w; t = r * (w < 0 ? -w : w); if (t == 0) t = r
             exit !(d <= t && -d <= t) }'; then ok "$1"; else bad "$1" "got $2, want $3"; fi
 }
