@@ -240,7 +240,7 @@ block_mean() { _blocks "$1" "$2" '$3 > r[1] && $3 < r[2]' num_block_mean; }
 _blocks() {
     num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } NR == 1 || $5 == "nan" { next }
         '"$3"' { num_block_add($1, $3, $5) }
-        END { '"$4"'(o); printf "%s\t%s\n", num_fmt("%.10g", o["v"]), num_fmt("%.4g", o["se"]) }' \
+        END { '"$4"'(o); print num_pair(o) }' \
         "$OUT/runs/$1/profile_blocks.tsv"
 }
 
@@ -250,7 +250,7 @@ _blocks() {
 max_rel_dev() {
     num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } /^#/ || $1 == "pos" { next }
         $1 >= r[1] && $1 <= r[2] { n++; d[n] = $2; e[n] = $3 }
-        END { num_max_rel_dev(d, e, n, o); printf "%.10g\t%.4g", o["v"], o["se"] }' "$1"
+        END { num_max_rel_dev(d, e, n, o); printf "%s", num_pair(o) }' "$1"
 }
 
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016

@@ -8,14 +8,29 @@
 # Conventions. A sample is an array x[1..n] (se[1..n] for its errors). A function with
 # one result returns it; one with a value and an error fills the array o: o["v"] and
 # o["se"] (a fit: o["slope"], o["slope_se"], o["icpt"], o["icpt_se"], o["n"]) and returns
-# o["v"] (the slope). An undefined result is the string "nan" (num_fmt prints it as nan
-# whatever the awk). Errors: first order, operands independent, unless said otherwise.
+# o["v"] (the slope). An undefined result is the string "nan" (num_fmt and num_pair print it
+# as nan whatever the awk). A "nan" operand (a summary's nan, read as text) makes the
+# combinations of two values and the means "nan", as mawk's NaN arithmetic does, without
+# computing with it: gawk reads the text nan as 0 (and stops on a division by it). The fits,
+# interpolations and blocks take finite rows (their callers leave the nan rows out).
+# Errors: first order, operands independent, unless said otherwise.
 # Local variables are the extra parameters after the blank gap, as awk wants.
 
-# num_fmt(FMT, X): X printed with FMT, "nan" for the string nan
-function num_fmt(fmt, x) { return (x "" == "nan") ? "nan" : sprintf(fmt, x) }
-# num_row(Q, O): the summary row "Q<TAB>value<TAB>stderr" of O (%.10g, %.4g: emit's convention)
-function num_row(q, o) { return q "\t" num_fmt("%.10g", o["v"]) "\t" num_fmt("%.4g", o["se"]) }
+# num_fmt(FMT, X): X printed with FMT, "nan" for the text nan
+function num_fmt(fmt, x) { return num_isnan(x) ? "nan" : sprintf(fmt, x) }
+# num_pair(O[, VFMT, SEFMT]): "value<TAB>stderr" of O (default %.10g, %.4g: emit's convention)
+function num_pair(o, vf, sf) {
+    return num_fmt(vf == "" ? "%.10g" : vf, o["v"]) "\t" num_fmt(sf == "" ? "%.4g" : sf, o["se"])
+}
+# num_row(Q, O): the summary row "Q<TAB>value<TAB>stderr" of O
+function num_row(q, o) { return q "\t" num_pair(o) }
+# num_isnan(X): X is the text nan (any case and sign), a summary's undefined value
+function num_isnan(x) { x = tolower(x ""); return x == "nan" || x == "-nan" || x == "+nan" }
+# num_nan4(O, A, SA, B, SB): 1, with O set to nan, if an operand is nan
+function num_nan4(o, a, sa, b, sb) {
+    if (!(num_isnan(a) || num_isnan(sa) || num_isnan(b) || num_isnan(sb))) return 0
+    num_set(o, "nan", "nan"); return 1
+}
 function num_abs(x) { return x < 0 ? -x : x }
 # num_sq(X): x * x (not x^2: mawk computes ^ with pow(), which this glibc rounds differently
 # from x * x in the last bit for some x, and gawk multiplies: a square is the same everywhere)
@@ -25,7 +40,7 @@ function num_set(o, v, se) { o["v"] = v; o["se"] = se; return v }
 # num_mean(X, N): the arithmetic mean, "nan" for N < 1
 function num_mean(x, n,    i, s) {
     if (n < 1) return "nan"
-    for (i = 1; i <= n; i++) s += x[i]
+    for (i = 1; i <= n; i++) { if (num_isnan(x[i])) return "nan"; s += x[i] }
     return s / n
 }
 # num_mean_se(X, N, O): the mean and its standard error, sample standard deviation (two
@@ -33,7 +48,7 @@ function num_mean(x, n,    i, s) {
 # the error is "nan" for N < 2
 function num_mean_se(x, n, o,    i, m, ss) {
     m = num_mean(x, n)
-    if (n < 2) return num_set(o, m, "nan")
+    if (n < 2 || m == "nan") return num_set(o, m, "nan")
     for (i = 1; i <= n; i++) ss += num_sq(x[i] - m)
     return num_set(o, m, sqrt(ss / (n - 1) / n))
 }
@@ -41,7 +56,7 @@ function num_mean_se(x, n, o,    i, m, ss) {
 # mean and the jackknife error sqrt((N - 1) / N sum (x - mean)^2); "nan" for N < 2
 function num_jackknife_se(x, n, o,    i, m, ss) {
     m = num_mean(x, n)
-    if (n < 2) return num_set(o, m, "nan")
+    if (n < 2 || m == "nan") return num_set(o, m, "nan")
     for (i = 1; i <= n; i++) ss += num_sq(x[i] - m)
     return num_set(o, m, sqrt((n - 1) / n * ss))
 }
@@ -74,27 +89,63 @@ function num_sum_linear(x, se, n, o,    i, v, e) {
 function num_quad(e, n,    i, s) { for (i = 1; i <= n; i++) s += num_sq(e[i]); return sqrt(s) }
 
 # two values with errors (a +- sa, b +- sb) into one
-function num_sum(a, sa, b, sb, o) { return num_set(o, a + b, sqrt(num_sq(sa) + num_sq(sb))) }
-function num_diff(a, sa, b, sb, o) { return num_set(o, a - b, sqrt(num_sq(sa) + num_sq(sb))) }
+function num_sum(a, sa, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb)) return "nan"
+    return num_set(o, a + b, sqrt(num_sq(sa) + num_sq(sb)))
+}
+function num_diff(a, sa, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb)) return "nan"
+    return num_set(o, a - b, sqrt(num_sq(sa) + num_sq(sb)))
+}
 # num_rel2(X, A, SA, B, SB, O): X, a product or quotient of powers +-1 of a and b, whose
 # relative error is a's and b's in quadrature
-function num_rel2(x, a, sa, b, sb, o) { return num_set(o, x, num_abs(x) * sqrt(num_sq(sa / a) + num_sq(sb / b))) }
+function num_rel2(x, a, sa, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb) || num_nan4(o, x, 0, 0, 0)) return "nan"
+    return num_set(o, x, num_abs(x) * sqrt(num_sq(sa / a) + num_sq(sb / b)))
+}
+function num_ratio(a, sa, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb)) return "nan"
+    return num_rel2(a / b, a, sa, b, sb, o)
+}
+function num_product(a, sa, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb)) return "nan"
+    return num_rel2(a * b, a, sa, b, sb, o)
+}
 # num_relerr(X, R, N, O): X with the relative errors R[1..N] in quadrature
-function num_relerr(x, r, n, o) { return num_set(o, x, num_abs(x) * num_quad(r, n)) }
+function num_relerr(x, r, n, o,    i) {
+    for (i = 1; i <= n; i++) if (num_nan4(o, x, r[i], 0, 0)) return "nan"
+    return num_set(o, x, num_abs(x) * num_quad(r, n))
+}
 # num_rel1(X, A, SA, O): X, a power +-1 of a times an exact factor, with a's relative error
-function num_rel1(x, a, sa, o) { return num_set(o, x, num_abs(x) * sa / num_abs(a)) }
+function num_rel1(x, a, sa, o) {
+    if (num_nan4(o, x, a, sa, 0)) return "nan"
+    return num_set(o, x, num_abs(x) * sa / num_abs(a))
+}
 # num_inverse(C, A, SA, O): c / a for an exact c, error |c| sa / a^2
-function num_inverse(c, a, sa, o) { return num_set(o, c / a, num_abs(c) * sa / num_sq(a)) }
+function num_inverse(c, a, sa, o) {
+    if (num_nan4(o, c, a, sa, 0)) return "nan"
+    return num_set(o, c / a, num_abs(c) * sa / num_sq(a))
+}
 # num_lin2(W1, A, SA, W2, B, SB, O): w1 a + w2 b for exact weights, errors in quadrature
-function num_lin2(w1, a, sa, w2, b, sb, o) { return num_set(o, w1 * a + w2 * b, sqrt(num_sq(w1 * sa) + num_sq(w2 * sb))) }
-function num_ratio(a, sa, b, sb, o) { return num_rel2(a / b, a, sa, b, sb, o) }
-function num_product(a, sa, b, sb, o) { return num_rel2(a * b, a, sa, b, sb, o) }
+function num_lin2(w1, a, sa, w2, b, sb, o) {
+    if (num_nan4(o, a, sa, b, sb)) return "nan"
+    return num_set(o, w1 * a + w2 * b, sqrt(num_sq(w1 * sa) + num_sq(w2 * sb)))
+}
 # num_sqrt: sqrt(a +- sa), error sa / (2 sqrt(a))
-function num_sqrt(a, sa, o,    r) { r = sqrt(a); return num_set(o, r, 0.5 * sa / r) }
+function num_sqrt(a, sa, o,    r) {
+    if (num_nan4(o, a, sa, 0, 0)) return "nan"
+    r = sqrt(a); return num_set(o, r, 0.5 * sa / r)
+}
 # num_div: (a +- sa) / c for an exact c (a theory, a unit)
-function num_div(a, sa, c, o) { return num_set(o, a / c, sa / num_abs(c)) }
+function num_div(a, sa, c, o) {
+    if (num_nan4(o, a, sa, c, 0)) return "nan"
+    return num_set(o, a / c, sa / num_abs(c))
+}
 # num_scale: f (a +- sa) for an exact factor f
-function num_scale(a, sa, f, o) { return num_set(o, a * f, sa * num_abs(f)) }
+function num_scale(a, sa, f, o) {
+    if (num_nan4(o, a, sa, f, 0)) return "nan"
+    return num_set(o, a * f, sa * num_abs(f))
+}
 
 # num_line(X, Y, N, O): unweighted least-squares line y = icpt + slope x; the errors from
 # the residuals (N - 2 degrees of freedom; "nan" for N < 3); "nan" for N < 2 or equal x
@@ -154,7 +205,8 @@ function num_uniform_se(lo, hi) { return (hi - lo) / sqrt(12) }
 function num_interp(x, y, se, n, xq, xqse, o,    i, f, b) {
     for (i = 1; i < n; i++) if (x[i] <= xq && xq <= x[i + 1]) {
         f = (xq - x[i]) / (x[i + 1] - x[i]); b = (y[i + 1] - y[i]) / (x[i + 1] - x[i])
-        return num_set(o, (1 - f) * y[i] + f * y[i + 1], sqrt(num_sq((1 - f) * se[i]) + num_sq(f * se[i + 1]) + num_sq(b * xqse)))
+        return num_set(o, (1 - f) * y[i] + f * y[i + 1],
+                       sqrt(num_sq((1 - f) * se[i]) + num_sq(f * se[i + 1]) + num_sq(b * xqse)))
     }
     return num_set(o, "nan", "nan")
 }
@@ -163,11 +215,12 @@ function num_interp(x, y, se, n, xq, xqse, o,    i, f, b) {
 # first reaches YQ, linear between the two bracketing points (the first pair from X[1]);
 # the errors of YQ and of the two points' Y propagated to first order (the x exact);
 # "nan" when Y never reaches YQ
-function num_crossing(x, y, se, n, yq, yqse, o,    i, f, dx, dy) {
+function num_crossing(x, y, se, n, yq, yqse, o,    i, f, dx, dy, e) {
     for (i = 1; i < n; i++) if ((y[i] - yq) * (y[i + 1] - yq) <= 0 && y[i] != y[i + 1]) {
         f = (yq - y[i]) / (y[i + 1] - y[i]); dx = x[i + 1] - x[i]; dy = y[i + 1] - y[i]
-        return num_set(o, x[i] + f * (x[i + 1] - x[i]),
-                       sqrt(num_sq(dx / dy * yqse) + num_sq(dx * (yq - y[i + 1]) / num_sq(dy) * se[i]) + num_sq(-dx * (yq - y[i]) / num_sq(dy) * se[i + 1])))
+        # d x / d yq, d y[i], d y[i + 1]
+        e[1] = dx / dy * yqse; e[2] = dx * (yq - y[i + 1]) / num_sq(dy) * se[i]; e[3] = -dx * (yq - y[i]) / num_sq(dy) * se[i + 1]
+        return num_set(o, x[i] + f * (x[i + 1] - x[i]), num_quad(e, 3))
     }
     return num_set(o, "nan", "nan")
 }

@@ -3,6 +3,7 @@
 # statistics library tools/lib/numerics.awk loaded before the program.
 NUMERICS_AWK=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)/numerics.awk
 
+# NUM_AWK: the awk to run (default awk; tests/numerics.sh runs again under each other awk found)
 # num_awk [-F SEP] [-v VAR=VALUE ...] PROGRAM [FILE...], or with -f PROGFILE instead of
 # PROGRAM: as awk, with the num_* functions defined. POSIX awk takes either a program text
 # or -f files, never both: a program text goes in as a second -f (a process substitution).
@@ -16,6 +17,6 @@ num_awk() {
             *) break ;;
         esac
     done
-    if [ $progfile = 1 ]; then awk -f "$NUMERICS_AWK" "${opts[@]}" "$@"
-    else awk "${opts[@]}" -f "$NUMERICS_AWK" -f <(printf '%s\n' "$1") "${@:2}"; fi
+    if [ $progfile = 1 ]; then ${NUM_AWK:-awk} -f "$NUMERICS_AWK" "${opts[@]}" "$@"
+    else ${NUM_AWK:-awk} "${opts[@]}" -f "$NUMERICS_AWK" -f <(printf '%s\n' "$1") "${@:2}"; fi
 }

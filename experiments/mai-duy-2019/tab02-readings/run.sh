@@ -92,9 +92,9 @@ val() { awk -F'\t' -v q="$1" '$1 == q { print $2 "\t" $3; f = 1; exit } END { ex
 pm() {
     num_awk -v op="$1" -v x="$2" -v y="$3" 'BEGIN { split(x, a, "\t"); split(y, b, "\t")
         if (op == "minus") num_diff(a[1], a[2], b[1], b[2], o); else num_ratio(a[1], a[2], b[1], b[2], o)
-        printf "%.10g\t%.4g\n", o["v"], o["se"] }'
+        printf "%s\n", num_pair(o) }'
 }
-scale() { num_awk -v x="$1" -v f="$2" 'BEGIN { split(x, a, "\t"); num_scale(a[1], a[2], f, o); printf "%.10g\t%.4g\n", o["v"], o["se"] }'; }
+scale() { num_awk -v x="$1" -v f="$2" 'BEGIN { split(x, a, "\t"); num_scale(a[1], a[2], f, o); printf "%s\n", num_pair(o) }'; }
 # curve FILE [FREEHK_FILE]: the eta(k) shells (k n2 vectors eta eta_se) of a tcaf_eta.tsv where eta is
 # defined, continued by the shells of a high-k run above its last one
 curve() {
@@ -112,7 +112,7 @@ keff() {
 at() {
     case ${2%	*} in nan|-nan|inf|-inf) printf 'nan\tnan\n'; return ;; esac
     num_awk -F'\t' -v x="$2" 'BEGIN { split(x, q, "\t") } { n++; k[n] = $1; v[n] = $4; s[n] = $5 }
-        END { num_interp(k, v, s, n, q[1], q[2], o); printf "%s\t%s\n", num_fmt("%.10g", o["v"]), num_fmt("%.4g", o["se"]) }' "$1"
+        END { num_interp(k, v, s, n, q[1], q[2], o); print num_pair(o) }' "$1"
 }
 
 # ---- per repulsion and pair ----

@@ -103,7 +103,7 @@ num_awk -F'\t' -v big=0.06 '$1=="gw" {
                       printf "T_error_order_points_gw_lambda0.5\t%d\t0\n", m }
         # (c) lambda 0.65 against 0.5 at the largest dt of the ladder
         num_ratio(num_abs(e[0.65]), es[0.65], num_abs(e[0.5]), es[0.5], o)
-        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%.6g\t%.4g\n", big, o["v"], o["se"]
+        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%s\n", big, num_pair(o, "%.6g", "%.4g")
     }' "$OUT/ladder-dt.tsv" >> "$OUT/summary.tsv"
 # largest dt of each temperature ladder with |T - 1| <= 1 % (2 stderr allowed), and the next rung up
 num_awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -d : d

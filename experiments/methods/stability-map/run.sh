@@ -134,12 +134,12 @@ slope dt_max_exponent_H spring_m0 10000 1e9
 # gas, 4 pi n int_0^1 r^2 (1 - r)^s dr = 8 pi n / ((s + 1)(s + 2)(s + 3))
 gmax=${GAS_GAMMAS##* }
 num_awk -F'\t' -v g=$gmax '$3==g && $1=="gas_s2"{a=$4; as=$5} $3==g && $1=="gas_s0.5"{b=$4; bs=$5}
-    END{num_ratio(a, as, b, bs, o); printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%.5g\t%.3g\n", g, o["v"], o["se"]
+    END{num_ratio(a, as, b, bs, o); printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%s\n", g, num_pair(o, "%.5g", "%.3g")
         w2=2/(3*4*5); w05=2/(1.5*2.5*3.5); printf "sum_wD_ratio_s0.5_s2_ideal_gas\t%.5g\t0\n", w05/w2}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 # m = 0 solver against the inertial integrator at every mass <= 0.01 (the bands name m = 0.01, quick,
 # and 0.003, paper)
 emit_ratio_rows() { num_awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '$1==f1&&$3==v1{a=$4;as=$5} $1==f2&&$3==v2{b=$4;bs=$5}
-    END{num_ratio(a, as, b, bs, o); printf "%s\t%.5g\t%.3g\n", q, o["v"], o["se"]}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
+    END{num_ratio(a, as, b, bs, o); printf "%s\t%s\n", q, num_pair(o, "%.5g", "%.3g")}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
 for m in $MASSES; do
     if awk -v m=$m 'BEGIN{exit !(m <= 0.01)}'; then emit_ratio_rows dt_max_ratio_m0_solver_to_m$m mass_m0 0 mass $m; fi
 done

@@ -58,7 +58,7 @@ sphere_blocks() {
 }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
 column_mean() {
-    num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%.10g\t%.4g", o["v"], o["se"] }' "$1"
+    num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%s", num_pair(o) }' "$1"
 }
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
 printf 'l\tu\tF paper\tF ours\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"

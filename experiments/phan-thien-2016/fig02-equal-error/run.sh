@@ -41,7 +41,7 @@ num_awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,
       w = (le[s,i1] == le[s,i2]) ? 0.5 : (log(E) - le[s,i2]) / (le[s,i1] - le[s,i2])
       V = num_lin2(w, a[s,i1], as[s,i1], 1 - w, a[s,i2], as[s,i2], o); VS = o["se"]
   }
-  function ratio(q, v, vs, a, b) { num_ratio(v[a], vs[a], v[b], vs[b], o); printf "%s\t%.6g\t%.4g\n", q, o["v"], o["se"] }
+  function ratio(q, v, vs, a, b) { num_ratio(v[a], vs[a], v[b], vs[b], o); printf "%s\t%s\n", q, num_pair(o, "%.6g", "%.4g") }
   END {
       split("scheme1 scheme2_paper scheme2_consistent pcg pcg_2level", S, " ")
       bi = bt = ""

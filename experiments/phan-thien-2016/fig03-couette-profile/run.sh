@@ -36,9 +36,9 @@ for solver in pcg scheme2_paper; do
     # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)
     read -r sb sbse < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
         $1>=r[1] && $1<=r[2] && $13!="nan" {n++; s[n]=$12; e[n]=$13} END{printf "%.10g\t%.4g\n", num_mean(s, n), num_mean(e, n)}' "$p")
-    emit "eta_bulk_ik$sfx" $(num_awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{num_ratio(t, ts, g, gs, o); printf "%.10g\t%.4g", o["v"], o["se"]}')
+    emit "eta_bulk_ik$sfx" $(num_awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{num_ratio(t, ts, g, gs, o); printf "%s", num_pair(o)}')
     emit "eta_wall_minus_bulk$sfx" $(num_awk -v a=$tau -v as=$tause -v b=$sb -v bs=$sbse -v g=$g 'BEGIN{num_diff(a, as, b, bs, o); num_div(o["v"], o["se"], g, o)
-        printf "%.10g\t%.4g", o["v"], o["se"]}')
+        printf "%s", num_pair(o)}')
     # density: largest relative deviation of a bulk bin from the bulk mean (error: that bin's)
     emit "density_bulk_max_rel_dev$sfx" $(max_rel_dev "$p" $BULK)
     emit "density_wall_bin$sfx" $(awk -F'\t' '/^#/||$1=="pos"{next} $2!="nan"{print $2 "\t" $3; exit}' "$p")
@@ -46,7 +46,7 @@ for solver in pcg scheme2_paper; do
 done
 # the published Scheme 2 against the solution of A v = f: does time averaging hide its error?
 emit shear_rate_scheme2_minus_pcg $(num_awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
-    END{num_diff(b, bs, a, as, o); printf "%.10g\t%.4g", o["v"], o["se"]}' "$OUT/summary.tsv")
+    END{num_diff(b, bs, a, as, o); printf "%s", num_pair(o)}' "$OUT/summary.tsv")
 # Cross-check without walls: Lees-Edwards shear of the same fluid (fig07's shear.cfg, 10 x 10, dt and
 # rate as here) at the channel's bulk density, which exceeds the nominal 4 because the fluid is
 # depleted next to the walls; the wall viscosity must equal it (at the nominal density it is lower:

@@ -35,9 +35,9 @@ for m in 0 1; do
         printf '%s' "$rows" | num_awk -F'\t' -v P="$P" -v m="$m" '
             { r[NR] = $1; d[NR] = $2; u[NR] = $4 }
             END { printf "%s\t%s", P, m
-                  num_mean_se(r, NR, o); printf "\t%.6g\t%.3g", o["v"], o["se"]
-                  num_mean_se(d, NR, o); printf "\t%.6g\t%.3g", o["v"], o["se"]
-                  num_mean_se(u, NR, o); printf "\t%.6g\t%.3g\n", o["v"], o["se"] }' \
+                  num_mean_se(r, NR, o); printf "\t%s", num_pair(o, "%.6g", "%.3g")
+                  num_mean_se(d, NR, o); printf "\t%s", num_pair(o, "%.6g", "%.3g")
+                  num_mean_se(u, NR, o); printf "\t%s\n", num_pair(o, "%.6g", "%.3g") }' \
             >> "$OUT/fields.tsv"
         # momentum balance: at m = 0 exact at every step; at m = 1 on average in the steady state
         emit_from "m${m}_P${P}_s1" force_on_cylinder_x "drag_m${m}_P$P"
@@ -49,11 +49,11 @@ done
 # c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %, runs eos_N137 and eos_N151), central difference
 c2=$(num_awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
         split(lo, a, "\t"); split(hi, b, "\t"); dn = (151 - 137) / 36.0
-        num_diff(b[1], b[2], a[1], a[2], o); num_div(o["v"], o["se"], dn, o); printf "%.10g\t%.4g", o["v"], o["se"] }')
-echo "$c2" | num_awk -F'\t' '{ num_sqrt($1, $2, o); printf "sound_speed_m1\t%.6g\t%.3g\n", o["v"], o["se"] }' >> "$OUT/summary.tsv"
+        num_diff(b[1], b[2], a[1], a[2], o); num_div(o["v"], o["se"], dn, o); printf "%s", num_pair(o) }')
+echo "$c2" | num_awk -F'\t' '{ num_sqrt($1, $2, o); printf "sound_speed_m1\t%s\n", num_pair(o, "%.6g", "%.3g") }' >> "$OUT/summary.tsv"
 printf 'P\tmach\tmach_se\n' > "$OUT/mach.tsv"
 num_awk -F'\t' -v c2="$c2" 'BEGIN { split(c2, x, "\t"); num_sqrt(x[1], x[2], cs) }
-    NR > 1 && $2 == 1 { num_ratio($7, $8, cs["v"], cs["se"], o); printf "%s\t%.6g\t%.3g\n", $1, o["v"], o["se"] }' \
+    NR > 1 && $2 == 1 { num_ratio($7, $8, cs["v"], cs["se"], o); printf "%s\t%s\n", $1, num_pair(o, "%.6g", "%.3g") }' \
     "$OUT/fields.tsv" >> "$OUT/mach.tsv"
 awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { printf "mach_m1_P%s\t%s\t%s\n", $1, $2, $3 }' "$OUT/mach.tsv" >> "$OUT/summary.tsv"
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0

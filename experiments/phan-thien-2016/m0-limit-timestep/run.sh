@@ -45,7 +45,7 @@ for m in $masses; do
 done
 mmin=${masses##* }
 emit shear_rate_m_smallest_minus_m0 $(num_awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x=$2; xs=$3} $1=="shear_rate_m0"{y=$2; ys=$3}
-    END{num_diff(x, xs, y, ys, o); printf "%.10g\t%.4g", o["v"], o["se"]}' "$OUT/summary.tsv")
+    END{num_diff(x, xs, y, ys, o); printf "%s", num_pair(o)}' "$OUT/summary.tsv")
 # 2. time step of the m = 0 run
 printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OUT/dt-scan.tsv"
 for dt in $dts; do analyse dt$dt dt$dt; done
