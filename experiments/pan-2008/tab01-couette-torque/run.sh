@@ -35,7 +35,7 @@ for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     # undisturbed vorticity: slope of the plane-averaged v_x(z) over the central 4 rc, fitted per
     # block (the bins of one profile share the flow's fluctuations: not independent)
-    c2=$(block_slope row$r 3.0:7.0 | awk -F'\t' '{printf "%.10g\t%.4g", $1/2, $2/2}')
+    c2=$(block_slope row$r 3.0:7.0 | num_awk -F'\t' '{ num_div($1, $2, 2, o); printf "%s", num_pair(o) }')
     emit "curl2_row$r" $c2
     T=$(get row$r torque_on_colloid_y)
     emit "torque_row$r" $T

@@ -37,7 +37,8 @@ printf 'row\tg\tu_h\tu_h_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttor
 printf 'row\tRe (paper)\tu_h\tF paper\tF ours\tF eq. 22\tF verdict@\tT paper\tT ours\tT eq. 22\tT verdict@\n' > "$OUT/table2.tsv"
 for r in $ROWS; do
     g=$(row_g $r)
-    uh=$(echo "$UREF" | awk -F'\t' -v g=$g -v g0=$GREF '{printf "%.10g\t%.4g", $1*g/g0, $2*g/g0}')
+    # (linear response: u_h scales with the force)
+    uh=$(echo "$UREF" | num_awk -F'\t' -v g=$g -v g0=$GREF '{ num_scale($1, $2, g, o); num_div(o["v"], o["se"], g0, o); printf "%s", num_pair(o) }')
     emit "u_h_row$r" $uh
     # eq. 22 (paper mu and R, h = 2 from the reflection plane z = 1)
     read -r Fth Tth < <(echo "$uh" | awk -F'\t' -v m=$MU -v R=$R -v h=$H '{pi = 3.141592653589793; q = R/h

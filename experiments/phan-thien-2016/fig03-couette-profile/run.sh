@@ -29,8 +29,8 @@ for solver in pcg scheme2_paper; do
     emit "r2_bulk$sfx" "$(fit r2 | cut -f1)" 0
     emit "velocity_centre$sfx" $(fit value_at_centre)
     # mean slip of the two walls: U - (v(YHI) - v(YLO)) / 2 = U - slope (YHI - YLO) / 2
-    emit "wall_slip$sfx" "$(awk -v u=$U -v g=$g -v h=$((YHI - YLO)) 'BEGIN{printf "%.10g", u - g*h/2}')" \
-         "$(awk -v s=$gse -v h=$((YHI - YLO)) 'BEGIN{printf "%.4g", s*h/2}')"
+    emit "wall_slip$sfx" $(num_awk -v u=$U -v g=$g -v gs=$gse -v h=$((YHI - YLO)) 'BEGIN { num_scale(g, gs, h / 2, o)
+        printf "%.10g\t%.4g", u - o["v"], o["se"] }')
     emit "wall_stress$sfx" "$tau" "$tause"
     emit "eta$sfx" "$eta" "$etase"
     # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)

@@ -34,7 +34,7 @@ for P in $Ps; do
         pi = atan2(0, -1); den = log(h / A[1]) - 1.3105                       # eq. 47
         FH = 4 * pi * E[1] * V[1] / den
         r[1] = V[2] / V[1]; r[2] = E[2] / E[1]; r[3] = A[2] / (A[1] * den); rel = num_quad(r, 3)
-        printf "force_balance_P%s\t%.10g\t%.4g\n", P, D[1] / (N * P) - 1, D[2] / (N * P)
+        num_div(D[1], D[2], N * P, o); o["v"] -= 1; print num_row("force_balance_P" P, o)
         num_relerr(D[1] / FH, r, 3, o); print num_row("hasimoto_ratio_P" P, o)
         # the radius that makes eq. 47 exact for this drag
         x = 4 * pi * E[1] * V[1] / D[1]

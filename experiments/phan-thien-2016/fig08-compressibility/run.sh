@@ -41,8 +41,8 @@ for m in 0 1; do
             >> "$OUT/fields.tsv"
         # momentum balance: at m = 0 exact at every step; at m = 1 on average in the steady state
         emit_from "m${m}_P${P}_s1" force_on_cylinder_x "drag_m${m}_P$P"
-        awk -F'\t' -v q="force_balance_m${m}_P$P" -v P="$P" -v v="$(get "m${m}_P${P}_s1" force_on_cylinder_x)" \
-            'BEGIN { split(v, x, "\t"); printf "%s\t%.10g\t%.4g\n", q, x[1] / (144 * P) - 1, x[2] / (144 * P) }' >> "$OUT/summary.tsv"
+        num_awk -F'\t' -v q="force_balance_m${m}_P$P" -v P="$P" -v v="$(get "m${m}_P${P}_s1" force_on_cylinder_x)" \
+            'BEGIN { split(v, x, "\t"); num_div(x[1], x[2], 144 * P, o); o["v"] -= 1; print num_row(q, o) }' >> "$OUT/summary.tsv"
     done
 done
 # Mach number of the m = 1 runs: U / c_T with the isothermal speed of sound
