@@ -54,6 +54,8 @@ is "num_mean_se: one value has no error" "$(n 'x[1] = 3; num_mean_se(x, 1, o); p
 got=$(n 'x[1] = 1; s[1] = 1; x[2] = 3; s[2] = 0.5; x[3] = 100; s[3] = 0; num_wmean_se(x, s, 3, o); printf "%.17g %.17g", o["v"], o["se"]')
 is "num_wmean_se: weighted mean" "${got% *}" 2.6
 is "num_wmean_se: 1 / sqrt(sum of weights)" "${got#* }" "$(awk 'BEGIN { printf "%.17g", 1 / sqrt(5) }')"
+got=$(n 'x[1] = 1; s[1] = 3; x[2] = "nan"; s[2] = 1; x[3] = 2; s[3] = "nan"; num_wmean_se(x, s, 3, o); printf "%s %s", o["v"], o["se"]')
+[ "$got" = "1 3" ] && ok "num_wmean_se: rows with a nan left out" || bad "num_wmean_se nan rows" "$got"
 got=$(n 'x[1] = 1; s[1] = 0; num_wmean_se(x, s, 1, o); print o["v"] o["se"]')
 [ "$got" = nannan ] && ok "num_wmean_se: no positive error gives nan" || bad "num_wmean_se nan" "$got"
 
@@ -134,6 +136,10 @@ is "num_wline: intercept" "$a" "$(awk 'BEGIN { printf "%.17g", (6 - 8 * 22 / 26)
 is "num_wline: slope error from the weights" "$bs" "$(awk 'BEGIN { printf "%.17g", sqrt(5 / 26) }')"
 is "num_wline: intercept error from the weights" "$as" "$(awk 'BEGIN { printf "%.17g", sqrt(18 / 26) }')"
 [ "$np" = 4 ] && ok "num_wline: the row with error 0 left out" || bad "num_wline points" "$np"
+got=$(n "$pts"'; for (i = 1; i <= 4; i++) s[i] = 1; x[5] = 9; y[5] = "nan"; s[5] = 1; x[6] = "nan"; y[6] = 1; s[6] = 1
+    x[7] = 8; y[7] = 1; s[7] = "nan"; num_wline(x, y, s, 7, o); printf "%.17g %d", o["slope"], o["n"]')
+is "num_wline: rows with a nan left out, slope" "${got% *}" 0.9
+[ "${got#* }" = 4 ] && ok "num_wline: rows with a nan left out" || bad "num_wline nan rows" "$got"
 
 # parabola: y = 1 - 2 x + 3 x^2 exactly at x = 0..4 (errors 1): c0 = 1; with unit errors the
 # covariance of c0 is the (0, 0) element of the inverse of the normal matrix [[5, 10, 30],

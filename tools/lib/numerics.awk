@@ -32,6 +32,8 @@ function num_nan4(o, a, sa, b, sb) {
     num_set(o, "nan", "nan"); return 1
 }
 function num_abs(x) { return x < 0 ? -x : x }
+# num_usable(V, SE): a value with a positive error, neither nan (a weighted fit's row)
+function num_usable(v, se) { return !num_isnan(v) && !num_isnan(se) && se + 0 > 0 }
 # num_sq(X): x * x (not x^2: mawk computes ^ with pow(), which this glibc rounds differently
 # from x * x in the last bit for some x, and gawk multiplies: a square is the same everywhere)
 function num_sq(x) { return x * x }
@@ -73,9 +75,10 @@ function num_max_rel_dev(x, se, n, o,    i, m, d, best, be) {
     return num_set(o, best, be)
 }
 # num_wmean_se(X, SE, N, O): the inverse-variance weighted mean and its error
-# 1 / sqrt(sum of the weights); "nan" when no value has a positive error
+# 1 / sqrt(sum of the weights); values with an error <= 0 or nan are left out; "nan" when
+# none is left
 function num_wmean_se(x, se, n, o,    i, w, sw, swx) {
-    for (i = 1; i <= n; i++) if (se[i] > 0) { w = 1 / num_sq(se[i]); sw += w; swx += w * x[i] }
+    for (i = 1; i <= n; i++) if (num_usable(x[i], se[i])) { w = 1 / num_sq(se[i]); sw += w; swx += w * x[i] }
     if (sw == 0) return num_set(o, "nan", "nan")
     return num_set(o, swx / sw, 1 / sqrt(sw))
 }
@@ -162,10 +165,10 @@ function num_line(x, y, n, o,    i, sx, sy, sxx, sxy, d, b, a, r) {
     return b
 }
 # num_wline(X, Y, SE, N, O): the weighted (1 / SE^2) least-squares line; the errors from
-# SE (not from the scatter), as a chi-square fit with known errors; rows with SE <= 0
-# are left out; "nan" for fewer than 2 rows or equal x
+# SE (not from the scatter), as a chi-square fit with known errors; rows with SE <= 0 or a
+# nan are left out; "nan" for fewer than 2 rows or equal x
 function num_wline(x, y, se, n, o,    i, w, sw, sx, sy, sxx, sxy, d, b, m) {
-    for (i = 1; i <= n; i++) if (se[i] > 0) {
+    for (i = 1; i <= n; i++) if (num_usable(y[i], se[i]) && !num_isnan(x[i])) {
         w = 1 / num_sq(se[i]); m++
         sw += w; sx += w * x[i]; sy += w * y[i]; sxx += w * x[i] * x[i]; sxy += w * x[i] * y[i]
     }
