@@ -23,21 +23,34 @@ int  box_advance(Box *b, double dt);
  * so that their unwrapped x (box_image_shift) does not move. */
 void box_offset_wrapped(int32_t *img, int n, int k);
 
-/* Minimum-image separation r_i - r_j and, if dv != NULL, the velocity of i
- * relative to that image of j. le = 0 (a constant in the hot loops, which are
- * compiled once per value) leaves out the Lees-Edwards shift: only for boxes
- * without shear, whose offset is 0. */
+/* The x velocity of the Lees-Edwards image of j nearest to i relative to j,
+ * for wrapped positions with y_i - y_j = dy: +rate L_y when dy > L_y / 2 (the
+ * nearest image is the row above, y_j + L_y), -rate L_y when dy < -L_y / 2,
+ * else 0. The one copy of the image velocity (Lees & Edwards 1972): every pair
+ * kernel subtracts it from v_i - v_j. */
+static inline double box_image_vx(const Box *b, double dy)
+{
+    if (dy > b->half[1]) return b->shear_rate * b->L[1];
+    if (dy < -b->half[1]) return -b->shear_rate * b->L[1];
+    return 0.0;
+}
+
+/* Minimum-image separation r_i - r_j and, if dvx != NULL, the x velocity of i
+ * relative to that image of j (*dvx -= box_image_vx). le = 0 (a constant in the
+ * hot loops, which are compiled once per value) leaves out the Lees-Edwards
+ * shift: only for boxes without shear, whose offset is 0. */
 static inline void box_min_image_le(const Box *b, double d[3], double *dvx, const int le)
 {
     /* positions are wrapped into [0, L), so one fold per direction suffices
      * (two in x after a Lees-Edwards shift); no rint(), which is a libm call
      * on baseline x86-64 */
+    if (DPD_MODULES && le && dvx) *dvx -= box_image_vx(b, d[1]);
     if (d[1] > b->half[1]) {
         d[1] -= b->L[1];
-        if (DPD_MODULES && le) { d[0] -= b->le_offset; if (dvx) *dvx -= b->shear_rate * b->L[1]; }
+        if (DPD_MODULES && le) d[0] -= b->le_offset;
     } else if (d[1] < -b->half[1]) {
         d[1] += b->L[1];
-        if (DPD_MODULES && le) { d[0] += b->le_offset; if (dvx) *dvx += b->shear_rate * b->L[1]; }
+        if (DPD_MODULES && le) d[0] += b->le_offset;
     }
     if (d[0] > b->half[0]) { d[0] -= b->L[0]; if (d[0] > b->half[0]) d[0] -= b->L[0]; }
     else if (d[0] < -b->half[0]) { d[0] += b->L[0]; if (d[0] < -b->half[0]) d[0] += b->L[0]; }

@@ -1,12 +1,15 @@
-/* forces.c - DPD pair forces and body forces. */
+/* forces.c - the pair driver: the walk over the neighbour list, cut into
+ * FORCE_CHUNKS fixed chunks that accumulate into their own buffers, summed in
+ * a fixed order (deterministic for any thread count); the virial by part; the
+ * evaluators of pair_dpd.h and pair_pan2008.h compiled into the walk once per
+ * model and Lees-Edwards state; the serial walk of the m = 0 assembly
+ * (pair_visit); body forces. */
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
 #include "forces.h"
-#include "random.h"
-#include "rotation.h"
-
-#define R_EPSILON 1e-10   /* pairs closer than this have no direction: skipped */
+#include "pair_dpd.h"
+#include "pair_pan2008.h"
 
 int forces_init(ForceWork *w, const System *s, int nbins)
 {
@@ -40,29 +43,20 @@ void forces_free(ForceWork *w)
     memset(w, 0, sizeof *w);
 }
 
-/* w_R = (1 - r/rc)^(s/2), so that w_D = w_R^2 = (1 - r/rc)^s (eqs 6-7). */
-static inline double random_weight(double wc, double s)
-{
-    if (s == 2.0) return wc;
-    if (s == 1.0) return sqrt(wc);
-    if (s == 0.5) return sqrt(sqrt(wc));
-    return pow(wc, 0.5 * s);
-}
-
-static inline void pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
-                                   double inv_sqrt_dt, double *fc, double *fd, double *fr)
-{
-    const double wc = 1.0 - r / p->rc;                 /* w_C, eq. 5 */
-    const double wr = random_weight(wc, p->s);         /* w_R = sqrt(w_D), eq. 7 */
-    *fc = p->a * wc;                                   /* conservative, eq. 2 */
-    *fd = -p->gamma * wr * wr * e_dot_v;               /* dissipative, eq. 3 */
-    *fr = p->sigma * wr * theta * inv_sqrt_dt;         /* random, eq. 4 */
-}
-
 void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
                          double inv_sqrt_dt, double *fc, double *fd, double *fr)
 {
-    pair_magnitudes(p, r, e_dot_v, theta, inv_sqrt_dt, fc, fd, fr);
+    dpd_pair_terms(p, r, e_dot_v, theta, inv_sqrt_dt, fc, fd, fr);
+}
+
+void pan2008_pair_force(const PairParams *p, const double d[3], const double dv[3],
+                        const double wsum[3], double theta, const double xi[3],
+                        double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+{
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double e[3], wc, f;
+    pan_pair_geometry(p, d, r, e, &wc, &f);
+    pan_pair_force(p, d, e, wc, f, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
 }
 
 void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
@@ -89,6 +83,14 @@ void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
     }
 }
 
+void pair_virial_add(PairVirial *pv, const System *s, int i, int q, const double d[3], const double t[9])
+{
+    for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
+    if (pv->nbins > 0)
+        ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
+                      s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
+}
+
 void forces_zero_virial(PairVirial *pv)
 {
     double *wb = pv->Wbin;
@@ -98,107 +100,50 @@ void forces_zero_virial(PairVirial *pv)
     if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
 }
 
-/* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
- * energy and the force on frozen particles. Only on measurement steps, so kept
- * out of line (the pair loop then compiles alike with and without -DDPD_BARE). */
-static __attribute__((noinline, noclone)) void accumulate_virial(PairVirial *pv, const System *s, int i, int j, const double d[3],
-                              double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
-{
-    const Box *b = &s->box;
-    const double inv_r = 1.0 / r;
-    const PairParams *p = &s->pair[s->type[i]][s->type[j]];
-    for (int q = 0; q < PAIR_PARTS; q++) {
-        double t[9];
-        const double g = F[q] * inv_r;
-        for (int a = 0; a < 3; a++)
-            for (int c = 0; c < 3; c++) t[3 * a + c] = d[a] * d[c] * g;
-        for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
-        if (pv->nbins > 0)
-            ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
-                          b->L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
-    }
-    const double wc = 1.0 - r / p->rc;
-    pv->epot += 0.5 * p->a * p->rc * wc * wc;
-    const int ti = s->type[i], tj = s->type[j];
-    if (MOD_FROZEN(&s->types[tj])) {
-        pv->frozen_force[tj][0] -= fx; pv->frozen_force[tj][1] -= fy; pv->frozen_force[tj][2] -= fz;
-    }
-    if (MOD_FROZEN(&s->types[ti])) {
-        pv->frozen_force[ti][0] += fx; pv->frozen_force[ti][1] += fy; pv->frozen_force[ti][2] += fz;
-    }
-}
+enum { MODEL_DPD, MODEL_PAN2008 };
 
-/* The pair loop for the particles [i0, i1); pv != NULL also sums the virial.
- * le: the box has Lees-Edwards shear. A constant: the loop is compiled once per
- * value (pair_loop below), so that a scene without shear runs no test for it. */
+/* The walk over the particles [i0, i1) of one chunk: each particle's list
+ * entries a batch at a time, those inside the largest cutoff (pairs_in_range)
+ * handed to the model's evaluator, then i's own sums added. The list holds
+ * interacting type pairs only (neighbor.c keep_pair). model and le (Lees-Edwards
+ * shear) are constants: the walk is compiled once per value (pair_chunk), so
+ * that a scene without shear or rotation runs no test for them. */
 static inline __attribute__((always_inline))
-void pair_loop_le(const System *s, const NeighborList *nl, int i0, int i1,
-                  double *f, unsigned char *touched, PairVirial *pv, const int le)
+void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc,
+               PairVirial *pv, const int model, const int le)
 {
-    const int n = s->n;
-    const Box *b = &s->box;
-    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
-    const double *x = s->x, *v = s->v_pred;
-    enum { BATCH = PAIR_BATCH };
-    int near[BATCH];
-    double dd[BATCH][4];
+    int near[PAIR_BATCH];
+    double dd[PAIR_BATCH][4];
     for (int i = i0; i < i1; i++) {
-        const int ti = s->type[i];
-        double fi[3] = {0.0, 0.0, 0.0};
-        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += BATCH) {
-            const int k1 = k0 + BATCH < nl->start[i + 1] ? k0 + BATCH : nl->start[i + 1];
+        for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
+            const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
             const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
-            /* pass 2: the forces */
-            for (int q = 0; q < m; q++) {
-                const int j = near[q];
-                const PairParams *p = &s->pair[ti][s->type[j]];
-                const double r2 = dd[q][3];
-                if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) continue;
-                const double d[3] = {dd[q][0], dd[q][1], dd[q][2]};
-                double dvx = v[3 * i] - v[3 * j];
-                if (le) {   /* velocity of the Lees-Edwards image */
-                    const double dy = x[3 * i + 1] - x[3 * j + 1];
-                    if (dy > b->half[1]) dvx -= b->shear_rate * b->L[1];
-                    else if (dy < -b->half[1]) dvx += b->shear_rate * b->L[1];
-                }
-                const double r = sqrt(r2), inv_r = 1.0 / r;
-                const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
-                const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
-                                 + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
-                const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
-                double F[PAIR_PARTS];
-                pair_magnitudes(p, r, edv, theta, inv_sqrt_dt,
-                                    &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
-                const double ft = F[0] + F[1] + F[2];
-                const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
-                fi[0] += fx; fi[1] += fy; fi[2] += fz;
-                force_claim(f, NULL, touched, j, n);
-                f[3 * j] -= fx; f[3 * j + 1] -= fy; f[3 * j + 2] -= fz;
-                if (pv) accumulate_virial(pv, s, i, j, d, r, F, fx, fy, fz);
-            }
+            if (model == MODEL_PAN2008) pan_pair_batch(s, i, near, dd, m, acc, pv, le);
+            else dpd_pair_batch(s, i, near, dd, m, acc, pv, le);
         }
-        force_claim(f, NULL, touched, i, n);
-        f[3 * i] += fi[0]; f[3 * i + 1] += fi[1]; f[3 * i + 2] += fi[2];
+        force_claim(acc->f, acc->tq, acc->touched, i, acc->n);
+        for (int a = 0; a < 3; a++) acc->f[3 * i + a] += acc->fi[a];
+        if (model == MODEL_PAN2008)
+            for (int a = 0; a < 3; a++) acc->tq[3 * i + a] += acc->ti[a];
     }
 }
 
-static void pair_loop_shear(const System *s, const NeighborList *nl, int i0, int i1, double *f,
-                            unsigned char *touched, PairVirial *pv)
-{
-    pair_loop_le(s, nl, i0, i1, f, touched, pv, 1);
-}
+static void walk_dpd_plain(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_DPD, 0); }
+static void walk_dpd_shear(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_DPD, 1); }
+static void walk_pan2008_plain(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_PAN2008, 0); }
+static void walk_pan2008_shear(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_PAN2008, 1); }
 
-static void pair_loop_plain(const System *s, const NeighborList *nl, int i0, int i1, double *f,
-                            unsigned char *touched, PairVirial *pv)
+/* One chunk with the walk the scene's model and box need. */
+static void pair_chunk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
 {
-    pair_loop_le(s, nl, i0, i1, f, touched, pv, 0);
-}
-
-static void pair_loop(const System *s, const NeighborList *nl, int i0, int i1, double *f,
-                      unsigned char *touched, PairVirial *pv)
-{
-    if (MOD_SHEAR(&s->box)) pair_loop_shear(s, nl, i0, i1, f, touched, pv);
-    else pair_loop_plain(s, nl, i0, i1, f, touched, pv);
+    const int le = MOD_SHEAR(&s->box);
+    if (MOD_ROTATION(s)) (le ? walk_pan2008_shear : walk_pan2008_plain)(s, nl, i0, i1, acc, pv);
+    else (le ? walk_dpd_shear : walk_dpd_plain)(s, nl, i0, i1, acc, pv);
 }
 
 int forces_chunk_start(const NeighborList *nl, int n, int c)
@@ -281,22 +226,44 @@ void forces_reduce_virial(PairVirial *pv, const ForceWork *w)
 
 void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
 {
-    if (MOD_ROTATION(s)) { rotation_forces_compute(s, nl, w, pv); forces_body(s); return; }
-    const int n = s->n;
+    const int n = s->n, rot = MOD_ROTATION(s);
     const size_t stride = 3 * (size_t)n;
     /* contiguous chunks per thread (thread 0: the first half of the particles
      * on 2 threads), as the particle loops of the integrator: each thread
      * reads and writes mostly the particles it will move */
     #pragma omp parallel for schedule(static)
     for (int c = 0; c < FORCE_CHUNKS; c++) {
-        /* chunk 0 accumulates straight into f: one buffer less to clear and read */
-        double *buf = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride;
+        /* chunk 0 accumulates straight into f (and the torques): one buffer less to clear and read */
+        PairAcc acc = {.f = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride,
+                       .tq = !rot ? NULL : c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride,
+                       .touched = forces_chunk_mask(w, c), .n = n};
         const int i0 = forces_chunk_start(nl, n, c), i1 = forces_chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
-        pair_loop(s, nl, i0, i1, buf, forces_chunk_mask(w, c), cv);
+        pair_chunk(s, nl, i0, i1, &acc, cv);
     }
-    forces_sum_chunks(w, s->f, w->buf, NULL, NULL);
+    if (rot) forces_sum_chunks(w, s->f, w->buf, s->torque, w->tbuf);
+    else forces_sum_chunks(w, s->f, w->buf, NULL, NULL);
     if (pv) forces_reduce_virial(pv, w);
     forces_body(s);
+}
+
+/* The serial walk for the m = 0 assembly: every interacting listed pair, in
+ * list order, with its minimum-image separation d = r_i - r_j, r^2 and the x
+ * velocity of j's nearest Lees-Edwards image relative to j. */
+void pair_visit(const System *s, const NeighborList *nl, PairVisitor visit, void *ctx)
+{
+    const int le = MOD_SHEAR(&s->box);
+    int near[PAIR_BATCH];
+    double dd[PAIR_BATCH][4];
+    for (int i = 0; i < s->n; i++)
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
+            const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
+            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, 1);
+            for (int q = 0; q < m; q++) {
+                const int j = near[q];
+                if (!pair_interacts(&s->pair[s->type[i]][s->type[j]], dd[q][3])) continue;
+                visit(ctx, i, j, dd[q], dd[q][3], pair_image_vx(s, i, j, le));
+            }
+        }
 }

@@ -106,3 +106,15 @@ void integrate_correct(System *s)
     if (MOD_ROTATION(s)) rotation_correct(s);
     if (MOD_ON(s->has_held_velocity)) hold_mean_velocities(s);
 }
+
+void integrate_confine(System *s, int a, double lo, double hi)
+{
+    if (!MOD_ON(a >= 0)) return;
+    #pragma omp parallel for schedule(static)
+    for (int i = 0; i < s->n; i++) {
+        if (s->types[s->type[i]].frozen) continue;
+        double *x = s->x + 3 * i, *v = s->v + 3 * i, *vp = s->v_pred + 3 * i;
+        if (x[a] < lo) { x[a] = 2.0 * lo - x[a]; v[a] = -v[a]; vp[a] = -vp[a]; }
+        else if (x[a] > hi) { x[a] = 2.0 * hi - x[a]; v[a] = -v[a]; vp[a] = -vp[a]; }
+    }
+}

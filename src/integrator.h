@@ -21,4 +21,9 @@ double integrate_predict(System *s);
  * mobile particles whose velocity is not finite. */
 void integrate_correct(System *s);
 
+/* Specular walls (a constraint after the move): a mobile particle that
+ * crossed the plane x_axis = lo or hi is mirrored back, its normal velocity
+ * (and prediction) reversed. axis < 0: no walls. */
+void integrate_confine(System *s, int axis, double lo, double hi);
+
 #endif

@@ -2,6 +2,7 @@
  * system A v = f (Phan-Thien, Mai-Duy, Khoo & Duong-Hong 2016, eqs 14-46).
  * See overdamped.h for the layout and the list of solvers. */
 #include <stdlib.h>
+#include <stddef.h>
 #include <string.h>
 #include <math.h>
 #include <gsl/gsl_cblas.h>
@@ -9,9 +10,11 @@
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_linalg.h>
 #include "overdamped.h"
+#include "forces.h"
+#include "integrator.h"
 #include "random.h"
+#include "timers.h"
 
-#define R_EPSILON 1e-10      /* as in forces.c: coincident pairs have no direction */
 #define SINGULAR_REL 1e-12   /* det below this x (trace/dim)^dim: block treated as singular */
 
 void od_init(OdSystem *od)
@@ -116,37 +119,75 @@ static int sym_inverse(const double *B, int dim, double *Binv)
 
 /* -------------------------------------------------------------- assembly */
 
-/* Geometry of a pair as in forces.c: unit vector e_ij, distance, and the x
- * velocity of the Lees-Edwards image of j relative to j (dvimg, so that the
- * relative velocity is v_i - v_j - dvimg). Returns 0 if the pair does not
- * interact. */
-static int pair_geometry(const System *s, int i, int j, double e[3], double *r, double *dvimg)
-{
-    const Box *b = &s->box;
-    const PairParams *p = &s->pair[s->type[i]][s->type[j]];
-    double d[3] = {s->x[3 * i] - s->x[3 * j], s->x[3 * i + 1] - s->x[3 * j + 1],
-                   s->x[3 * i + 2] - s->x[3 * j + 2]};
-    box_min_image(b, d, NULL);
-    if (b->dim == 2) d[2] = 0.0;
-    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if (r2 >= p->rc2 || r2 < R_EPSILON * R_EPSILON) return 0;
-    *r = sqrt(r2);
-    for (int a = 0; a < 3; a++) e[a] = d[a] / *r;
-    *dvimg = 0.0;
-    if (b->shear_rate != 0.0) {
-        const double dy = s->x[3 * i + 1] - s->x[3 * j + 1];
-        if (dy > b->half[1]) *dvimg = b->shear_rate * b->L[1];
-        else if (dy < -b->half[1]) *dvimg = -b->shear_rate * b->L[1];
-    }
-    return 1;
-}
-
 static int grow(void **p, size_t n, size_t size)
 {
     void *q = realloc(*p, n * size + 1);
     if (!q) return -1;
     *p = q;
     return 0;
+}
+
+/* Pass 1 of the assembly: the off-diagonal blocks of each row (pairs of two
+ * mobile particles, listed under the row of i). */
+static void count_block(void *ctx, int i, int j, const double d[3], double r2, double image_vx)
+{
+    OdSystem *od = ctx;
+    (void)d; (void)r2; (void)image_vx;
+    const int ri = od->row_of[i];
+    if (ri >= 0 && od->row_of[j] >= 0) od->ostart[ri + 1]++;
+}
+
+typedef struct {
+    OdSystem *od;
+    const System *s;
+    double inv_sqrt_dt;
+    int fill;                 /* blocks written: rows in order, so row ri's land in ostart[ri] .. */
+} AssemblyPass;
+
+/* Pass 2: one pair's share of A (eq. 16) and f (eq. 18). image_vx is the x
+ * velocity of j's Lees-Edwards image relative to j: the relative velocity is
+ * v_i - v_j - image_vx, and its known part goes into f. */
+static void assemble_pair(void *ctx, int i, int j, const double d[3], double r2, double image_vx)
+{
+    AssemblyPass *ap = ctx;
+    OdSystem *od = ap->od;
+    const System *s = ap->s;
+    const int ri = od->row_of[i], rj = od->row_of[j];
+    if (ri < 0 && rj < 0) return;                               /* frozen-frozen: no unknown */
+    const double r = sqrt(r2);
+    const double e[3] = {d[0] / r, d[1] / r, d[2] / r};
+    const PairParams *p = &s->pair[s->type[i]][s->type[j]];
+    const double wc = 1.0 - r / p->rc;                          /* w_C, eq. 5 */
+    const double wd = dissipative_weight(wc, p->s);             /* w_D, eq. 6 */
+    const double wr = random_weight(wc, p->s);                  /* w_R = sqrt(w_D), eq. 7 */
+    const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
+    const double fcr = p->a * wc + p->sigma * wr * theta * ap->inv_sqrt_dt; /* eq. 18, first part */
+    const double g = p->gamma * wd;
+    const double ee_img = g * e[0] * image_vx;                  /* g e e^T (image_vx, 0, 0) = ee_img e */
+    if (ri >= 0 && rj >= 0) {                                   /* eq. 16: both unknown */
+        add_outer(od->diag + 9 * (size_t)ri, g, e);
+        add_outer(od->diag + 9 * (size_t)rj, g, e);
+        double *B = od->oblk + 9 * (size_t)ap->fill;
+        memset(B, 0, 9 * sizeof(double));
+        add_outer(B, -g, e);
+        od->ocol[ap->fill++] = rj;
+        for (int a = 0; a < 3; a++) {
+            od->f[3 * ri + a] += (fcr + ee_img) * e[a];
+            od->f[3 * rj + a] -= (fcr + ee_img) * e[a];
+        }
+    } else if (ri >= 0) {                                       /* j frozen: eq. 18, last part */
+        add_outer(od->diag + 9 * (size_t)ri, g, e);
+        add_outer(od->wrow + 9 * (size_t)ri, g, e);
+        const double *vj = s->v + 3 * j;
+        const double edv = e[0] * (vj[0] + image_vx) + e[1] * vj[1] + e[2] * vj[2];
+        for (int a = 0; a < 3; a++) od->f[3 * ri + a] += (fcr + g * edv) * e[a];
+    } else {                                                    /* i frozen, j mobile */
+        add_outer(od->diag + 9 * (size_t)rj, g, e);
+        add_outer(od->wrow + 9 * (size_t)rj, g, e);
+        const double *vi = s->v + 3 * i;
+        const double edv = e[0] * (vi[0] - image_vx) + e[1] * vi[1] + e[2] * vi[2];
+        for (int a = 0; a < 3; a++) od->f[3 * rj + a] += (-fcr + g * edv) * e[a];
+    }
 }
 
 /* A (eq. 16) and f (eq. 18): block CSR over the mobile particles. */
@@ -173,16 +214,7 @@ int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
     od->nm = nm;
     /* count the mobile-mobile pairs, listed under the row of i */
     memset(od->ostart, 0, ((size_t)nm + 1) * sizeof(int));
-    for (int i = 0; i < n; i++) {
-        const int ri = od->row_of[i];
-        if (ri < 0) continue;
-        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            const int j = nl->nbr[k];
-            double e[3], r, dvimg;
-            if (od->row_of[j] < 0 || !pair_geometry(s, i, j, e, &r, &dvimg)) continue;
-            od->ostart[ri + 1]++;
-        }
-    }
+    pair_visit(s, nl, count_block, od);
     for (int r = 0; r < nm; r++) od->ostart[r + 1] += od->ostart[r];
     const size_t nb = (size_t)od->ostart[nm];
     if (nb > od->cap_blk || !od->ocol) {
@@ -195,52 +227,8 @@ int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
     memset(od->f, 0, 3 * (size_t)nm * sizeof(double));
     memset(od->wall, 0, sizeof od->wall);
     memset(od->fbody, 0, sizeof od->fbody);
-    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
-    int fill = 0;
-    /* fill: rows in order, so the blocks of row ri land in ostart[ri] .. */
-    for (int i = 0; i < n; i++) {
-        const int ri = od->row_of[i];
-        const int ti = s->type[i];
-        for (int k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            const int j = nl->nbr[k];
-            const int rj = od->row_of[j];
-            if (ri < 0 && rj < 0) continue;             /* frozen-frozen: no unknown */
-            double e[3], r, dvimg;
-            if (!pair_geometry(s, i, j, e, &r, &dvimg)) continue;
-            const PairParams *p = &s->pair[ti][s->type[j]];
-            const double wc = 1.0 - r / p->rc;                          /* w_C */
-            const double wd = p->s == 2.0 ? wc * wc : (p->s == 1.0 ? wc : (p->s == 0.5 ? sqrt(wc) : pow(wc, p->s)));
-            const double wr = sqrt(wd);                                 /* w_R = sqrt(w_D), eq. 6 */
-            const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
-            const double fcr = p->a * wc + p->sigma * wr * theta * inv_sqrt_dt; /* eq. 18, first part */
-            const double g = p->gamma * wd;
-            const double ee_img = g * e[0] * dvimg;                     /* g e e^T (dvimg, 0, 0) = ee_img e */
-            if (ri >= 0 && rj >= 0) {                                   /* eq. 16: both unknown */
-                add_outer(od->diag + 9 * (size_t)ri, g, e);
-                add_outer(od->diag + 9 * (size_t)rj, g, e);
-                double *B = od->oblk + 9 * (size_t)fill;
-                memset(B, 0, 9 * sizeof(double));
-                add_outer(B, -g, e);
-                od->ocol[fill++] = rj;
-                for (int a = 0; a < 3; a++) {
-                    od->f[3 * ri + a] += (fcr + ee_img) * e[a];
-                    od->f[3 * rj + a] -= (fcr + ee_img) * e[a];
-                }
-            } else if (ri >= 0) {                                       /* j frozen: eq. 18, last part */
-                add_outer(od->diag + 9 * (size_t)ri, g, e);
-                add_outer(od->wrow + 9 * (size_t)ri, g, e);
-                const double *vj = s->v + 3 * j;
-                const double edv = e[0] * (vj[0] + dvimg) + e[1] * vj[1] + e[2] * vj[2];
-                for (int a = 0; a < 3; a++) od->f[3 * ri + a] += (fcr + g * edv) * e[a];
-            } else {                                                    /* i frozen, j mobile */
-                add_outer(od->diag + 9 * (size_t)rj, g, e);
-                add_outer(od->wrow + 9 * (size_t)rj, g, e);
-                const double *vi = s->v + 3 * i;
-                const double edv = e[0] * (vi[0] - dvimg) + e[1] * vi[1] + e[2] * vi[2];
-                for (int a = 0; a < 3; a++) od->f[3 * rj + a] += (-fcr + g * edv) * e[a];
-            }
-        }
-    }
+    AssemblyPass pass = {.od = od, .s = s, .inv_sqrt_dt = 1.0 / sqrt(s->dt)};
+    pair_visit(s, nl, assemble_pair, &pass);
     /* body force of the mobile particles, as body_forces() in forces.c */
     if (s->has_body_force)
         for (int r = 0; r < nm; r++) {
@@ -706,4 +694,113 @@ OdResult od_solve(OdSystem *od, System *s, OdSolver solver, OdStop stop,
     OdResult res = od_solve_vec(od, v, solver, stop, tol, max_iter);
     od_scatter(od, s, v);
     return res;
+}
+
+/* ------------------------------------------------------ the m = 0 step */
+
+int od_stats_init(OdStats *st, int n)
+{
+    memset(st, 0, sizeof *st);
+    st->sol = calloc(3 * (size_t)n + 1, sizeof(double));
+    st->ref = calloc(3 * (size_t)n + 1, sizeof(double));
+    return st->sol && st->ref ? 0 : -1;
+}
+
+void od_stats_free(OdStats *st)
+{
+    series_free(&st->iterations); series_free(&st->residual); series_free(&st->seconds);
+    series_free(&st->true_error); series_free(&st->cpu_seconds);
+    free(st->sol); free(st->ref);
+    memset(st, 0, sizeof *st);
+}
+
+/* The true error of this step's solution: its distance to a tight PCG solve
+ * started from it (or, for the published Scheme 2, to its own fixed point). */
+static void record_true_error(OdSystem *od, const System *s, const OdSettings *set, OdStats *st)
+{
+    od_gather(od, s, st->sol);
+    memcpy(st->ref, st->sol, 3 * (size_t)od->nm * sizeof(double));
+    if (set->reference_own && set->solver == OD_SCHEME2_PAPER)
+        od_scheme2_paper_fixed_point(od, st->ref, set->reference_tol);
+    else
+        od_solve_vec(od, st->ref, OD_PCG, OD_STOP_RESIDUAL, set->reference_tol, 100 * od->nm + 1000);
+    double num = 0.0, den = 0.0;
+    for (int k = 0; k < 3 * od->nm; k++) {
+        num += (st->sol[k] - st->ref[k]) * (st->sol[k] - st->ref[k]);
+        den += st->ref[k] * st->ref[k];
+    }
+    series_push(&st->true_error, den > 0 ? sqrt(num / den) : sqrt(num));
+}
+
+int od_step_solve(OdSystem *od, System *s, const OdSettings *set, OdStats *st, int record,
+                  double t0, double c0)
+{
+    OdResult r = od_solve(od, s, set->solver, set->stop, set->tol, set->max_iter);
+    if (record) {
+        series_push(&st->iterations, r.iterations);
+        series_push(&st->residual, r.rel_residual);
+        series_push(&st->seconds, wall_now() - t0);
+        series_push(&st->cpu_seconds, cpu_now() - c0);
+    }
+    if (!r.converged) {
+        st->unconverged++;
+        if (!set->allow_unconverged) {
+            static const char *names[] = {"scheme1", "scheme2_paper", "scheme2_consistent", "pcg", "pcg_2level"};
+            fprintf(stderr, "dpd: the %s solve did not converge at step %llu: %d iterations, change %g, "
+                    "relative residual %g (tolerance %g); raise overdamped.max_iterations or set "
+                    "overdamped.allow_unconverged = true\n", names[set->solver],
+                    (unsigned long long)s->step, r.iterations, r.change, r.rel_residual, set->tol);
+            return -1;
+        }
+    }
+    if (record && set->reference_tol > 0.0) record_true_error(od, s, set, st);
+    memcpy(s->v_pred, s->v, 3 * (size_t)s->n * sizeof(double));
+    return 0;
+}
+
+void od_move(System *s)
+{
+    const double dt = s->dt;
+    integrate_advance_offset(s);
+    int bad = 0;
+    #pragma omp parallel for schedule(static) reduction(+:bad)
+    for (int i = 0; i < s->n; i++) {
+        double *x = s->x + 3 * i, *v = s->v + 3 * i;
+        for (int d = 0; d < 3; d++) x[d] += dt * v[d];   /* eq. 28 */
+        bad += box_wrap(&s->box, x, s->img + 3 * i, &v[0], &s->v_pred[3 * i]);
+    }
+    s->nonfinite = bad;   /* the run stops */
+    s->step++;
+    s->time += dt;
+}
+
+int od_stats_write(const OdStats *st, FILE *f, const char *dir, int nblocks)
+{
+    /* per-step record for plots; cpu_seconds last (plots read true_rel_error as column 5) */
+    char path[1100];
+    snprintf(path, sizeof path, "%s/solver.tsv", dir);
+    FILE *sf = fopen(path, "w");
+    if (!sf) return -1;
+    fprintf(sf, "step\titerations\trel_residual\tseconds%s\tcpu_seconds\n", st->true_error.n ? "\ttrue_rel_error" : "");
+    for (size_t k = 0; k < st->iterations.n; k++) {
+        fprintf(sf, "%zu\t%g\t%.4g\t%.4g", k, st->iterations.v[k], st->residual.v[k], st->seconds.v[k]);
+        if (st->true_error.n) fprintf(sf, "\t%.4g", st->true_error.v[k]);
+        fprintf(sf, "\t%.4g\n", k < st->cpu_seconds.n ? st->cpu_seconds.v[k] : NAN);
+    }
+    const int bad = fclose(sf) != 0;
+    static const struct { const char *name; size_t off; } rows[] = {
+        {"solver_iterations", offsetof(OdStats, iterations)}, {"solver_rel_residual", offsetof(OdStats, residual)},
+        {"solver_seconds_per_step", offsetof(OdStats, seconds)}, {"solver_cpu_seconds_per_step", offsetof(OdStats, cpu_seconds)}};
+    for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
+        double v, se;
+        series_stats((const Series *)((const char *)st + rows[k].off), nblocks, &v, &se);
+        fprintf(f, "%s\t%.10g\t%.4g\n", rows[k].name, v, se);
+    }
+    fprintf(f, "solver_unconverged_steps\t%lld\t0\n", st->unconverged);
+    if (st->true_error.n > 0) {
+        double v, se;
+        series_stats(&st->true_error, nblocks, &v, &se);
+        fprintf(f, "solver_true_rel_error\t%.10g\t%.4g\n", v, se);
+    }
+    return bad ? -1 : 0;
 }

@@ -46,8 +46,10 @@
 #ifndef DPD_OVERDAMPED_H
 #define DPD_OVERDAMPED_H
 
+#include <stdio.h>
 #include "system.h"
 #include "neighbor.h"
+#include "blockavg.h"
 
 typedef enum {
     OD_SCHEME1 = 0,
@@ -131,5 +133,47 @@ double od_residual(const OdSystem *od, const double *v);
 /* Pack / unpack the mobile velocities of s (nm x 3). */
 void od_gather(const OdSystem *od, const System *s, double *v);
 void od_scatter(const OdSystem *od, System *s, const double *v);
+
+/* ------------------------------------------------------ the m = 0 step */
+
+/* The solver a scene asks for (setup.c reads it). */
+typedef struct {
+    OdSolver solver;
+    OdStop stop;
+    double tol;
+    int max_iter;
+    int allow_unconverged;    /* a step whose solve did not converge is kept */
+    double reference_tol;     /* > 0: also solve by PCG to this residual and record the true error */
+    int reference_own;        /* published Scheme 2: error against its own fixed point, not A v = f */
+} OdSettings;
+
+/* Solver statistics of the production steps, one entry per step. */
+typedef struct {
+    Series iterations, residual, seconds, true_error;
+    Series cpu_seconds;       /* process CPU time of assembly + solve (robust to a shared machine) */
+    long long unconverged;
+    double *sol, *ref;        /* packed solution and reference (3 n each) */
+} OdStats;
+
+/* Scratch for n particles; 0, or -1 if out of memory. */
+int  od_stats_init(OdStats *st, int n);
+void od_stats_free(OdStats *st);
+
+/* The velocities of the step from A v = f, assembled by od_assemble (eqs
+ * 15-18, noise of this step; springs may have added to f since), then
+ * v_pred = v. record: a production step (statistics kept); t0, c0: wall and
+ * CPU time when the assembly started. Returns 0, or -1 if the solve did not
+ * converge and the scene does not allow it (the message printed). */
+int od_step_solve(OdSystem *od, System *s, const OdSettings *set, OdStats *st, int record,
+                  double t0, double c0);
+
+/* r += v dt (eq. 28) for every particle (frozen ones at their wall
+ * velocity), the Lees-Edwards offset on, the wrap; s->nonfinite counts the
+ * positions made non-finite. */
+void od_move(System *s);
+
+/* solver.tsv (per step) into dir and the solver_* rows of the summary. 0, or -1
+ * if the file could not be written. */
+int od_stats_write(const OdStats *st, FILE *summary, const char *dir, int nblocks);
 
 #endif
