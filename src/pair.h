@@ -19,10 +19,11 @@
  * EPSILON in pair_dpd.cpp). Springs use it too (bonds.c). */
 #define PAIR_R_EPSILON 1e-10
 
-/* A listed pair interacts: inside its own cutoff and not coincident. */
+/* A listed pair interacts: inside its own cutoff and not coincident (a NaN
+ * r^2 interacts, so that the NaN reaches the forces and stops the run). */
 static inline int pair_interacts(const PairParams *p, double r2)
 {
-    return r2 < p->rc2 && r2 >= PAIR_R_EPSILON * PAIR_R_EPSILON;
+    return !(r2 >= p->rc2 || r2 < PAIR_R_EPSILON * PAIR_R_EPSILON);
 }
 
 /* w_R = (1 - r/rc)^(s/2) from w_C = 1 - r/rc (eqs 5, 7), so that

@@ -54,6 +54,7 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], in
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *v = s->v_pred;
     const int ti = s->type[i];
+    double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]};   /* in registers across the batch */
     for (int q = 0; q < m; q++) {
         const int j = near[q];
         const PairParams *p = &s->pair[ti][s->type[j]];
@@ -71,11 +72,12 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], in
         dpd_pair_terms(p, r, edv, theta, inv_sqrt_dt, &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
         const double ft = F[0] + F[1] + F[2];
         const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
-        acc->fi[0] += fx; acc->fi[1] += fy; acc->fi[2] += fz;
+        fi[0] += fx; fi[1] += fy; fi[2] += fz;
         force_claim(acc->f, NULL, acc->touched, j, acc->n);
         acc->f[3 * j] -= fx; acc->f[3 * j + 1] -= fy; acc->f[3 * j + 2] -= fz;
         if (pv) dpd_pair_record(pv, s, i, j, d, r, F, fx, fy, fz);
     }
+    for (int a = 0; a < 3; a++) acc->fi[a] = fi[a];
 }
 
 #endif

@@ -365,6 +365,50 @@ static int single_exponential(const double *t, const double *c, const double *se
     return 0;
 }
 
+/* The integral estimator: eta = rho / (k^2 int C/C0 dt), the data up to t_cut
+ * (trapezoid from t = 0, C/C0 = 1; t_cut where the fitted slow mode falls
+ * below the error) and the fitted model beyond; its error from g = d integral
+ * / d c_i, the tail's response through the fitted parameters included. */
+static int integral_viscosity(const Curve *cv, const double *G, const double *corr, double *g,
+                              double scale, ShellViscosity *o)
+{
+    const double *ft = cv->t, *fc = cv->c, *fs = cv->se, *p = cv->p;
+    const int m = cv->n;
+    int cut = m - 1;
+    for (int i = 0; i < m; i++)
+        if (p[P_AMPLITUDE] * exp(-p[P_RATE] * ft[i]) < fs[i]) { cut = i; break; }
+    double integral = 0.0, tprev = 0.0, cprev = 1.0;
+    memset(g, 0, (size_t)m * sizeof *g);
+    for (int i = 0; i <= cut; i++) {
+        const double h = ft[i] - tprev;
+        integral += 0.5 * h * (cprev + fc[i]);
+        g[i] += 0.5 * h;
+        if (i > 0) g[i - 1] += 0.5 * h;
+        tprev = ft[i]; cprev = fc[i];
+    }
+    const double tail = two_mode_tail(p, ft[cut]);
+    /* the tail's response to the curve through the fitted parameters (central differences) */
+    for (int r = 0; r < cv->nfree; r++) {
+        const int j = cv->free[r];
+        double q[NPAR];
+        memcpy(q, p, sizeof q);
+        const double h = 1e-6 * (fabs(p[j]) > 1e-3 ? fabs(p[j]) : 1e-3);
+        q[j] = p[j] + h; const double up = two_mode_tail(q, ft[cut]);
+        q[j] = p[j] - h; const double dn = two_mode_tail(q, ft[cut]);
+        const double dtail = (up - dn) / (2 * h);
+        for (int i = 0; i < m; i++) g[i] += dtail * G[(size_t)r * m + i] / fs[i];
+    }
+    integral += tail;
+    if (!(integral > 0)) return -1;
+    double bound = 0.0;
+    for (int i = 0; i < m; i++) bound += fabs(g[i]) * fs[i];
+    o->integral = integral; o->tail = tail; o->t_cut = ft[cut];
+    o->eta = scale / integral;
+    o->eta_se = scale * correlated_se(corr, g, fs, m) / (integral * integral);
+    o->eta_se_bound = scale * bound / (integral * integral);
+    return 0;
+}
+
 int shell_viscosity(RelaxationModel model, const double *t, const double *c, const double *se, int n,
                     double k2, double rho, double fit_min, ShellViscosity *o)
 {
@@ -410,41 +454,7 @@ int shell_viscosity(RelaxationModel model, const double *t, const double *c, con
         rc = 0;
         goto done;
     }
-    /* integral: the data up to t_cut (trapezoid from t = 0, C/C0 = 1), the model beyond;
-     * g: d integral / d c_i */
-    int cut = m - 1;
-    for (int i = 0; i < m; i++)
-        if (p[P_AMPLITUDE] * exp(-p[P_RATE] * ft[i]) < fs[i]) { cut = i; break; }
-    double integral = 0.0, tprev = 0.0, cprev = 1.0;
-    memset(g, 0, (size_t)m * sizeof *g);
-    for (int i = 0; i <= cut; i++) {
-        const double h = ft[i] - tprev;
-        integral += 0.5 * h * (cprev + fc[i]);
-        g[i] += 0.5 * h;
-        if (i > 0) g[i - 1] += 0.5 * h;
-        tprev = ft[i]; cprev = fc[i];
-    }
-    const double tail = two_mode_tail(p, ft[cut]);
-    /* the tail's response to the curve through the fitted parameters (central differences) */
-    for (int r = 0; r < cv.nfree; r++) {
-        const int j = cv.free[r];
-        double q[NPAR];
-        memcpy(q, p, sizeof q);
-        const double h = 1e-6 * (fabs(p[j]) > 1e-3 ? fabs(p[j]) : 1e-3);
-        q[j] = p[j] + h; const double up = two_mode_tail(q, ft[cut]);
-        q[j] = p[j] - h; const double dn = two_mode_tail(q, ft[cut]);
-        const double dtail = (up - dn) / (2 * h);
-        for (int i = 0; i < m; i++) g[i] += dtail * G[(size_t)r * m + i] / fs[i];
-    }
-    integral += tail;
-    if (!(integral > 0)) goto done;
-    double bound = 0.0;
-    for (int i = 0; i < m; i++) bound += fabs(g[i]) * fs[i];
-    o->integral = integral; o->tail = tail; o->t_cut = ft[cut];
-    o->eta = scale / integral;
-    o->eta_se = scale * correlated_se(corr, g, fs, m) / (integral * integral);
-    o->eta_se_bound = scale * bound / (integral * integral);
-    rc = 0;
+    rc = integral_viscosity(&cv, G, corr, g, scale, o);
 done:
     free(ft); free(fc); free(fs); free(lag); free(G); free(g); free(corr);
     if (rc) {
@@ -570,68 +580,103 @@ static int parse_double(const char *opt, const char *v, double lo, double hi, do
     return 0;
 }
 
-int cmd_tcaf_fit(int argc, char **argv)
+/* The options of dpd tcaf-fit. */
+typedef struct {
+    const char *file, *table, *curves;
+    double rho, box, fit_min, kmax;
+    int order;
+    RelaxationModel model;
+} TcafFitArgs;
+
+static int tcaf_fit_args(int argc, char **argv, TcafFitArgs *a)
 {
-    const char *file = NULL, *table = NULL, *curves = NULL;
-    double rho = NAN, box = NAN, fit_min = 0.3, kmax = 2.0, order_d = 1;
-    RelaxationModel model = RELAXATION_TWO_MODE;
+    double order_d = 1;
+    *a = (TcafFitArgs){.rho = NAN, .box = NAN, .fit_min = 0.3, .kmax = 2.0, .model = RELAXATION_TWO_MODE};
     for (int k = 0; k < argc; k++) {
         const char *o = argv[k];
         if (o[0] != '-') {
-            if (file) { fprintf(stderr, "dpd tcaf-fit: more than one table given ('%s', '%s')\n", file, o); return 1; }
-            file = o;
+            if (a->file) { fprintf(stderr, "dpd tcaf-fit: more than one table given ('%s', '%s')\n", a->file, o); return 1; }
+            a->file = o;
             continue;
         }
         if (k + 1 >= argc) { fprintf(stderr, "dpd tcaf-fit: %s needs a value\n", o); return 1; }
         const char *v = argv[++k];
         int bad = 0;
-        if (!strcmp(o, "--rho")) bad = parse_double(o, v, 1e-12, 1e12, &rho);
-        else if (!strcmp(o, "--box")) bad = parse_double(o, v, 1e-12, 1e12, &box);
-        else if (!strcmp(o, "--fit-min")) bad = parse_double(o, v, 1e-6, 0.99, &fit_min);
-        else if (!strcmp(o, "--kmax")) bad = parse_double(o, v, 0.0, 1e9, &kmax);
+        if (!strcmp(o, "--rho")) bad = parse_double(o, v, 1e-12, 1e12, &a->rho);
+        else if (!strcmp(o, "--box")) bad = parse_double(o, v, 1e-12, 1e12, &a->box);
+        else if (!strcmp(o, "--fit-min")) bad = parse_double(o, v, 1e-6, 0.99, &a->fit_min);
+        else if (!strcmp(o, "--kmax")) bad = parse_double(o, v, 0.0, 1e9, &a->kmax);
         else if (!strcmp(o, "--order")) bad = parse_double(o, v, 0, 3, &order_d) || order_d != floor(order_d);
-        else if (!strcmp(o, "--table")) table = v;
-        else if (!strcmp(o, "--curves")) curves = v;
+        else if (!strcmp(o, "--table")) a->table = v;
+        else if (!strcmp(o, "--curves")) a->curves = v;
         else if (!strcmp(o, "--model")) {
-            if (!strcmp(v, "exp")) model = RELAXATION_EXP;
-            else if (!strcmp(v, "two-mode")) model = RELAXATION_TWO_MODE;
-            else if (!strcmp(v, "integral")) model = RELAXATION_INTEGRAL;
+            if (!strcmp(v, "exp")) a->model = RELAXATION_EXP;
+            else if (!strcmp(v, "two-mode")) a->model = RELAXATION_TWO_MODE;
+            else if (!strcmp(v, "integral")) a->model = RELAXATION_INTEGRAL;
             else { fprintf(stderr, "dpd tcaf-fit: --model '%s': expected exp, two-mode or integral\n", v); return 1; }
         } else { fprintf(stderr, "dpd tcaf-fit: unknown option %s\n", o); return 1; }
         if (bad) { if (!strcmp(o, "--order")) fprintf(stderr, "dpd tcaf-fit: --order: 0, 1, 2 or 3\n"); return 1; }
     }
-    if (!file || !isfinite(rho) || !isfinite(box)) {
+    if (!a->file || !isfinite(a->rho) || !isfinite(a->box)) {
         fprintf(stderr, "usage: dpd tcaf-fit TCAF_TSV --rho R --box L [--model exp|two-mode|integral] [--fit-min F]\n"
                         "                    [--kmax K] [--order P] [--table FILE] [--curves FILE]\n");
         return 1;
     }
-    const int order = (int)order_d, P = order + 1;
-    TcafTable tb;
-    int rc = table_read(file, &tb);
-    if (rc) return rc;
-    const int L = tb.nlag, S = tb.nshell;
-    ShellViscosity *sv = calloc((size_t)S, sizeof *sv);
-    double *k = malloc((size_t)S * sizeof *k), *cc = malloc((size_t)L * sizeof *cc), *ss = malloc((size_t)L * sizeof *ss);
+    a->order = (int)order_d;
+    return 0;
+}
+
+/* eta(k) of every shell, and the extrapolation k -> 0 over |k| <= kmax. */
+typedef struct {
+    int S, P, nx;             /* shells, polynomial coefficients, shells in the extrapolation */
+    ShellViscosity *sv;
+    double *k;                /* |k| of each shell */
+    double coef[4], coef_se[4], c0_bound, chi2_dof;
+} TcafFit;
+
+static void tcaf_fit_free(TcafFit *f) { free(f->sv); free(f->k); }
+
+/* eta(k) per shell (shell_viscosity) from the table's columns. */
+static int fit_shells(const TcafTable *tb, const TcafFitArgs *a, TcafFit *f)
+{
+    const int L = tb->nlag, S = tb->nshell;
+    f->S = S;
+    f->sv = calloc((size_t)S, sizeof *f->sv);
+    f->k = malloc((size_t)S * sizeof *f->k);
+    double *cc = malloc((size_t)L * sizeof *cc), *ss = malloc((size_t)L * sizeof *ss);
+    const int ok = f->sv && f->k && cc && ss;
+    for (int q = 0; ok && q < S; q++) {
+        f->k[q] = 2.0 * M_PI * sqrt((double)tb->n2[q]) / a->box;
+        for (int l = 0; l < L; l++) { cc[l] = tb->c[(size_t)l * S + q]; ss[l] = tb->se[(size_t)l * S + q]; }
+        shell_viscosity(a->model, tb->t, cc, ss, L, f->k[q] * f->k[q], a->rho, a->fit_min, &f->sv[q]);
+    }
+    free(cc); free(ss);
+    return ok ? 0 : -1;
+}
+
+/* k -> 0: weighted polynomial in k^2 (src/tcaf.c) over the fitted shells with
+ * |k| <= kmax, covariance scaled by chi^2/dof when > 1; and its error from the
+ * shells' bounds (shells independent): dc0/deta_i = sum_j cov_0j k_i^2j w_i. */
+static int extrapolate_shells(const TcafFitArgs *a, TcafFit *f)
+{
+    const int S = f->S, P = a->order + 1;
     double *kx = malloc((size_t)S * sizeof *kx), *ex = malloc((size_t)S * sizeof *ex), *wx = malloc((size_t)S * sizeof *wx);
     double *si = malloc((size_t)S * sizeof *si);
-    if (!sv || !k || !cc || !ss || !kx || !ex || !wx || !si) { rc = 1; fprintf(stderr, "dpd tcaf-fit: out of memory\n"); goto done; }
+    if (!kx || !ex || !wx || !si) { free(kx); free(ex); free(wx); free(si); return -1; }
     int nx = 0;
-    for (int q = 0; q < S; q++) {
-        k[q] = 2.0 * M_PI * sqrt((double)tb.n2[q]) / box;
-        for (int l = 0; l < L; l++) { cc[l] = tb.c[(size_t)l * S + q]; ss[l] = tb.se[(size_t)l * S + q]; }
-        shell_viscosity(model, tb.t, cc, ss, L, k[q] * k[q], rho, fit_min, &sv[q]);
-        if (k[q] <= kmax * (1 + 1e-12) && isfinite(sv[q].eta) && sv[q].eta_se > 0) {
-            kx[nx] = k[q]; ex[nx] = sv[q].eta; wx[nx] = 1.0 / (sv[q].eta_se * sv[q].eta_se);
-            si[nx] = sv[q].eta_se_bound; nx++;
+    for (int q = 0; q < S; q++)
+        if (f->k[q] <= a->kmax * (1 + 1e-12) && isfinite(f->sv[q].eta) && f->sv[q].eta_se > 0) {
+            kx[nx] = f->k[q]; ex[nx] = f->sv[q].eta; wx[nx] = 1.0 / (f->sv[q].eta_se * f->sv[q].eta_se);
+            si[nx] = f->sv[q].eta_se_bound; nx++;
         }
-    }
-    /* k -> 0: weighted polynomial in k^2 (src/tcaf.c), covariance scaled by chi^2/dof when > 1 */
-    double coef[4] = {NAN, NAN, NAN, NAN}, cov[16], chi2 = NAN, coef_se[4] = {NAN, NAN, NAN, NAN}, c0_bound = NAN;
-    const int fitted = nx > P && tcaf_extrapolate_cov(kx, ex, wx, nx, order, coef, cov, &chi2) == 0;
-    const double chi2_dof = fitted ? chi2 / (nx - P) : NAN, sc = chi2_dof > 1.0 ? chi2_dof : 1.0;
+    double cov[16], chi2 = NAN;
+    for (int p = 0; p < 4; p++) f->coef[p] = f->coef_se[p] = NAN;
+    f->P = P; f->nx = nx; f->c0_bound = NAN;
+    const int fitted = nx > P && tcaf_extrapolate_cov(kx, ex, wx, nx, a->order, f->coef, cov, &chi2) == 0;
+    f->chi2_dof = fitted ? chi2 / (nx - P) : NAN;
+    const double sc = f->chi2_dof > 1.0 ? f->chi2_dof : 1.0;
     if (fitted) {
-        for (int p = 0; p < P; p++) coef_se[p] = sqrt(sc * cov[p * P + p]);
-        /* its error from the shells' bounds (shells independent): dc0/deta_i = sum_j cov_0j k_i^2j w_i */
+        for (int p = 0; p < P; p++) f->coef_se[p] = sqrt(sc * cov[p * P + p]);
         double v = 0.0;
         for (int i = 0; i < nx; i++) {
             double d = 0.0, xp = 1.0;
@@ -639,59 +684,86 @@ int cmd_tcaf_fit(int argc, char **argv)
             d *= wx[i];
             v += d * d * si[i] * si[i];
         }
-        c0_bound = sqrt(sc * v);
-    } else for (int p = 0; p < P; p++) coef[p] = NAN;
+        f->c0_bound = sqrt(sc * v);
+    } else for (int p = 0; p < P; p++) f->coef[p] = NAN;
+    free(kx); free(ex); free(wx); free(si);
+    return 0;
+}
+
+static void print_fit_summary(const TcafTable *tb, const TcafFit *f)
+{
     printf("quantity\tvalue\tstderr\n");
-    printf("eta_k0\t%.10g\t%.4g\n", coef[0], coef_se[0]);
-    if (P > 1) printf("eta_k2_coefficient\t%.10g\t%.4g\n", coef[1], coef_se[1]);
-    if (P > 2) printf("eta_k4_coefficient\t%.10g\t%.4g\n", coef[2], coef_se[2]);
-    if (P > 3) printf("eta_k6_coefficient\t%.10g\t%.4g\n", coef[3], coef_se[3]);
-    printf("eta_k0_se_bound\t%.4g\t0\n", c0_bound);
-    printf("extrapolation_chi2_dof\t%.6g\t0\n", chi2_dof);
-    printf("extrapolation_shells\t%d\t0\n", nx);
-    for (int q = 0; q < S; q++) printf("eta_n2_%d\t%.10g\t%.4g\n", tb.n2[q], sv[q].eta, sv[q].eta_se);
-    if (table) {
-        FILE *f = fopen(table, "w");
-        if (!f) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", table); rc = 4; goto done; }
-        fprintf(f, "# eta(k) by the %s model (src/transverse_relaxation.h) from %s, rho = %g, box %g", model_name(model), file, rho, box);
-        if (model == RELAXATION_EXP) fprintf(f, ", fit while <C/C0> >= %g", fit_min);
-        fprintf(f, ";\n# eta_se: the lags correlated as Bartlett's formula gives for the fitted curve; eta_se_bound: sum_i |d eta / d c_i| se_i,\n"
-                   "# the largest error any correlation of the lags allows; modes: 2 slow mode + oscillation, 1 one mode;\n"
-                   "# k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g (%d shells, chi2/dof %.3g):", order, kmax, nx, chi2_dof);
-        for (int p = 0; p < P; p++) fprintf(f, " c%d = %.6g +- %.3g", p, coef[p], coef_se[p]);
-        fprintf(f, "\nk\tn2\teta\teta_se\teta_se_bound\tmodes\tpoints\tt_cut\tamplitude\tamplitude_se\trate\trate_se\t"
-                   "damping\tfrequency\tsine\tchi2_dof\tintegral\ttail_fraction\teta_extrapolation\n");
-        for (int q = 0; q < S; q++) {
-            double fit = 0.0, xp = 1.0;
-            for (int p = 0; p < P; p++) { fit += coef[p] * xp; xp *= k[q] * k[q]; }
-            const ShellViscosity *o = &sv[q];
-            fprintf(f, "%.6g\t%d\t%.8g\t%.3g\t%.3g\t%d\t%d\t%.4g\t%.6g\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.4g\t%.6g\t%.4g\t%.6g\n",
-                    k[q], tb.n2[q], o->eta, o->eta_se, o->eta_se_bound, o->modes, o->points, o->t_cut, o->amplitude,
-                    o->amplitude_se, o->rate, o->rate_se, o->damping, o->frequency, o->sine, o->chi2_dof, o->integral,
-                    o->tail / o->integral, k[q] <= kmax * (1 + 1e-12) ? fit : NAN);
-        }
-        if (fclose(f)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", table); rc = 4; }
+    printf("eta_k0\t%.10g\t%.4g\n", f->coef[0], f->coef_se[0]);
+    if (f->P > 1) printf("eta_k2_coefficient\t%.10g\t%.4g\n", f->coef[1], f->coef_se[1]);
+    if (f->P > 2) printf("eta_k4_coefficient\t%.10g\t%.4g\n", f->coef[2], f->coef_se[2]);
+    if (f->P > 3) printf("eta_k6_coefficient\t%.10g\t%.4g\n", f->coef[3], f->coef_se[3]);
+    printf("eta_k0_se_bound\t%.4g\t0\n", f->c0_bound);
+    printf("extrapolation_chi2_dof\t%.6g\t0\n", f->chi2_dof);
+    printf("extrapolation_shells\t%d\t0\n", f->nx);
+    for (int q = 0; q < f->S; q++) printf("eta_n2_%d\t%.10g\t%.4g\n", tb->n2[q], f->sv[q].eta, f->sv[q].eta_se);
+}
+
+/* --table: every shell's fit, with the extrapolation's value at its k. */
+static int write_fit_table(const TcafTable *tb, const TcafFitArgs *a, const TcafFit *f)
+{
+    FILE *out = fopen(a->table, "w");
+    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->table); return 4; }
+    fprintf(out, "# eta(k) by the %s model (src/transverse_relaxation.h) from %s, rho = %g, box %g", model_name(a->model), a->file, a->rho, a->box);
+    if (a->model == RELAXATION_EXP) fprintf(out, ", fit while <C/C0> >= %g", a->fit_min);
+    fprintf(out, ";\n# eta_se: the lags correlated as Bartlett's formula gives for the fitted curve; eta_se_bound: sum_i |d eta / d c_i| se_i,\n"
+                 "# the largest error any correlation of the lags allows; modes: 2 slow mode + oscillation, 1 one mode;\n"
+                 "# k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g (%d shells, chi2/dof %.3g):", a->order, a->kmax, f->nx, f->chi2_dof);
+    for (int p = 0; p < f->P; p++) fprintf(out, " c%d = %.6g +- %.3g", p, f->coef[p], f->coef_se[p]);
+    fprintf(out, "\nk\tn2\teta\teta_se\teta_se_bound\tmodes\tpoints\tt_cut\tamplitude\tamplitude_se\trate\trate_se\t"
+                 "damping\tfrequency\tsine\tchi2_dof\tintegral\ttail_fraction\teta_extrapolation\n");
+    for (int q = 0; q < f->S; q++) {
+        double fit = 0.0, xp = 1.0;
+        for (int p = 0; p < f->P; p++) { fit += f->coef[p] * xp; xp *= f->k[q] * f->k[q]; }
+        const ShellViscosity *o = &f->sv[q];
+        fprintf(out, "%.6g\t%d\t%.8g\t%.3g\t%.3g\t%d\t%d\t%.4g\t%.6g\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.4g\t%.6g\t%.4g\t%.6g\n",
+                f->k[q], tb->n2[q], o->eta, o->eta_se, o->eta_se_bound, o->modes, o->points, o->t_cut, o->amplitude,
+                o->amplitude_se, o->rate, o->rate_se, o->damping, o->frequency, o->sine, o->chi2_dof, o->integral,
+                o->tail / o->integral, f->k[q] <= a->kmax * (1 + 1e-12) ? fit : NAN);
     }
-    if (curves && rc == 0) {
-        FILE *f = fopen(curves, "w");
-        if (!f) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", curves); rc = 4; goto done; }
-        fprintf(f, "# C/C0 of the fitted %s model per shell (nan where not fitted)\nt", model_name(model));
-        for (int q = 0; q < S; q++) fprintf(f, "\tfit_n2_%d", tb.n2[q]);
-        fputc('\n', f);
-        for (int l = 0; l < L; l++) {
-            fprintf(f, "%.6g", tb.t[l]);
-            for (int q = 0; q < S; q++) {
-                const ShellViscosity *o = &sv[q];
-                const int two = o->modes == 2;
-                const double p[NPAR] = {o->amplitude, o->rate, two ? o->damping : 1.0, two ? o->frequency : 0.0, two ? o->sine : 0.0};
-                fprintf(f, "\t%.6g", isfinite(o->eta) ? two_mode_value(p, tb.t[l]) : NAN);
-            }
-            fputc('\n', f);
+    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->table); return 4; }
+    return 0;
+}
+
+/* --curves: C/C0 of each shell's fitted model at the table's lags. */
+static int write_fit_curves(const TcafTable *tb, const TcafFitArgs *a, const TcafFit *f)
+{
+    FILE *out = fopen(a->curves, "w");
+    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->curves); return 4; }
+    fprintf(out, "# C/C0 of the fitted %s model per shell (nan where not fitted)\nt", model_name(a->model));
+    for (int q = 0; q < f->S; q++) fprintf(out, "\tfit_n2_%d", tb->n2[q]);
+    fputc('\n', out);
+    for (int l = 0; l < tb->nlag; l++) {
+        fprintf(out, "%.6g", tb->t[l]);
+        for (int q = 0; q < f->S; q++) {
+            const ShellViscosity *o = &f->sv[q];
+            const int two = o->modes == 2;
+            const double p[NPAR] = {o->amplitude, o->rate, two ? o->damping : 1.0, two ? o->frequency : 0.0, two ? o->sine : 0.0};
+            fprintf(out, "\t%.6g", isfinite(o->eta) ? two_mode_value(p, tb->t[l]) : NAN);
         }
-        if (fclose(f)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", curves); rc = 4; }
+        fputc('\n', out);
     }
-done:
-    free(sv); free(k); free(cc); free(ss); free(kx); free(ex); free(wx); free(si);
+    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->curves); return 4; }
+    return 0;
+}
+
+int cmd_tcaf_fit(int argc, char **argv)
+{
+    TcafFitArgs a;
+    if (tcaf_fit_args(argc, argv, &a)) return 1;
+    TcafTable tb;
+    int rc = table_read(a.file, &tb);
+    if (rc) return rc;
+    TcafFit f = {0};
+    if (fit_shells(&tb, &a, &f) || extrapolate_shells(&a, &f)) { fprintf(stderr, "dpd tcaf-fit: out of memory\n"); rc = 1; }
+    if (rc == 0) print_fit_summary(&tb, &f);
+    if (rc == 0 && a.table) rc = write_fit_table(&tb, &a, &f);
+    if (rc == 0 && a.curves) rc = write_fit_curves(&tb, &a, &f);
+    tcaf_fit_free(&f);
     table_free(&tb);
     return rc;
 }
