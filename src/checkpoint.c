@@ -164,12 +164,12 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
             io_series(io, &fm->mean_v[t][d], "mean velocity");
             io_series(io, &fm->torque[t][d], "body torque");
         }
-    if (fm->around_on) {
-        io_array(io, fm->around_hist, (size_t)fm->nblocks * fm->around_bins, sizeof(double), "around");
+    if (fm->p.around.on) {
+        io_array(io, fm->around_hist, (size_t)fm->nblocks * fm->p.around.bins, sizeof(double), "around");
         io_array(io, fm->around_samples, (size_t)fm->nblocks, sizeof(long long), "around samples");
     }
-    if (fm->map_on) {
-        io_array(io, fm->map_hist, 3 * (size_t)fm->map_bins[0] * fm->map_bins[1], sizeof(double), "density map");
+    if (fm->p.map_on) {
+        io_array(io, fm->map_hist, 3 * (size_t)fm->p.map_bins[0] * fm->p.map_bins[1], sizeof(double), "density map");
         io_bytes(io, &fm->map_samples, sizeof fm->map_samples, "density map samples");
     }
     /* run loop */
@@ -186,12 +186,12 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
         io_series(io, &b->ext2, "colloid spring extension");
         io_series(io, &b->spring_wyx, "colloid spring stress");
         io_bytes(io, &b->ext_max, sizeof b->ext_max, "colloid largest extension");
-        if (b->around_on) {
-            io_array(io, b->around_hist, (size_t)b->nblocks * b->around_bins, sizeof(double), "colloid around");
+        if (b->p.around.on) {
+            io_array(io, b->around_hist, (size_t)b->nblocks * b->p.around.bins, sizeof(double), "colloid around");
             io_array(io, b->around_samples, (size_t)b->nblocks, sizeof(long long), "colloid around samples");
         }
-        if (b->rdf_on) {
-            io_array(io, b->rdf_hist, (size_t)b->nblocks * b->rdf_bins, sizeof(double), "colloid rdf");
+        if (b->p.rdf_on) {
+            io_array(io, b->rdf_hist, (size_t)b->nblocks * b->p.rdf_bins, sizeof(double), "colloid rdf");
             io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
         }
     }

@@ -47,7 +47,7 @@ static int msd_groups_init(Measure *m, const System *s)
 int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
-    if (field_init(&m->field, s, m->nblocks)) return -1;
+    if (field_init(&m->field, &m->field_par, s, m->nblocks)) return -1;
     m->n_mobile = 0;
     for (int i = 0; i < s->n; i++) m->n_mobile += !s->types[s->type[i]].frozen;
     if (m->prof_on) {
@@ -81,7 +81,7 @@ int measure_init(Measure *m, const System *s)
         if (!m->msd_origin_pos || !m->msd_origin_step || !m->msd_curve) return -1;
         for (int k = 0; k < m->msd_norig; k++) m->msd_origin_step[k] = -1;
     }
-    if (m->tcaf.on && tcaf_init(&m->tcaf, s, m->nblocks, m->prod_steps)) return -1;
+    if (m->tcaf_on && tcaf_init(&m->tcaf, &m->tcaf_par, s, m->nblocks, m->prod_steps)) return -1;
     return 0;
 }
 
@@ -274,7 +274,7 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
 {
     if (prod_step < 0) return;
     if (MOD_ON(m->msd_on) && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
-    if (MOD_ON(m->tcaf.on) && prod_step % m->tcaf.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
+    if (MOD_ON(m->tcaf.on) && prod_step % m->tcaf.p.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
     if (MOD_ON(m->rdf_on) && prod_step % m->rdf_every == 0)
         sample_rdf(m, s, nl, block_of(m, prod_step / m->every));
     if (prod_step % m->every) return;

@@ -59,7 +59,10 @@ typedef struct {
     long long n_mobile;
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
+    FieldParams field_par;    /* measure.around, density_map, force_map (setup_measure.c) */
     FieldMeasure field;       /* about points, on grids, torques, mean velocities */
+    int tcaf_on;              /* measure.tcaf given: tcaf_par holds it */
+    TcafParams tcaf_par;
     Tcaf tcaf;                /* transverse current autocorrelation (tcaf.h) */
     const struct Colloids *colloids;   /* rigid bodies whose momentum flux joins the stress, or NULL */
     Series frozen_torque[DPD_MAX_TYPES][3], rot_temperature;   /* rotation scenes */

@@ -14,23 +14,33 @@
 
 #include <stdio.h>
 #include "system.h"
-#include "scene.h"
 #include "blockavg.h"
 
+/* The distribution of a type about centres (eq. 48): measure.around about a
+ * point, colloids2d.around about the colloid centres. */
+typedef struct {
+    int on, type;
+    int bins;                     /* of width dq, out to qmax */
+    double dq, threshold;         /* the radius: first q where g >= threshold */
+} AroundParams;
+
+/* measure.around, measure.density_map, measure.force_map of the scene, read
+ * and checked by the input layer (setup_measure.c). */
+typedef struct {
+    AroundParams around;          /* around = { centre; type; dq; qmax; threshold; } */
+    double around_centre[3];
+    int map_on, map_type, map_bins[2];   /* density_map = { type; bins = [nx, ny]; } */
+    int fmap_on, fmap_body, fmap_probe, fmap_bins[2];   /* force_map = { body; probe; bins; } */
+} FieldParams;
+
 typedef struct FieldMeasure {
+    FieldParams p;
     int nblocks;
-    /* around = { centre = [..]; type = "..."; dq = 0.01; qmax = 1.5; threshold = 1e-3; } */
-    int around_on, around_type, around_bins;
-    double around_centre[3], around_dq, around_threshold;
     double *around_hist;          /* nblocks x bins: counts */
     long long *around_samples;    /* per block */
     double around_density;        /* N / A of the type (eq. 48) */
-    /* density_map = { type = "..."; bins = [nx, ny]; } */
-    int map_on, map_type, map_bins[2];
     double *map_hist;             /* per bin: count, sum vx, sum vy */
     long long map_samples;
-    /* force_map = { body = "..."; probe = "..."; bins = [nx, ny]; } */
-    int fmap_on, fmap_body, fmap_probe, fmap_bins[2];
     /* always */
     Series mean_v[DPD_MAX_TYPES][3];
     Series torque[DPD_MAX_TYPES][3];
@@ -52,10 +62,8 @@ typedef struct {
  * fewer than two blocks). The one rule of exclusion_radius and colloid_radius. */
 int  around_write(const AroundHist *a, const char *path, FILE *summary, const char *name);
 
-/* Read measure.around, measure.density_map, measure.force_map from group g
- * (NULL: none of them). Returns 0, or -1 with the scene error set. */
-int  field_read(Scene *sc, const config_setting_t *g, const System *s, FieldMeasure *f);
-int  field_init(FieldMeasure *f, const System *s, int nblocks);
+/* The measurements p asks for, with nblocks blocks; -1 out of memory. */
+int  field_init(FieldMeasure *f, const FieldParams *p, const System *s, int nblocks);
 void field_free(FieldMeasure *f);
 /* One sample; s->f must hold this step's pair forces (for the torques). */
 void field_sample(FieldMeasure *f, const System *s, int block);

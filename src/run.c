@@ -428,8 +428,8 @@ int run_scene(const RunOptions *opt)
         measure_free(&m); forces_free(&fw); neighbor_free(&nl); system_free(&s); scene_free(&sc);
         return 4;
     }
-    if (rc.colloids && m.tcaf.on && m.tcaf.include_bodies)   /* the bodies' momentum joins the TCAF */
-        tcaf_set_bodies(&m.tcaf, &s, rc.colloids->ncol, rc.colloids->R, rc.colloids->V, rc.colloids->mass);
+    if (rc.colloids && m.tcaf.on && m.tcaf.p.include_bodies)   /* the bodies' momentum joins the TCAF */
+        tcaf_set_bodies(&m.tcaf, &s, rc.colloids->ncol, rc.colloids->R, rc.colloids->V, rc.colloids->p.mass);
     if (rc.colloids) m.colloids = rc.colloids;   /* the bodies' momentum flux joins the stress */
     double *wbin = m.prof_on ? calloc((size_t)m.prof_bins * PAIR_PARTS * 9, sizeof(double)) : NULL;
     PairVirial pv = {.bin_axis = m.prof_axis, .nbins = m.prof_on ? m.prof_bins : 0, .Wbin = wbin};

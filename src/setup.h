@@ -1,5 +1,8 @@
 /* setup.h - from a validated scene to a ready system: types, pair table,
- * initial positions and velocities, measurement and run settings. */
+ * initial positions and velocities, measurement and run settings. The input
+ * layer is scene.c (the file and its checks), setup.c (this), and
+ * setup_measure.c, setup_bodies.c (the modules' parameter structs,
+ * setup_parts.h): no other file reads the scene. */
 #ifndef DPD_SETUP_H
 #define DPD_SETUP_H
 

@@ -14,21 +14,24 @@
 
 static int selected(const Tcaf *t, const System *s, int i)
 {
-    return !s->types[s->type[i]].frozen && (t->type < 0 || s->type[i] == t->type);
+    return !s->types[s->type[i]].frozen && (t->p.type < 0 || s->type[i] == t->p.type);
 }
 
 /* Order of shells: by |k|. */
 typedef struct { double k; int n2; } ShellKey;
 
-int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
+int tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long long prod_steps)
 {
     const int dim = s->box.dim;
+    memset(t, 0, sizeof *t);
+    t->on = 1;
+    t->p = *p;
     t->nblocks = nblocks;
-    t->nlags = t->window / t->every + 1;
-    t->nslots = t->window / t->origin_every + 1;
-    t->norig_expected = prod_steps >= t->window ? (prod_steps - t->window) / t->origin_every + 1 : 0;
-    const int ns2 = (int)floor(sqrt((double)t->n2max) + 1e-9);
-    const int nm = t->axis_nmax > ns2 ? t->axis_nmax : ns2;
+    t->nlags = t->p.window / t->p.every + 1;
+    t->nslots = t->p.window / t->p.origin_every + 1;
+    t->norig_expected = prod_steps >= t->p.window ? (prod_steps - t->p.window) / t->p.origin_every + 1 : 0;
+    const int ns2 = (int)floor(sqrt((double)t->p.n2max) + 1e-9);
+    const int nm = t->p.axis_nmax > ns2 ? t->p.axis_nmax : ns2;
     if (nm > TCAF_NMAX) return -1;   /* phase tables of tcaf_current */
     for (int d = 0; d < 3; d++) t->nmax[d] = d < dim ? nm : 0;
     /* half space of integer vectors: i > 0, or i = 0 and j > 0, or i = j = 0 and l > 0 */
@@ -46,7 +49,7 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
                 const int n2 = i * i + j * j + l * l;
                 /* the sphere n^2 <= n2max, plus the axes up to axis_nmax */
                 const int on_axis = (i != 0) + (j != 0) + (l != 0) == 1;
-                if (n2 > t->n2max && !(on_axis && n2 <= t->axis_nmax * t->axis_nmax)) continue;
+                if (n2 > t->p.n2max && !(on_axis && n2 <= t->p.axis_nmax * t->p.axis_nmax)) continue;
                 const int c[3] = {i, j, l};
                 for (int d = 0; d < 3; d++) {
                     t->vec[3 * nv + d] = c[d];
@@ -213,8 +216,8 @@ void tcaf_sample(Tcaf *t, const System *s, long long step)
         tcaf_transverse(t->kvec + 3 * q, t->J + 3 * q, jp);
         memcpy(t->J + 3 * q, jp, sizeof jp);
     }
-    if (step % t->origin_every == 0) {
-        const int slot = (int)((step / t->origin_every) % t->nslots);
+    if (step % t->p.origin_every == 0) {
+        const int slot = (int)((step / t->p.origin_every) % t->nslots);
         memcpy(t->origin + (size_t)slot * nv * 3, t->J, (size_t)nv * 3 * sizeof(double complex));
         t->origin_step[slot] = step;
         t->origin_index[slot] = t->nstarted++;
@@ -222,8 +225,8 @@ void tcaf_sample(Tcaf *t, const System *s, long long step)
     }
     for (int slot = 0; slot < t->nslots; slot++) {
         const long long t0 = t->origin_step[slot];
-        if (t0 < 0 || step - t0 > t->window) continue;
-        const int lag = (int)((step - t0) / t->every);
+        if (t0 < 0 || step - t0 > t->p.window) continue;
+        const int lag = (int)((step - t0) / t->p.every);
         const double complex *o = t->origin + (size_t)slot * nv * 3;
         double *cur = t->curve + (size_t)slot * ns * L;
         for (int q = 0; q < nv; q++) {
@@ -344,20 +347,20 @@ static int extrapolate_k0(const Tcaf *t, const double *eta, const double *eta_se
 {
     const int ns = t->nshell;
     double cb_all[MAX_BLOCKS], coefb[TCAF_MAX_ORDER + 1];
-    if (B > MAX_BLOCKS || t->extrap_order > TCAF_MAX_ORDER) return -1;
+    if (B > MAX_BLOCKS || t->p.extrap_order > TCAF_MAX_ORDER) return -1;
     double *kx = calloc((size_t)ns + 1, sizeof(double)), *ex = calloc((size_t)ns + 1, sizeof(double));
     double *wx = calloc((size_t)ns + 1, sizeof(double)), *eb = calloc((size_t)ns + 1, sizeof(double));
     int *idx = calloc((size_t)ns + 1, sizeof(int)), nx = 0;
     if (!kx || !ex || !wx || !eb || !idx) { free(kx); free(ex); free(wx); free(eb); free(idx); return -1; }
     for (int q = 0; q < ns; q++)
-        if (t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
+        if (t->shell_k[q] <= t->p.extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
             kx[nx] = t->shell_k[q]; ex[nx] = eta[q]; wx[nx] = 1.0 / (eta_se[q] * eta_se[q]); idx[nx] = q; nx++;
         }
-    tcaf_extrapolate(kx, ex, wx, nx, t->extrap_order, coef);
-    for (int p = 0; p <= t->extrap_order; p++) {
+    tcaf_extrapolate(kx, ex, wx, nx, t->p.extrap_order, coef);
+    for (int p = 0; p <= t->p.extrap_order; p++) {
         for (int j = 0; j < B; j++) {
             for (int i = 0; i < nx; i++) eb[i] = etab[(size_t)j * ns + idx[i]];
-            tcaf_extrapolate(kx, eb, wx, nx, t->extrap_order, coefb);
+            tcaf_extrapolate(kx, eb, wx, nx, t->p.extrap_order, coefb);
             cb_all[j] = coefb[p];
         }
         mean_se(cb_all, B, &coef_se[p]);
@@ -371,7 +374,7 @@ static int extrapolate_k0(const Tcaf *t, const double *eta, const double *eta_se
 int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
 {
     const int ns = t->nshell, L = t->nlags, dim = s->box.dim, npol = dim - 1;
-    const double dts = t->every * s->dt;
+    const double dts = t->p.every * s->dt;
     /* blocks that completed at least one origin */
     int B = 0, blk[MAX_BLOCKS];
     if (t->nblocks > MAX_BLOCKS) return -1;   /* more than blk and the per-block statistics hold */
@@ -413,7 +416,7 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
         int n = 0;
         for (int l = 1; l < L; l++) {
             const double c = C[(size_t)q * L + l] / C[(size_t)q * L];
-            if (!(c >= t->fit_min)) break;
+            if (!(c >= t->p.fit_min)) break;
             n++;
         }
         nfit[q] = n;
@@ -433,7 +436,7 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
         mean_se(tmp, B, &eta_se[q]);
     }
     /* k -> 0: weighted polynomial in k^2 over the shells with |k| <= extrap_kmax */
-    const int P = t->extrap_order + 1;
+    const int P = t->p.extrap_order + 1;
     double coef[TCAF_MAX_ORDER + 1], coef_se[TCAF_MAX_ORDER + 1], kend = 0.0;
     const int nx = extrapolate_k0(t, eta, eta_se, etab, B, coef, coef_se, &kend);
     if (nx < 0) {
@@ -502,7 +505,7 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     if (f) {
         fprintf(f, "# eta(k) from C/C0 = exp(-eta k^2 t / rho) (eq. 28), rho = %g, fit over the lags with <C/C0> >= %g;\n"
                    "# se from %d blocks of time origins; k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g:",
-                t->rho, t->fit_min, B, t->extrap_order, t->extrap_kmax);
+                t->rho, t->p.fit_min, B, t->p.extrap_order, t->p.extrap_kmax);
         for (int p = 0; p < P; p++) fprintf(f, " c%d = %.6g +- %.3g", p, coef[p], coef_se[p]);
         fprintf(f, "\nk\tn2\tvectors\teta\teta_se\tfit_points\tfit_tmax\tC0_ratio\tC0_ratio_se\teta_extrapolation\n");
         for (int q = 0; q < ns; q++) {
@@ -510,7 +513,7 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
             for (int p = 0; p < P; p++) { fit += coef[p] * xp; xp *= t->shell_k[q] * t->shell_k[q]; }
             fprintf(f, "%.6g\t%d\t%d\t%.8g\t%.3g\t%d\t%.4g\t%.6g\t%.3g\t%.6g\n", t->shell_k[q], t->shell_n2[q],
                     t->shell_nvec[q], eta[q], eta_se[q], nfit[q], nfit[q] * dts, c0r[q], c0r_se[q],
-                    t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) ? fit : NAN);
+                    t->shell_k[q] <= t->p.extrap_kmax * (1 + 1e-12) ? fit : NAN);
         }
         rc |= fclose(f);
     } else rc = -1;
@@ -529,47 +532,4 @@ int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
     } else rc = -1;
     free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
     return rc ? -1 : 0;
-}
-
-int tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
-                   long long steps, int nblocks)
-{
-    long long v;
-    memset(t, 0, sizeof *t);
-    t->on = 1;
-    if (scene_int(sc, g, "every", &v, 1, 1, 1000000, 0) < 0) return -1;
-    t->every = (int)v;
-    if (scene_int(sc, g, "window", &v, 0, 1, 100000000, 1) < 0) return -1;
-    t->window = (int)v;
-    if (scene_int(sc, g, "origin_every", &v, t->window / 10 > 0 ? t->window / 10 : 1, 1, 100000000, 0) < 0) return -1;
-    t->origin_every = (int)v;
-    if (t->window % t->every || t->origin_every % t->every)
-        return scene_fail(sc, g, "window (%d) and origin_every (%d) must be multiples of every (%d)",
-                          t->window, t->origin_every, t->every);
-    if (t->window / t->origin_every + 1 > 1000)
-        return scene_fail(sc, g, "window / origin_every = %d origins in flight; allowed up to 999",
-                          t->window / t->origin_every);
-    if (scene_int(sc, g, "n2max", &v, 9, 1, 400, 0) < 0) return -1;
-    t->n2max = (int)v;
-    if (scene_int(sc, g, "axis_nmax", &v, 0, 0, TCAF_NMAX, 0) < 0) return -1;
-    t->axis_nmax = (int)v;
-    if (scene_bool(sc, g, "include_bodies", &t->include_bodies, 0) < 0) return -1;
-    if (scene_double(sc, g, "fit_min", &t->fit_min, 0.3, 1e-6, 0.99, 0) < 0) return -1;
-    if (scene_double(sc, g, "extrapolate_kmax", &t->extrap_kmax, 1e9, 0.0, 1e9, 0) < 0) return -1;
-    if (scene_int(sc, g, "extrapolate_order", &v, 1, 0, TCAF_MAX_ORDER, 0) < 0) return -1;
-    t->extrap_order = (int)v;
-    const char *tn;
-    if (scene_string(sc, g, "type", &tn, NULL, NULL, 0) < 0) return -1;
-    t->type = -1;
-    if (tn) {
-        for (int k = 0; k < s->ntypes; k++) if (!strcmp(s->types[k].name, tn)) t->type = k;
-        if (t->type < 0) return scene_fail(sc, g, "unknown type \"%s\"", tn);
-    }
-    if (s->box.shear_rate != 0.0)
-        return scene_fail(sc, g, "the TCAF needs a fluid at rest; the scene has shear_rate = %g", s->box.shear_rate);
-    const long long norig = steps >= t->window ? (steps - t->window) / t->origin_every + 1 : 0;
-    if (norig < nblocks)
-        return scene_fail(sc, g, "the run gives %lld complete time origins (steps %lld, window %d, origin_every %d); "
-                          "need at least one per block (%d)", norig, steps, t->window, t->origin_every, nblocks);
-    return 0;
 }

@@ -23,10 +23,9 @@
 #include <stdio.h>
 #include <complex.h>
 #include "system.h"
-#include "scene.h"
 
+/* measure.tcaf of the scene, read and checked by the input layer (setup_measure.c). */
 typedef struct {
-    int on;
     int every;                /* sampling interval (steps) */
     int window;               /* correlation window (steps, multiple of every) */
     int origin_every;         /* steps between time origins (multiple of every) */
@@ -36,6 +35,12 @@ typedef struct {
     double fit_min;           /* fit lags while <C/C0> >= fit_min */
     double extrap_kmax;       /* shells with |k| <= this enter the k -> 0 fit */
     int extrap_order;         /* polynomial degree in k^2 of the k -> 0 fit */
+    int include_bodies;       /* the run adds the colloid bodies (tcaf_set_bodies) */
+} TcafParams;
+
+typedef struct {
+    int on;
+    TcafParams p;
     int nblocks;
     long long norig_expected; /* complete origins the run will give */
     /* derived */
@@ -55,20 +60,16 @@ typedef struct {
     long long *acc_n;         /* nblocks: complete origins */
     long long nstarted, ndone;
     /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
-    int include_bodies, nbody;
+    int nbody;
     const double *body_R, *body_V;
     double body_mass;
 } Tcaf;
 
-/* measure.tcaf = { every; window; origin_every; n2max; axis_nmax; type; fit_min;
- * extrapolate_kmax; extrapolate_order; } of the scene group g (validated). */
-int  tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
-                    long long steps, int nblocks);
 /* Add nbody bodies of mass M at R with velocity V (arrays owned by the caller,
  * read at every sample) to the current: J += sum_b M V_b exp(i k.R_b); rho too. */
 void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M);
-/* Wave vectors and buffers; -1 on bad sizes or memory. */
-int  tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps);
+/* Wave vectors and buffers for the parameters p; -1 on bad sizes or memory. */
+int  tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long long prod_steps);
 void tcaf_free(Tcaf *t);
 /* J(k) of the selection for every wave vector into t->J (eq. 23). */
 void tcaf_current(Tcaf *t, const System *s);

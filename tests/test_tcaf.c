@@ -39,10 +39,9 @@ static void lattice(System *s)
 static void configure(Tcaf *t, int n2max, int window, int origin_every, int nblocks, long long steps,
                       const System *s)
 {
-    memset(t, 0, sizeof *t);
-    t->on = 1; t->every = 1; t->window = window; t->origin_every = origin_every; t->n2max = n2max;
-    t->type = -1; t->fit_min = 0.3; t->extrap_kmax = 1e9; t->extrap_order = 0;
-    assert_int_equal(tcaf_init(t, s, nblocks, steps), 0);
+    const TcafParams p = {.every = 1, .window = window, .origin_every = origin_every, .n2max = n2max,
+                          .type = -1, .fit_min = 0.3, .extrap_kmax = 1e9, .extrap_order = 0};
+    assert_int_equal(tcaf_init(t, &p, s, nblocks, steps), 0);
 }
 
 static int find_vec(const Tcaf *t, int i, int j, int l)
@@ -90,10 +89,9 @@ static void axis_vectors_extend_k(void **state)
     (void)state;
     System s; lattice(&s);
     Tcaf t;
-    memset(&t, 0, sizeof t);
-    t.on = 1; t.every = 1; t.window = 10; t.origin_every = 5; t.n2max = 2; t.axis_nmax = 7;
-    t.type = -1; t.fit_min = 0.3; t.extrap_kmax = 1e9;
-    assert_int_equal(tcaf_init(&t, &s, 2, 100), 0);
+    const TcafParams p = {.every = 1, .window = 10, .origin_every = 5, .n2max = 2, .axis_nmax = 7,
+                          .type = -1, .fit_min = 0.3, .extrap_kmax = 1e9};
+    assert_int_equal(tcaf_init(&t, &p, &s, 2, 100), 0);
     /* sphere n^2 <= 2: 3 + 6 = 9 vectors; axes n = 2..7: 3 each */
     CHECK_TRUE(t.nvec == 9 + 3 * 6, "%d vectors, want 9 of the sphere + 18 on the axes", t.nvec);
     for (int n = 2; n <= 7; n++) {
