@@ -45,6 +45,22 @@ void bonds_free(Bonds *b)
     free(b);
 }
 
+void bonds_io(Io *io, Bonds *b)
+{
+    io_series(io, &b->traj, "colloid centres");
+    io_series(io, &b->ext2, "colloid spring extension");
+    io_series(io, &b->spring_wyx, "colloid spring stress");
+    io_bytes(io, &b->ext_max, sizeof b->ext_max, "colloid largest extension");
+    if (b->p.around.on) {
+        io_array(io, b->around_hist, (size_t)b->nblocks * b->p.around.bins, sizeof(double), "colloid around");
+        io_array(io, b->around_samples, (size_t)b->nblocks, sizeof(long long), "colloid around samples");
+    }
+    if (b->p.rdf_on) {
+        io_array(io, b->rdf_hist, (size_t)b->nblocks * b->p.rdf_bins, sizeof(double), "colloid rdf");
+        io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
+    }
+}
+
 int bonds_place(Bonds *b, System *s)
 {
     b->index = calloc((size_t)s->n + 1, sizeof(int));

@@ -60,6 +60,9 @@ typedef struct Bonds {
  * production steps in nblocks blocks; NULL when out of memory. */
 Bonds *bonds_new(const BondParams *p, int nblocks, long long steps);
 void bonds_free(Bonds *b);
+/* The centre trajectory, spring records and histograms, written or read for
+ * the checkpoint. */
+void bonds_io(Io *io, Bonds *b);
 /* Centres on a square grid of cells (no overlap), random orientation;
  * the particles of the type, in array order, fill the corners. */
 int  bonds_place(Bonds *b, System *s);

@@ -46,6 +46,19 @@ void colloid_free(Colloids *c)
     free(c);
 }
 
+void colloid_io(Io *io, Colloids *c)
+{
+    const size_t nc = (size_t)c->ncol;
+    io_array(io, c->R, 3 * nc, sizeof(double), "colloid body centres");
+    io_array(io, c->V, 3 * nc, sizeof(double), "colloid body velocities");
+    io_array(io, c->q, 4 * nc, sizeof(double), "colloid body quaternions");
+    io_array(io, c->L, 3 * nc, sizeof(double), "colloid body angular momenta");
+    io_array(io, c->F, 3 * nc, sizeof(double), "colloid body forces");
+    io_array(io, c->T, 3 * nc, sizeof(double), "colloid body torques");
+    io_series(io, &c->ext2, "colloid spring extension");
+    io_bytes(io, &c->nsteps, sizeof c->nsteps, "colloid steps");
+}
+
 void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3])
 {
     double r[3];

@@ -12,6 +12,7 @@
 #include "system.h"
 #include "blockavg.h"
 #include "forces.h"
+#include "io.h"
 
 enum { COLLOID_P = 6 };
 
@@ -43,6 +44,9 @@ typedef struct Colloids {
  * NULL when out of memory. */
 Colloids *colloid_new(const ColloidParams *p);
 void colloid_free(Colloids *c);
+/* The rigid bodies (centre, velocity, quaternion, angular momentum, last
+ * reactions) and the extension record, written or read for the checkpoint. */
+void colloid_io(Io *io, Colloids *c);
 /* Bodies at the lattice sites (identity orientation, at rest); constituent
  * particles on their reference sites. */
 int  colloid_place(Colloids *c, System *s);

@@ -106,6 +106,60 @@ void measure_free(Measure *m)
     if (m->tcaf.on) tcaf_free(&m->tcaf);
 }
 
+/* profile, rdf and msd accumulators */
+static void binned_io(Io *io, Measure *m)
+{
+    const size_t n = (size_t)m->n;
+    if (m->prof_on) {
+        io_array(io, m->prof, (size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double), "profile");
+        io_array(io, m->prof_samples, (size_t)m->nblocks, sizeof(long long), "profile samples");
+    }
+    if (m->rdf_on) {
+        io_array(io, m->rdf_hist, (size_t)m->nblocks * m->rdf_bins, sizeof(double), "rdf");
+        io_array(io, m->rdf_samples, (size_t)m->nblocks, sizeof(long long), "rdf samples");
+    }
+    if (m->msd_on) {
+        io_array(io, m->msd_origin_pos, (size_t)m->msd_norig * 3 * n, sizeof(double), "msd origins");
+        io_array(io, m->msd_origin_step, (size_t)m->msd_norig, sizeof(long long), "msd origin steps");
+        io_array(io, m->msd_curve, (size_t)m->msd_norig * m->msd_groups * m->msd_nlags, sizeof(double), "msd curves");
+        io_series(io, &m->msd_done, "msd done");
+        io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
+    }
+}
+
+void measure_io(Io *io, Measure *m)
+{
+    io_series(io, &m->temperature, "temperature");
+    io_series(io, &m->pressure, "pressure");
+    io_series(io, &m->epot, "epot");
+    for (int p = 0; p < STRESS_PARTS; p++)
+        for (int k = 0; k < 9; k++) io_series(io, &m->P[p][k], "pressure tensor");
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) io_series(io, &m->frozen_force[t][d], "frozen force");
+    binned_io(io, m);
+    if (m->prof_on && m->prof_tsum)   /* its place in the format: after the MSD */
+        io_array(io, m->prof_tsum, (size_t)m->nblocks, sizeof(double), "profile times");
+    if (m->com_on) {
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &m->com_v[d], "centre-of-mass velocity");
+            io_series(io, &m->com_r[d], "centre-of-mass position");
+        }
+        io_bytes(io, m->com_r0, sizeof m->com_r0, "centre-of-mass start");
+    }
+    field_io(io, &m->field);
+}
+
+void measure_rotation_io(Io *io, Measure *m)
+{
+    io_series(io, &m->rot_temperature, "rotational temperature");
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &m->frozen_torque[t][d], "frozen torque");
+            io_series(io, &m->frozen_drag[t][d], "frozen drag");
+            io_series(io, &m->frozen_torque_random[t][d], "frozen random torque");
+        }
+}
+
 int measure_wants_virial(const Measure *m, long long step)
 {
     return step >= 0 && step % m->every == 0;

@@ -82,6 +82,10 @@ int  measure_wants_virial(const Measure *m, long long step);
 /* Sample after the step is complete; pv holds the virial of this step's forces. */
 void measure_sample(Measure *m, const System *s, const NeighborList *nl, const PairVirial *pv,
                     long long prod_step);
+/* The accumulators (with the field measurements, not the TCAF), written or
+ * read for the checkpoint; measure_rotation_io: those of rotation scenes. */
+void measure_io(Io *io, Measure *m);
+void measure_rotation_io(Io *io, Measure *m);
 /* Write summary rows and the plot tables into dir. */
 int  measure_write(const Measure *m, const System *s, FILE *summary, const char *dir);
 

@@ -54,6 +54,23 @@ void field_free(FieldMeasure *f)
         for (int d = 0; d < 3; d++) { series_free(&f->mean_v[t][d]); series_free(&f->torque[t][d]); }
 }
 
+void field_io(Io *io, FieldMeasure *f)
+{
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &f->mean_v[t][d], "mean velocity");
+            io_series(io, &f->torque[t][d], "body torque");
+        }
+    if (f->p.around.on) {
+        io_array(io, f->around_hist, (size_t)f->nblocks * f->p.around.bins, sizeof(double), "around");
+        io_array(io, f->around_samples, (size_t)f->nblocks, sizeof(long long), "around samples");
+    }
+    if (f->p.map_on) {
+        io_array(io, f->map_hist, 3 * (size_t)f->p.map_bins[0] * f->p.map_bins[1], sizeof(double), "density map");
+        io_bytes(io, &f->map_samples, sizeof f->map_samples, "density map samples");
+    }
+}
+
 static void sample_velocities_and_torques(FieldMeasure *f, const System *s)
 {
     double v[DPD_MAX_TYPES][3] = {{0}}, tq[DPD_MAX_TYPES][3] = {{0}};

@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include "system.h"
 #include "blockavg.h"
+#include "io.h"
 
 /* The distribution of a type about centres (eq. 48): measure.around about a
  * point, colloids2d.around about the colloid centres. */
@@ -68,5 +69,7 @@ void field_free(FieldMeasure *f);
 /* One sample; s->f must hold this step's pair forces (for the torques). */
 void field_sample(FieldMeasure *f, const System *s, int block);
 int  field_write(const FieldMeasure *f, const System *s, FILE *summary, const char *dir);
+/* The accumulators, written or read for the checkpoint. */
+void field_io(Io *io, FieldMeasure *f);
 
 #endif

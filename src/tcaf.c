@@ -107,6 +107,18 @@ int tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long l
     return 0;
 }
 
+void tcaf_io(Io *io, Tcaf *t)
+{
+    io_array(io, t->origin, (size_t)t->nslots * t->nvec * 3, sizeof(double complex), "tcaf origins");
+    io_array(io, t->origin_step, (size_t)t->nslots, sizeof(long long), "tcaf origin steps");
+    io_array(io, t->origin_index, (size_t)t->nslots, sizeof(long long), "tcaf origin indices");
+    io_array(io, t->curve, (size_t)t->nslots * t->nshell * t->nlags, sizeof(double), "tcaf curves");
+    io_array(io, t->acc, (size_t)t->nblocks * t->nshell * t->nlags, sizeof(double), "tcaf blocks");
+    io_array(io, t->acc_n, (size_t)t->nblocks, sizeof(long long), "tcaf block origins");
+    io_bytes(io, &t->nstarted, sizeof t->nstarted, "tcaf origins started");
+    io_bytes(io, &t->ndone, sizeof t->ndone, "tcaf origins done");
+}
+
 void tcaf_free(Tcaf *t)
 {
     free(t->vec); free(t->kvec); free(t->shell_of); free(t->shell_k); free(t->shell_n2);

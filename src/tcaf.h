@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <complex.h>
 #include "system.h"
+#include "io.h"
 
 /* measure.tcaf of the scene, read and checked by the input layer (setup_measure.c). */
 typedef struct {
@@ -65,6 +66,9 @@ typedef struct {
     double body_mass;
 } Tcaf;
 
+/* The time origins in flight, their running sums and the block sums, written
+ * or read for the checkpoint. */
+void tcaf_io(Io *io, Tcaf *t);
 /* Add nbody bodies of mass M at R with velocity V (arrays owned by the caller,
  * read at every sample) to the current: J += sum_b M V_b exp(i k.R_b); rho too. */
 void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M);
