@@ -262,17 +262,19 @@ static int write_rdf(const Bonds *b, const System *s, const char *dir)
     if (!out) return -1;
     const double dr = b->p.rdf_rmax / b->p.rdf_bins;
     const double pairs = (double)b->p.ncol * (b->p.ncol - 1) / (s->box.L[0] * s->box.L[1]);
+    double *g = malloc((size_t)b->nblocks * sizeof(double) + 1);   /* per block */
+    if (!g) { fclose(out); return -1; }
     fprintf(out, "r\tg\tg_se\n");
-    double g[1024];
     for (int q = 0; q < b->p.rdf_bins; q++) {
         int used = 0;
-        for (int k = 0; k < b->nblocks && used < 1024; k++)
+        for (int k = 0; k < b->nblocks; k++)
             if (b->rdf_samples[k] > 0 && pairs > 0)
                 g[used++] = b->rdf_hist[(size_t)k * b->p.rdf_bins + q] / (b->rdf_samples[k] * pairs * annulus(q * dr, (q + 1) * dr));
         double mean = NAN, se = NAN;
         if (used > 0) block_stats(g, (size_t)used, used, &mean, &se);
         fprintf(out, "%.6g\t%.6g\t%.3g\n", (q + 0.5) * dr, mean, se);
     }
+    free(g);
     return fclose(out);
 }
 

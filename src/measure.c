@@ -562,6 +562,77 @@ static int write_msd(const Measure *m, const System *s, FILE *summary, const cha
     return fclose(f);
 }
 
+/* Shear stress T_xy = -P_yx (x momentum carried across planes normal to y),
+ * with the viscosity and its parts under shear. */
+static int write_shear_stress(const Measure *m, const System *s, FILE *summary)
+{
+    static const char *part[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
+    const int B = m->nblocks;
+    const size_t ns = m->P[0][3].n;
+    if (ns == 0) return 0;
+    /* The random part of the stress has zero mean exactly (F_R at a step is
+     * independent of the positions it is paired with) but a variance of order
+     * 1/dt; the estimators without it have the same mean and far smaller
+     * errors. Both are reported. */
+    double v, se;
+    double *tot = malloc(ns * sizeof(double)), *all = malloc(ns * sizeof(double));
+    if (!tot || !all) { free(tot); free(all); return -1; }
+    for (size_t k = 0; k < ns; k++) {
+        tot[k] = -(m->P[STRESS_KINETIC][3].v[k] + m->P[STRESS_CONSERVATIVE][3].v[k]
+                   + m->P[STRESS_DISSIPATIVE][3].v[k]);
+        all[k] = tot[k] - m->P[STRESS_RANDOM][3].v[k];
+    }
+    block_stats(tot, ns, B, &v, &se);
+    row(summary, "stress_xy", v, se);
+    block_stats(all, ns, B, &v, &se);
+    row(summary, "stress_xy_with_random", v, se);
+    const double rate = s->box.shear_rate;
+    if (rate != 0.0) {
+        for (size_t k = 0; k < ns; k++) { tot[k] /= rate; all[k] /= rate; }
+        block_stats(tot, ns, B, &v, &se);
+        row(summary, "viscosity", v, se);
+        block_stats(all, ns, B, &v, &se);
+        row(summary, "viscosity_with_random", v, se);
+        for (int p = 0; p < STRESS_PARTS; p++) {
+            char name[64];
+            for (size_t k = 0; k < ns; k++) tot[k] = -m->P[p][3].v[k] / rate;
+            block_stats(tot, ns, B, &v, &se);
+            snprintf(name, sizeof name, "viscosity_%s", part[p]);
+            row(summary, name, v, se);
+        }
+    }
+    free(tot);
+    free(all);
+    return 0;
+}
+
+/* The row `prefix`_`type`_`axis` of a series. */
+static void series_row(FILE *summary, const char *prefix, const char *type, int axis, const Series *x, int nblocks)
+{
+    char name[96];
+    double v, se;
+    snprintf(name, sizeof name, "%s_%s_%c", prefix, type, "xyz"[axis]);
+    series_stats(x, nblocks, &v, &se);
+    row(summary, name, v, se);
+}
+
+/* Force on each frozen type and, in rotation scenes, the eq. 1 torques and drag. */
+static void write_frozen_bodies(const Measure *m, const System *s, FILE *summary)
+{
+    const int B = m->nblocks;
+    for (int t = 0; t < s->ntypes; t++) {
+        if (!s->types[t].frozen) continue;
+        const char *tn = s->types[t].name;
+        for (int d = 0; d < s->box.dim; d++) series_row(summary, "force_on", tn, d, &m->frozen_force[t][d], B);
+        if (s->rotation)
+            for (int d = 0; d < 3; d++) {
+                series_row(summary, "torque_on", tn, d, &m->frozen_torque[t][d], B);
+                series_row(summary, "torque_random_on", tn, d, &m->frozen_torque_random[t][d], B);
+                series_row(summary, "drag_on", tn, d, &m->frozen_drag[t][d], B);
+            }
+    }
+}
+
 int measure_write(const Measure *m, const System *s, FILE *summary, const char *dir)
 {
     double v, se;
@@ -572,65 +643,8 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
     row(summary, "pressure", v, se);
     series_stats(&m->epot, B, &v, &se);
     row(summary, "potential_energy_per_particle", v, se);
-    /* shear stress T_xy = -P_yx: x momentum carried across planes normal to y */
-    static const char *part[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
-    const size_t ns = m->P[0][3].n;
-    if (ns > 0) {
-        /* The random part of the stress has zero mean exactly (F_R at a step is
-         * independent of the positions it is paired with) but a variance of order
-         * 1/dt; the estimators without it have the same mean and far smaller
-         * errors. Both are reported. */
-        double *tot = malloc(ns * sizeof(double)), *all = malloc(ns * sizeof(double));
-        if (!tot || !all) { free(tot); free(all); return -1; }
-        for (size_t k = 0; k < ns; k++) {
-            tot[k] = -(m->P[STRESS_KINETIC][3].v[k] + m->P[STRESS_CONSERVATIVE][3].v[k]
-                       + m->P[STRESS_DISSIPATIVE][3].v[k]);
-            all[k] = tot[k] - m->P[STRESS_RANDOM][3].v[k];
-        }
-        block_stats(tot, ns, B, &v, &se);
-        row(summary, "stress_xy", v, se);
-        block_stats(all, ns, B, &v, &se);
-        row(summary, "stress_xy_with_random", v, se);
-        const double rate = s->box.shear_rate;
-        if (rate != 0.0) {
-            for (size_t k = 0; k < ns; k++) { tot[k] /= rate; all[k] /= rate; }
-            block_stats(tot, ns, B, &v, &se);
-            row(summary, "viscosity", v, se);
-            block_stats(all, ns, B, &v, &se);
-            row(summary, "viscosity_with_random", v, se);
-            for (int p = 0; p < STRESS_PARTS; p++) {
-                char name[64];
-                for (size_t k = 0; k < ns; k++) tot[k] = -m->P[p][3].v[k] / rate;
-                block_stats(tot, ns, B, &v, &se);
-                snprintf(name, sizeof name, "viscosity_%s", part[p]);
-                row(summary, name, v, se);
-            }
-        }
-        free(tot);
-        free(all);
-    }
-    for (int t = 0; t < s->ntypes; t++) {
-        if (!s->types[t].frozen) continue;
-        for (int d = 0; d < s->box.dim; d++) {
-            char name[96];
-            snprintf(name, sizeof name, "force_on_%s_%c", s->types[t].name, "xyz"[d]);
-            series_stats(&m->frozen_force[t][d], B, &v, &se);
-            row(summary, name, v, se);
-        }
-        if (s->rotation)
-            for (int d = 0; d < 3; d++) {
-                char name[96];
-                snprintf(name, sizeof name, "torque_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_torque[t][d], B, &v, &se);
-                row(summary, name, v, se);
-                snprintf(name, sizeof name, "torque_random_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_torque_random[t][d], B, &v, &se);
-                row(summary, name, v, se);
-                snprintf(name, sizeof name, "drag_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_drag[t][d], B, &v, &se);
-                row(summary, name, v, se);
-            }
-    }
+    if (write_shear_stress(m, s, summary)) return -1;
+    write_frozen_bodies(m, s, summary);
     if (s->rotation) {
         series_stats(&m->rot_temperature, B, &v, &se);
         row(summary, "rotational_temperature", v, se);

@@ -355,6 +355,36 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     return r;
 }
 
+/* The bare build (-DDPD_BARE, src/modules.h) has no optional modules: a
+ * scene that switches one on is refused. */
+static int refuse_in_bare_build(Scene *sc, const System *s, const Measure *m, const RunConfig *rc)
+{
+#ifdef DPD_BARE
+    const char *mod = NULL;
+    int frozen_type = 0;
+    for (int t = 0; t < s->ntypes; t++) frozen_type |= s->types[t].frozen;
+    if (s->box.shear_rate != 0.0) mod = "shear_rate (Lees-Edwards)";
+    else if (frozen_type) mod = "frozen particles";
+    else if (s->has_body_force) mod = "a body force";
+    else if (s->has_held_velocity) mod = "hold_mean_velocity";
+    else if (s->rotation) mod = "rotation";
+    else if (rc->overdamped) mod = "overdamped";
+    else if (rc->confine_axis >= 0) mod = "confining walls";
+    else if (rc->colloids) mod = "colloids";
+    else if (rc->bonds) mod = "colloids2d";
+    else if (m->tcaf_on) mod = "measure.tcaf";
+    else if (m->msd_on) mod = "measure.msd";
+    else if (m->rdf_on) mod = "measure.rdf";
+    else if (m->com_on) mod = "measure.com";
+    else if (m->prof_on) mod = "measure.profile";
+    if (mod) return scene_fail(sc, NULL, "this is the bare build (-DDPD_BARE), without optional modules, "
+                               "and the scene switches on %s; run it with bin/dpd", mod);
+#else
+    (void)sc; (void)s; (void)m; (void)rc;
+#endif
+    return 0;
+}
+
 /* The rest of the scene, once the types are known. */
 static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, TypeInit *ti)
 {
@@ -408,29 +438,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (s->has_held_velocity && rc->overdamped)
         return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
                           "a type's hold_mean_velocity needs massive particles: no 'overdamped' group with it");
-#ifdef DPD_BARE
-    {   /* the bare build has no optional modules (src/modules.h) */
-        const char *mod = NULL;
-        int frozen_type = 0;
-        for (int t = 0; t < s->ntypes; t++) frozen_type |= s->types[t].frozen;
-        if (s->box.shear_rate != 0.0) mod = "shear_rate (Lees-Edwards)";
-        else if (frozen_type) mod = "frozen particles";
-        else if (s->has_body_force) mod = "a body force";
-        else if (s->has_held_velocity) mod = "hold_mean_velocity";
-        else if (s->rotation) mod = "rotation";
-        else if (rc->overdamped) mod = "overdamped";
-        else if (rc->confine_axis >= 0) mod = "confining walls";
-        else if (rc->colloids) mod = "colloids";
-        else if (rc->bonds) mod = "colloids2d";
-        else if (m->tcaf_on) mod = "measure.tcaf";
-        else if (m->msd_on) mod = "measure.msd";
-        else if (m->rdf_on) mod = "measure.rdf";
-        else if (m->com_on) mod = "measure.com";
-        else if (m->prof_on) mod = "measure.profile";
-        if (mod) return scene_fail(sc, NULL, "this is the bare build (-DDPD_BARE), without optional modules, "
-                                   "and the scene switches on %s; run it with bin/dpd", mod);
-    }
-#endif
+    if (refuse_in_bare_build(sc, s, m, rc)) return -1;
     if (setup_validate_only) return 0;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;

@@ -80,6 +80,28 @@ static int read_field(Scene *sc, const config_setting_t *g, const System *s, Fie
     return 0;
 }
 
+/* every, window and origin_every of a time correlation (msd, tcaf): the
+ * window and the origins' spacing multiples of every, under 1000 origins in
+ * flight. */
+static int read_window(Scene *sc, const config_setting_t *g, int every_default, int *every, int *window,
+                       int *origin_every)
+{
+    long long v;
+    if (scene_int(sc, g, "every", &v, every_default, 1, 1000000, 0) < 0) return -1;
+    *every = (int)v;
+    if (scene_int(sc, g, "window", &v, 0, 1, 100000000, 1) < 0) return -1;   /* required: no default */
+    *window = (int)v;
+    if (scene_int(sc, g, "origin_every", &v, *window / 10 > 0 ? *window / 10 : 1, 1, 100000000, 0) < 0) return -1;
+    *origin_every = (int)v;
+    if (*window % *every || *origin_every % *every)
+        return scene_fail(sc, g, "window (%d) and origin_every (%d) must be multiples of every (%d)",
+                          *window, *origin_every, *every);
+    if (*window / *origin_every + 1 > 1000)
+        return scene_fail(sc, g, "window / origin_every = %d origins in flight; allowed up to 999",
+                          *window / *origin_every);
+    return 0;
+}
+
 /* measure.tcaf = { every; window; origin_every; n2max; axis_nmax; type; fit_min;
  * extrapolate_kmax; extrapolate_order; include_bodies; } */
 static int read_tcaf(Scene *sc, const config_setting_t *g, const System *s, TcafParams *t,
@@ -87,18 +109,7 @@ static int read_tcaf(Scene *sc, const config_setting_t *g, const System *s, Tcaf
 {
     long long v;
     memset(t, 0, sizeof *t);
-    if (scene_int(sc, g, "every", &v, 1, 1, 1000000, 0) < 0) return -1;
-    t->every = (int)v;
-    if (scene_int(sc, g, "window", &v, 0, 1, 100000000, 1) < 0) return -1;
-    t->window = (int)v;
-    if (scene_int(sc, g, "origin_every", &v, t->window / 10 > 0 ? t->window / 10 : 1, 1, 100000000, 0) < 0) return -1;
-    t->origin_every = (int)v;
-    if (t->window % t->every || t->origin_every % t->every)
-        return scene_fail(sc, g, "window (%d) and origin_every (%d) must be multiples of every (%d)",
-                          t->window, t->origin_every, t->every);
-    if (t->window / t->origin_every + 1 > 1000)
-        return scene_fail(sc, g, "window / origin_every = %d origins in flight; allowed up to 999",
-                          t->window / t->origin_every);
+    if (read_window(sc, g, 1, &t->every, &t->window, &t->origin_every)) return -1;
     if (scene_int(sc, g, "n2max", &v, 9, 1, 400, 0) < 0) return -1;
     t->n2max = (int)v;
     if (scene_int(sc, g, "axis_nmax", &v, 0, 0, TCAF_NMAX, 0) < 0) return -1;
@@ -161,20 +172,8 @@ static int read_rdf(Scene *sc, const config_setting_t *r, const System *s, Measu
 /* msd = { every; window; origin_every; type; } */
 static int read_msd(Scene *sc, const config_setting_t *d, const System *s, Measure *m, long long steps)
 {
-    long long v;
     m->msd_on = 1;
-    if (scene_int(sc, d, "every", &v, m->every, 1, 1000000, 0) < 0) return -1;
-    m->msd_every = (int)v;
-    if (scene_int(sc, d, "window", &v, 100 * m->msd_every, 1, 100000000, 1) < 0) return -1;
-    m->msd_window = (int)v;
-    if (scene_int(sc, d, "origin_every", &v, m->msd_window / 10 > 0 ? m->msd_window / 10 : 1, 1, 100000000, 0) < 0) return -1;
-    m->msd_origin_every = (int)v;
-    if (m->msd_window % m->msd_every || m->msd_origin_every % m->msd_every)
-        return scene_fail(sc, d, "window (%d) and origin_every (%d) must be multiples of every (%d)",
-                          m->msd_window, m->msd_origin_every, m->msd_every);
-    if (m->msd_window / m->msd_origin_every + 1 > 1000)
-        return scene_fail(sc, d, "window / origin_every = %d origins in flight; allowed up to 999",
-                          m->msd_window / m->msd_origin_every);
+    if (read_window(sc, d, m->every, &m->msd_every, &m->msd_window, &m->msd_origin_every)) return -1;
     if (m->msd_window > steps)
         return scene_fail(sc, d, "window %d is longer than the run (%lld steps)", m->msd_window, steps);
     const char *tn;
