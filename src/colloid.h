@@ -28,7 +28,7 @@ typedef struct {
 
 typedef struct Colloids {
     ColloidParams p;
-    int ncol;
+    int ncol;                 /* per_axis^3 */
     double body[COLLOID_P][3];   /* site offsets in the body frame */
     double *R, *V, *q, *L;    /* per body: centre, velocity, unit quaternion (w,x,y,z), angular momentum */
     double *F, *T;            /* per body: spring reaction force and torque of the step */
