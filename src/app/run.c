@@ -88,7 +88,7 @@ static int solve_velocities(Run *r)
     const double t0 = wall_now(), c0 = cpu_now();
     if (od_assemble(&r->od, &r->s, &r->nl)) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     if (r->rc.bonds) bonds_rhs(r->rc.bonds, &r->s, &r->od);
-    return od_step_solve(&r->od, &r->s, &r->ods, &r->ods_stats, record, t0, c0) ? 3 : 0;
+    return od_step_solve(&r->od, &r->s, &r->rc.od, &r->ods_stats, record, t0, c0) ? 3 : 0;
 }
 
 /* After a move: the walls, the check for a non-finite position (before it
@@ -153,10 +153,6 @@ static int run_load(Run *r)
         return 2;
     }
     r->set_up = 1;
-    const RunConfig *rc = &r->rc;
-    r->ods = (OdSettings){.solver = (OdSolver)rc->od_solver, .stop = (OdStop)rc->od_stop, .tol = rc->od_tol,
-                          .max_iter = rc->od_max_iter, .allow_unconverged = rc->od_allow_unconverged,
-                          .reference_tol = rc->od_reference_tol, .reference_own = rc->od_reference_own};
     return 0;
 }
 
@@ -198,8 +194,8 @@ static void run_connect(Run *r)
 {
     RunConfig *rc = &r->rc;
     System *s = &r->s;
-    if (rc->colloids && r->m.tcaf.on && r->m.tcaf.include_bodies)   /* the bodies' momentum joins the TCAF */
-        tcaf_set_bodies(&r->m.tcaf, s, rc->colloids->ncol, rc->colloids->R, rc->colloids->V, rc->colloids->mass);
+    if (rc->colloids && r->m.tcaf.on && r->m.tcaf.p.include_bodies)   /* the bodies' momentum joins the TCAF */
+        tcaf_set_bodies(&r->m.tcaf, s, rc->colloids->ncol, rc->colloids->R, rc->colloids->V, rc->colloids->p.mass);
     if (rc->colloids) r->m.colloids = rc->colloids;   /* the bodies' momentum flux joins the stress */
     for (int t = 0; t < s->ntypes; t++) memcpy(r->vwall[t], s->types[t].wall_velocity, sizeof r->vwall[t]);
     r->walls_later = MOD_ON(rc->walls_start_at_production && rc->equilibration > 0);

@@ -37,7 +37,6 @@ typedef struct {
     Output out;
     PairVirial pv;            /* the virial of measurement steps (its slabs in pv.Wbin) */
     OdSystem od;              /* m = 0 runs: the velocity system, its solver and statistics */
-    OdSettings ods;
     OdStats ods_stats;
     RunStats st;
     CheckpointExtra cx;

@@ -5,104 +5,34 @@
 #include <math.h>
 #include "bonds.h"
 #include "random.h"
-#include "measure_field.h"
 
-#define R_EPSILON 1e-10      /* as in forces.c: coincident particles have no direction */
 #define STREAM_BOND_ORIENT 5 /* Philox stream of the initial orientations */
 
 static const int PAIRS[3][2] = {{0, 1}, {1, 2}, {2, 0}};
 
-static int type_named(const System *s, const char *name)
+Bonds *bonds_new(const BondParams *p, int nblocks, long long steps)
 {
-    for (int t = 0; t < s->ntypes; t++)
-        if (strcmp(s->types[t].name, name) == 0) return t;
-    return -1;
-}
-
-int bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
-                    long long steps, int nblocks, Bonds **out)
-{
-    *out = NULL;
-    if (s->box.dim != 2) return scene_fail(sc, g, "colloids2d need dimension = 2");
     Bonds *b = calloc(1, sizeof *b);
-    if (!b) return scene_fail(sc, g, "out of memory");
-    const char *tn;
-    long long v;
-    int r = -1;
-    if (scene_string(sc, g, "type", &tn, NULL, NULL, 1) < 0) goto fail;
-    b->type = type_named(s, tn);
-    if (b->type < 0) { scene_fail(sc, g, "unknown type \"%s\"", tn); goto fail; }
-    if (s->types[b->type].frozen) { scene_fail(sc, g, "type \"%s\" is frozen; colloid particles must move", tn); goto fail; }
-    if (scene_int(sc, g, "count", &v, 1, 0, 100000, 1) < 0) goto fail;   /* 0: the solvent alone */
-    b->ncol = (int)v;
-    if (counts[b->type] != (long long)BOND_P * b->ncol) {
-        scene_fail(sc, g, "type \"%s\" has %lld particles; %d colloids of %d need count = %d",
-                   tn, counts[b->type], b->ncol, BOND_P, BOND_P * b->ncol);
-        goto fail;
-    }
-    if (scene_double(sc, g, "side", &b->side, 0.25, 1e-3, 0.5 * s->rc_max, 0) < 0) goto fail;
-    if (scene_double(sc, g, "H", &b->H, 1000.0, 0.0, 1e7, 0) < 0) goto fail;
-    /* colloids on a grid of cells of side L / m: their triangles must fit */
-    const int m = b->ncol > 0 ? (int)ceil(sqrt((double)b->ncol)) : 1;
-    const double cell = fmin(s->box.L[0], s->box.L[1]) / m;
-    if (b->side >= cell) {
-        scene_fail(sc, g, "side %g: %d colloids on a %d x %d grid of cells %g wide would overlap",
-                   b->side, b->ncol, m, m, cell);
-        goto fail;
-    }
-    if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) goto fail;
-    b->every = (int)v;
-    if (scene_int(sc, g, "msd_window", &v, 100 * b->every, b->every, 100000000, 0) < 0) goto fail;
-    if (v % b->every) { scene_fail(sc, g, "msd_window (%lld) must be a multiple of every (%d)", v, b->every); goto fail; }
-    if (v > steps / 2) { scene_fail(sc, g, "msd_window %lld is longer than half the run (%lld steps)", v, steps); goto fail; }
-    b->msd_window = (int)(v / b->every);
+    if (!b) return NULL;
+    b->p = *p;
     b->nblocks = nblocks;
-    b->nsamples_expected = steps / b->every + 1;
-    config_setting_t *a = scene_child(sc, g, "around", CONFIG_TYPE_GROUP);
-    if (sc->failed) goto fail;
-    if (a) {
-        b->around_on = 1;
-        if (scene_string(sc, a, "type", &tn, NULL, NULL, 1) < 0) goto fail;
-        b->around_type = type_named(s, tn);
-        if (b->around_type < 0) { scene_fail(sc, a, "unknown type \"%s\"", tn); goto fail; }
-        const double hmin = 0.5 * fmin(s->box.L[0], s->box.L[1]);
-        double qmax;
-        if (scene_double(sc, a, "dq", &b->around_dq, 0.01, 1e-6, hmin, 0) < 0) goto fail;
-        if (scene_double(sc, a, "qmax", &qmax, hmin, b->around_dq, hmin, 0) < 0) goto fail;
-        if (scene_double(sc, a, "threshold", &b->around_threshold, 1e-3, 0.0, 1.0, 0) < 0) goto fail;
-        b->around_bins = (int)floor(qmax / b->around_dq + 0.5);
-        b->around_density = counts[b->around_type] / (s->box.L[0] * s->box.L[1]);
-    }
-    config_setting_t *rd = scene_child(sc, g, "rdf", CONFIG_TYPE_GROUP);
-    if (sc->failed) goto fail;
-    if (rd) {
-        b->rdf_on = 1;
-        const double hmin = 0.5 * fmin(s->box.L[0], s->box.L[1]);
-        if (scene_double(sc, rd, "rmax", &b->rdf_rmax, hmin, 1e-3, hmin, 0) < 0) goto fail;
-        if (scene_int(sc, rd, "bins", &v, 60, 1, 100000, 0) < 0) goto fail;
-        b->rdf_bins = (int)v;
-    }
-    if (b->ncol == 0) { bonds_free(b); return 0; }   /* every key read: nothing to build */
-    const size_t nc = (size_t)b->ncol;
+    b->nsamples_expected = steps / p->every + 1;
+    const size_t nc = (size_t)p->ncol;
     b->ids = calloc(nc * BOND_P, sizeof(uint32_t));
-    if (b->around_on) {
-        b->around_hist = calloc((size_t)nblocks * b->around_bins, sizeof(double));
+    if (p->around.on) {
+        b->around_hist = calloc((size_t)nblocks * p->around.bins, sizeof(double));
         b->around_samples = calloc((size_t)nblocks, sizeof(long long));
     }
-    if (b->rdf_on) {
-        b->rdf_hist = calloc((size_t)nblocks * b->rdf_bins, sizeof(double));
+    if (p->rdf_on) {
+        b->rdf_hist = calloc((size_t)nblocks * p->rdf_bins, sizeof(double));
         b->rdf_samples = calloc((size_t)nblocks, sizeof(long long));
     }
-    if (!b->ids || (b->around_on && (!b->around_hist || !b->around_samples))
-        || (b->rdf_on && (!b->rdf_hist || !b->rdf_samples))) {
-        scene_fail(sc, g, "out of memory");
-        goto fail;
+    if (!b->ids || (p->around.on && (!b->around_hist || !b->around_samples))
+        || (p->rdf_on && (!b->rdf_hist || !b->rdf_samples))) {
+        bonds_free(b);
+        return NULL;
     }
-    *out = b;
-    return 0;
-fail:
-    bonds_free(b);
-    return r;
+    return b;
 }
 
 void bonds_free(Bonds *b)
@@ -114,16 +44,37 @@ void bonds_free(Bonds *b)
     free(b);
 }
 
+void bonds_io(Io *io, Bonds *b)
+{
+    io_series(io, &b->traj, "colloid centres");
+    io_series(io, &b->ext2, "colloid spring extension");
+    io_series(io, &b->spring_wyx, "colloid spring stress");
+    io_bytes(io, &b->ext_max, sizeof b->ext_max, "colloid largest extension");
+    if (b->p.around.on) {
+        io_array(io, b->around_hist, (size_t)b->nblocks * b->p.around.bins, sizeof(double), "colloid around");
+        io_array(io, b->around_samples, (size_t)b->nblocks, sizeof(long long), "colloid around samples");
+    }
+    if (b->p.rdf_on) {
+        io_array(io, b->rdf_hist, (size_t)b->nblocks * b->p.rdf_bins, sizeof(double), "colloid rdf");
+        io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
+    }
+}
+
 int bonds_place(Bonds *b, System *s)
 {
     b->index = calloc((size_t)s->n + 1, sizeof(int));
     b->nparticles = s->n;
     if (!b->index) return -1;
-    const int m = (int)ceil(sqrt((double)b->ncol));
-    const double R = b->side / sqrt(3.0);   /* circumradius of the triangle */
+    if (b->p.around.on) {   /* eq. 48's N / A */
+        long long cnt = 0;
+        for (int i = 0; i < s->n; i++) cnt += s->type[i] == b->p.around.type;
+        b->around_density = cnt / (s->box.L[0] * s->box.L[1]);
+    }
+    const int m = (int)ceil(sqrt((double)b->p.ncol));
+    const double R = b->p.side / sqrt(3.0);   /* circumradius of the triangle */
     int j = 0;
     for (int i = 0; i < s->n; i++) {
-        if (s->type[i] != b->type) continue;
+        if (s->type[i] != b->p.type) continue;
         const int c = j / BOND_P, k = j % BOND_P;
         const double cx = (c % m + 0.5) * s->box.L[0] / m, cy = (c / m + 0.5) * s->box.L[1] / m;
         philox4x32_ctr_t r = rng_block(s->seed, STREAM_BOND_ORIENT, (uint64_t)c, 0, 0);
@@ -144,7 +95,7 @@ void bonds_spring(double H, double rbar, const double d[3], double F[3])
 {
     const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     F[0] = F[1] = F[2] = 0.0;
-    if (r < R_EPSILON) return;                     /* no direction */
+    if (r < PAIR_R_EPSILON) return;                /* no direction (pair.h) */
     const double g = -H * (r - rbar) / r;          /* eq. 50: -H (r - r_bar) r_ab / r_ab */
     for (int a = 0; a < 3; a++) F[a] = g * d[a];
 }
@@ -164,13 +115,13 @@ static void spring_of(const Bonds *b, const System *s, int c, int p, int *ia, in
     for (int a = 0; a < 3; a++) d[a] = s->x[3 * *ia + a] - s->x[3 * *ib + a];
     box_min_image(&s->box, d, NULL);
     d[2] = 0.0;
-    bonds_spring(b->H, b->side, d, F);
+    bonds_spring(b->p.H, b->p.side, d, F);
 }
 
 void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
 {
     refresh_index(b, s);
-    for (int c = 0; c < b->ncol; c++)
+    for (int c = 0; c < b->p.ncol; c++)
         for (int p = 0; p < 3; p++) {
             int ia, ib;
             double d[3], F[3];
@@ -189,7 +140,7 @@ void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
 void bonds_forces(Bonds *b, System *s, PairVirial *pv)
 {
     refresh_index(b, s);
-    for (int c = 0; c < b->ncol; c++)
+    for (int c = 0; c < b->p.ncol; c++)
         for (int p = 0; p < 3; p++) {
             int ia, ib;
             double d[3], F[3];
@@ -201,7 +152,7 @@ void bonds_forces(Bonds *b, System *s, PairVirial *pv)
                 for (int e = 0; e < 3; e++) t[3 * a + e] = d[a] * F[e];   /* r_ab F_ab, as the pairs */
             for (int k = 0; k < 9; k++) pv->W[PART_CONSERVATIVE][k / 3][k % 3] += t[k];
             const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
-            pv->epot += 0.5 * b->H * (r - b->side) * (r - b->side);
+            pv->epot += 0.5 * b->p.H * (r - b->p.side) * (r - b->p.side);
             if (pv->nbins > 0)
                 ik_distribute(pv->Wbin + (size_t)PART_CONSERVATIVE * 9 * pv->nbins, pv->nbins, pv->bin_axis,
                               s->box.L[pv->bin_axis], s->x[3 * ia + pv->bin_axis], d[pv->bin_axis], t);
@@ -238,14 +189,14 @@ static void centre(const Bonds *b, const System *s, int c, double u[2], double w
 
 void bonds_sample(Bonds *b, const System *s, long long prod_step)
 {
-    if (prod_step < 0 || prod_step % b->every) return;
+    if (prod_step < 0 || prod_step % b->p.every) return;
     refresh_index(b, s);
-    const long long sample = prod_step / b->every;
+    const long long sample = prod_step / b->p.every;
     const int blk = block_of(b, sample);
-    double *wc = malloc(2 * (size_t)b->ncol * sizeof(double) + 1);
+    double *wc = malloc(2 * (size_t)b->p.ncol * sizeof(double) + 1);
     if (!wc) return;
     double e2 = 0.0, wyx = 0.0;
-    for (int c = 0; c < b->ncol; c++) {
+    for (int c = 0; c < b->p.ncol; c++) {
         double u[2];
         centre(b, s, c, u, wc + 2 * c);
         series_push(&b->traj, u[0]);
@@ -255,33 +206,33 @@ void bonds_sample(Bonds *b, const System *s, long long prod_step)
             double d[3], F[3];
             spring_of(b, s, c, p, &ia, &ib, d, F);
             const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
-            e2 += (r - b->side) * (r - b->side);
-            b->ext_max = fmax(b->ext_max, fabs(r - b->side) / b->side);
+            e2 += (r - b->p.side) * (r - b->p.side);
+            b->ext_max = fmax(b->ext_max, fabs(r - b->p.side) / b->p.side);
             wyx += d[1] * F[0];
         }
     }
-    series_push(&b->ext2, e2 / (3.0 * b->ncol));
+    series_push(&b->ext2, e2 / (3.0 * b->p.ncol));
     series_push(&b->spring_wyx, wyx);
-    if (b->around_on) {   /* eq. 48 about every centre */
-        double *h = b->around_hist + (size_t)blk * b->around_bins;
-        for (int c = 0; c < b->ncol; c++)
+    if (b->p.around.on) {   /* eq. 48 about every centre */
+        double *h = b->around_hist + (size_t)blk * b->p.around.bins;
+        for (int c = 0; c < b->p.ncol; c++)
             for (int i = 0; i < s->n; i++) {
-                if (s->type[i] != b->around_type) continue;
+                if (s->type[i] != b->p.around.type) continue;
                 double d[3] = {s->x[3 * i] - wc[2 * c], s->x[3 * i + 1] - wc[2 * c + 1], 0.0};
                 box_min_image(&s->box, d, NULL);
-                const int k = (int)(sqrt(d[0] * d[0] + d[1] * d[1]) / b->around_dq);
-                if (k < b->around_bins) h[k] += 1.0;
+                const int k = (int)(sqrt(d[0] * d[0] + d[1] * d[1]) / b->p.around.dq);
+                if (k < b->p.around.bins) h[k] += 1.0;
             }
-        b->around_samples[blk] += b->ncol;
+        b->around_samples[blk] += b->p.ncol;
     }
-    if (b->rdf_on && b->ncol > 1) {
-        double *h = b->rdf_hist + (size_t)blk * b->rdf_bins;
-        for (int c = 0; c < b->ncol; c++)
-            for (int e = c + 1; e < b->ncol; e++) {
+    if (b->p.rdf_on && b->p.ncol > 1) {
+        double *h = b->rdf_hist + (size_t)blk * b->p.rdf_bins;
+        for (int c = 0; c < b->p.ncol; c++)
+            for (int e = c + 1; e < b->p.ncol; e++) {
                 double d[3] = {wc[2 * c] - wc[2 * e], wc[2 * c + 1] - wc[2 * e + 1], 0.0};
                 box_min_image(&s->box, d, NULL);
-                const int k = (int)(sqrt(d[0] * d[0] + d[1] * d[1]) / (b->rdf_rmax / b->rdf_bins));
-                if (k < b->rdf_bins) h[k] += 2.0;   /* ordered pairs */
+                const int k = (int)(sqrt(d[0] * d[0] + d[1] * d[1]) / (b->p.rdf_rmax / b->p.rdf_bins));
+                if (k < b->p.rdf_bins) h[k] += 2.0;   /* ordered pairs */
             }
         b->rdf_samples[blk]++;
     }
@@ -297,8 +248,8 @@ static int write_around(const Bonds *b, FILE *summary, const char *dir)
     char path[1024];
     snprintf(path, sizeof path, "%s/colloid_around.tsv", dir);
     const AroundHist a = {.hist = b->around_hist, .samples = b->around_samples, .nblocks = b->nblocks,
-                          .bins = b->around_bins, .dim = 2, .dq = b->around_dq,
-                          .density = b->around_density, .threshold = b->around_threshold};
+                          .bins = b->p.around.bins, .dim = 2, .dq = b->p.around.dq,
+                          .density = b->around_density, .threshold = b->p.around.threshold};
     return around_write(&a, path, summary, "colloid_radius");
 }
 
@@ -308,19 +259,21 @@ static int write_rdf(const Bonds *b, const System *s, const char *dir)
     snprintf(path, sizeof path, "%s/colloid_rdf.tsv", dir);
     FILE *out = fopen(path, "w");
     if (!out) return -1;
-    const double dr = b->rdf_rmax / b->rdf_bins;
-    const double pairs = (double)b->ncol * (b->ncol - 1) / (s->box.L[0] * s->box.L[1]);
+    const double dr = b->p.rdf_rmax / b->p.rdf_bins;
+    const double pairs = (double)b->p.ncol * (b->p.ncol - 1) / (s->box.L[0] * s->box.L[1]);
+    double *g = malloc((size_t)b->nblocks * sizeof(double) + 1);   /* per block */
+    if (!g) { fclose(out); return -1; }
     fprintf(out, "r\tg\tg_se\n");
-    double g[1024];
-    for (int q = 0; q < b->rdf_bins; q++) {
+    for (int q = 0; q < b->p.rdf_bins; q++) {
         int used = 0;
-        for (int k = 0; k < b->nblocks && used < 1024; k++)
+        for (int k = 0; k < b->nblocks; k++)
             if (b->rdf_samples[k] > 0 && pairs > 0)
-                g[used++] = b->rdf_hist[(size_t)k * b->rdf_bins + q] / (b->rdf_samples[k] * pairs * annulus(q * dr, (q + 1) * dr));
+                g[used++] = b->rdf_hist[(size_t)k * b->p.rdf_bins + q] / (b->rdf_samples[k] * pairs * annulus(q * dr, (q + 1) * dr));
         double mean = NAN, se = NAN;
         if (used > 0) block_stats(g, (size_t)used, used, &mean, &se);
         fprintf(out, "%.6g\t%.6g\t%.3g\n", (q + 0.5) * dr, mean, se);
     }
+    free(g);
     return fclose(out);
 }
 
@@ -330,10 +283,10 @@ static int write_rdf(const Bonds *b, const System *s, const char *dir)
  * be correlated and understate the error), at most nblocks of them. */
 static int write_msd(const Bonds *b, const System *s, FILE *summary, const char *dir)
 {
-    const int nc = b->ncol, W = b->msd_window;
+    const int nc = b->p.ncol, W = b->p.msd_window;
     const long long ns = (long long)(b->traj.n / (2 * (size_t)nc)), no = ns - W;
     const double *T = b->traj.v;
-    const double dts = b->every * s->dt;
+    const double dts = b->p.every * s->dt;
     if (no < 1) { fprintf(summary, "D_colloid\tnan\tnan\n"); return 0; }
     int nb = b->nblocks;
     if (no / (2LL * W) < nb) nb = (int)(no / (2LL * W));
@@ -384,7 +337,7 @@ static int write_msd(const Bonds *b, const System *s, FILE *summary, const char 
 int bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir)
 {
     double v, se;
-    fprintf(summary, "colloids\t%d\t0\n", b->ncol);
+    fprintf(summary, "colloids\t%d\t0\n", b->p.ncol);
     series_stats(&b->ext2, b->nblocks, &v, &se);
     fprintf(summary, "colloid_spring_extension_rms\t%.10g\t%.4g\n", sqrt(v), v > 0 ? 0.5 * se / sqrt(v) : NAN);
     fprintf(summary, "colloid_spring_extension_max_relative\t%.10g\t0\n", b->ext_max);
@@ -398,7 +351,7 @@ int bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir)
         fprintf(summary, "viscosity_spring\t%.10g\t%.4g\n", v / s->box.shear_rate, se / fabs(s->box.shear_rate));
     series_free(&t);
     if (write_msd(b, s, summary, dir)) return -1;
-    if (b->around_on && write_around(b, summary, dir)) return -1;
-    if (b->rdf_on && write_rdf(b, s, dir)) return -1;
+    if (b->p.around.on && write_around(b, summary, dir)) return -1;
+    if (b->p.rdf_on && write_rdf(b, s, dir)) return -1;
     return 0;
 }

@@ -15,53 +15,60 @@
 #include <stdio.h>
 #include <stdint.h>
 #include "system.h"
-#include "scene.h"
 #include "blockavg.h"
 #include "forces.h"
 #include "overdamped.h"
+#include "around.h"
+#include "io.h"
 
 enum { BOND_P = 3 };          /* particles per colloid */
 
-typedef struct Bonds {
+/* colloids2d = { type; count; side; H; every; msd_window; around = {...};
+ * rdf = {...}; } of the scene, read and checked by the input layer
+ * (setup_bodies.c). */
+typedef struct {
     int type;                 /* particle type of the constituent particles */
-    int ncol;
+    int ncol;                 /* colloids ("count") */
     double side;              /* r_bar of eqs 50-51 */
     double H;                 /* spring stiffness */
+    int every;                /* sampling interval (production steps) */
+    int msd_window;           /* lags of the MSD, in samples */
+    AroundParams around;      /* a type about the centres (eq. 48) */
+    int rdf_on, rdf_bins;     /* RDF of the centres out to rdf_rmax */
+    double rdf_rmax;
+} BondParams;
+
+typedef struct Bonds {
+    BondParams p;
     uint32_t *ids;            /* ncol x 3 stable ids */
     int *index;               /* stable id -> array index (refreshed per call) */
     int nparticles;
     /* measurements */
-    int every, nblocks;
+    int nblocks;
     long long nsamples_expected;
-    int msd_window;           /* lags of the MSD, in samples */
     Series traj;              /* per sample: ncol x 2 unwrapped centres */
     Series ext2;              /* per sample: mean (r - r_bar)^2 over springs */
     Series spring_wyx;        /* per sample: sum over springs of d_y F_x (virial, yx) */
     double ext_max;           /* largest |r - r_bar| / r_bar seen */
-    int around_on, around_type, around_bins;
-    double around_dq, around_threshold, around_density;
+    double around_density;    /* N / A of the around type (bonds_place) */
     double *around_hist;      /* nblocks x bins */
     long long *around_samples;
-    int rdf_on, rdf_bins;
-    double rdf_rmax;
     double *rdf_hist;         /* nblocks x bins */
     long long *rdf_samples;
 } Bonds;
 
-/* colloids2d = { type = "colloid"; count = 1; side = 0.25; H = 1000.0;
- *   every = 10; msd_window = 2000;
- *   around = { type = "solvent"; dq = 0.01; qmax = 2.0; threshold = 1e-3; };
- *   rdf = { rmax = 3.0; bins = 60; }; }
- * counts[t]: the particle count of each type (the colloid type needs 3 count).
- * *out NULL when the group is absent. */
-int  bonds_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
-                     long long steps, int nblocks, Bonds **out);
+/* The colloids of the parameters p (malloc'd) measured over a run of `steps`
+ * production steps in nblocks blocks; NULL when out of memory. */
+Bonds *bonds_new(const BondParams *p, int nblocks, long long steps);
 void bonds_free(Bonds *b);
+/* The centre trajectory, spring records and histograms, written or read for
+ * the checkpoint. */
+void bonds_io(Io *io, Bonds *b);
 /* Centres on a square grid of cells (no overlap), random orientation;
  * the particles of the type, in array order, fill the corners. */
 int  bonds_place(Bonds *b, System *s);
 /* Spring force on particle a of the pair (a, b): -H (r - r_bar) e_ab (eq. 50),
- * b gets the opposite (eq. 51). d = x_a - x_b. Zero when r < 1e-10. */
+ * b gets the opposite (eq. 51). d = x_a - x_b. Zero when r < PAIR_R_EPSILON. */
 void bonds_spring(double H, double rbar, const double d[3], double F[3]);
 /* Add the spring forces to the rows of f of the m = 0 system (eq. 18). */
 void bonds_rhs(Bonds *b, const System *s, OdSystem *od);

@@ -16,58 +16,26 @@ static void rotate(const double q[4], const double v[3], double out[3])
     out[2] = v[2] + w * t[2] + (x * t[1] - y * t[0]);
 }
 
-int colloid_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
-                      Colloids **out)
+Colloids *colloid_new(const ColloidParams *p)
 {
-    *out = NULL;
-    if (s->box.dim != 3) return scene_fail(sc, g, "spring-model colloids need dimension = 3");
     Colloids *c = calloc(1, sizeof *c);
-    if (!c) return scene_fail(sc, g, "out of memory");
-    const char *tn;
-    long long v;
-    if (scene_string(sc, g, "type", &tn, NULL, NULL, 1) < 0) { free(c); return -1; }
-    c->type = -1;
-    for (int t = 0; t < s->ntypes; t++) if (!strcmp(s->types[t].name, tn)) c->type = t;
-    if (c->type < 0) { free(c); return scene_fail(sc, g, "unknown type \"%s\"", tn); }
-    if (s->types[c->type].frozen) { free(c); return scene_fail(sc, g, "type \"%s\" is frozen; colloid particles must move", tn); }
-    if (scene_int(sc, g, "per_axis", &v, 1, 1, 100, 1) < 0) { free(c); return -1; }
-    c->per_axis = (int)v;
-    c->ncol = c->per_axis * c->per_axis * c->per_axis;
-    if (counts[c->type] != (long long)COLLOID_P * c->ncol) {
-        const int r = scene_fail(sc, g, "type \"%s\" has %lld particles; %d colloids of %d need count = %d",
-                                 tn, counts[c->type], c->ncol, COLLOID_P, COLLOID_P * c->ncol);
-        free(c);
-        return r;
-    }
-    if (scene_double(sc, g, "H", &c->H, 0.0, 1e-6, 1e7, 1) < 0) { free(c); return -1; }
-    if (scene_double(sc, g, "site_distance", &c->d, 0.5, 0.0, 10.0, 0) < 0) { free(c); return -1; }
-    const double m = s->types[c->type].mass;
-    if (scene_double(sc, g, "mass", &c->mass, COLLOID_P * m, 1e-9, 1e9, 0) < 0) { free(c); return -1; }
-    /* default: the inertia of p point masses m at the sites, (2/3) p m d^2 */
-    const double idef = c->d > 0 ? 2.0 / 3.0 * COLLOID_P * m * c->d * c->d : 1.0;
-    if (scene_double(sc, g, "inertia", &c->inertia, idef, 1e-9, 1e9, 0) < 0) { free(c); return -1; }
-    const double spacing = s->box.L[0] / c->per_axis;
-    if (2.0 * c->d >= spacing) {
-        const int r = scene_fail(sc, g, "site_distance %g: octahedra of size %g overlap at the lattice spacing %g",
-                                 c->d, 2.0 * c->d, spacing);
-        free(c);
-        return r;
-    }
+    if (!c) return NULL;
+    c->p = *p;
+    c->ncol = p->per_axis * p->per_axis * p->per_axis;
     /* octahedron: +-x, +-y, +-z */
     static const double OCT[COLLOID_P][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int k = 0; k < COLLOID_P; k++)
-        for (int d = 0; d < 3; d++) c->body[k][d] = c->d * OCT[k][d];
-    const int nc = c->ncol;
-    c->R = calloc(3 * (size_t)nc, sizeof(double)); c->V = calloc(3 * (size_t)nc, sizeof(double));
-    c->q = calloc(4 * (size_t)nc, sizeof(double)); c->L = calloc(3 * (size_t)nc, sizeof(double));
-    c->F = calloc(3 * (size_t)nc, sizeof(double)); c->T = calloc(3 * (size_t)nc, sizeof(double));
-    c->ids = calloc((size_t)nc * COLLOID_P, sizeof(uint32_t));
+        for (int d = 0; d < 3; d++) c->body[k][d] = p->d * OCT[k][d];
+    const size_t nc = (size_t)c->ncol;
+    c->R = calloc(3 * nc, sizeof(double)); c->V = calloc(3 * nc, sizeof(double));
+    c->q = calloc(4 * nc, sizeof(double)); c->L = calloc(3 * nc, sizeof(double));
+    c->F = calloc(3 * nc, sizeof(double)); c->T = calloc(3 * nc, sizeof(double));
+    c->ids = calloc(nc * COLLOID_P, sizeof(uint32_t));
     if (!c->R || !c->V || !c->q || !c->L || !c->F || !c->T || !c->ids) {
         colloid_free(c);
-        return scene_fail(sc, g, "out of memory");
+        return NULL;
     }
-    *out = c;
-    return 0;
+    return c;
 }
 
 void colloid_free(Colloids *c)
@@ -76,6 +44,19 @@ void colloid_free(Colloids *c)
     free(c->R); free(c->V); free(c->q); free(c->L); free(c->F); free(c->T); free(c->ids); free(c->index);
     series_free(&c->ext2);
     free(c);
+}
+
+void colloid_io(Io *io, Colloids *c)
+{
+    const size_t nc = (size_t)c->ncol;
+    io_array(io, c->R, 3 * nc, sizeof(double), "colloid body centres");
+    io_array(io, c->V, 3 * nc, sizeof(double), "colloid body velocities");
+    io_array(io, c->q, 4 * nc, sizeof(double), "colloid body quaternions");
+    io_array(io, c->L, 3 * nc, sizeof(double), "colloid body angular momenta");
+    io_array(io, c->F, 3 * nc, sizeof(double), "colloid body forces");
+    io_array(io, c->T, 3 * nc, sizeof(double), "colloid body torques");
+    io_series(io, &c->ext2, "colloid spring extension");
+    io_bytes(io, &c->nsteps, sizeof c->nsteps, "colloid steps");
 }
 
 void colloid_site(const Colloids *c, int b, int k, const Box *box, double out[3])
@@ -92,7 +73,7 @@ int colloid_place(Colloids *c, System *s)
     c->index = calloc((size_t)s->n + 1, sizeof(int));
     c->nparticles = s->n;
     if (!c->index) return -1;
-    const int k = c->per_axis;
+    const int k = c->p.per_axis;
     for (int b = 0; b < c->ncol; b++) {
         const int ix = b % k, iy = (b / k) % k, iz = b / (k * k);
         const int ia[3] = {ix, iy, iz};
@@ -101,12 +82,12 @@ int colloid_place(Colloids *c, System *s)
         /* under shear the body starts with the flow: the streaming velocity at
          * its centre and the flow's spin, omega_z = -rate / 2 */
         c->V[3 * b] = box_stream_vx(&s->box, c->R[3 * b + 1]);
-        c->L[3 * b + 2] = -0.5 * s->box.shear_rate * c->inertia;
+        c->L[3 * b + 2] = -0.5 * s->box.shear_rate * c->p.inertia;
     }
     /* the particles of the colloid type, in array order at set-up, fill the sites */
     int j = 0;
     for (int i = 0; i < s->n; i++) {
-        if (s->type[i] != c->type) continue;
+        if (s->type[i] != c->p.type) continue;
         const int b = j / COLLOID_P, site = j % COLLOID_P;
         c->ids[j] = s->id[i];
         colloid_site(c, b, site, &s->box, s->x + 3 * i);   /* velocities (with the flow) are drawn after */
@@ -121,13 +102,13 @@ void colloid_body_advance(Colloids *c, int b, const double F[3], const double T[
     /* Newton: symplectic Euler for the centre */
     (void)box;
     for (int d = 0; d < 3; d++) {
-        V[d] += dt * F[d] / c->mass;
+        V[d] += dt * F[d] / c->p.mass;
         R[d] += dt * V[d];   /* wrapped by colloid_step, with the offset of the time R belongs to */
     }
     /* Euler, isotropic inertia: dL/dt = T, omega = L / I; the orientation turns
      * by the exact rotation of angle |omega| dt about omega */
     double w[3], wn = 0.0;
-    for (int d = 0; d < 3; d++) { L[d] += dt * T[d]; w[d] = L[d] / c->inertia; wn += w[d] * w[d]; }
+    for (int d = 0; d < 3; d++) { L[d] += dt * T[d]; w[d] = L[d] / c->p.inertia; wn += w[d] * w[d]; }
     wn = sqrt(wn);
     if (wn * dt > 1e-300) {
         const double h = 0.5 * wn * dt, sh = sin(h) / wn;
@@ -166,14 +147,14 @@ void colloid_step(Colloids *c, System *s, PairVirial *pv)
             for (int d = 0; d < 3; d++) dr[d] = s->x[3 * i + d] - (R[d] + arm[d]);
             box_min_image(&s->box, dr, NULL);
             for (int d = 0; d < 3; d++) {
-                fs[d] = -c->H * dr[d];               /* eq. 30: F_S = -H (r_i - r_bar_i) */
+                fs[d] = -c->p.H * dr[d];               /* eq. 30: F_S = -H (r_i - r_bar_i) */
                 s->f[3 * i + d] += fs[d];
                 F[d] -= fs[d];                       /* reaction on the reference body */
             }
             /* torque of the reaction about the centre: arm x (H dr) */
-            T[0] += c->H * (arm[1] * dr[2] - arm[2] * dr[1]);
-            T[1] += c->H * (arm[2] * dr[0] - arm[0] * dr[2]);
-            T[2] += c->H * (arm[0] * dr[1] - arm[1] * dr[0]);
+            T[0] += c->p.H * (arm[1] * dr[2] - arm[2] * dr[1]);
+            T[1] += c->p.H * (arm[2] * dr[0] - arm[0] * dr[2]);
+            T[2] += c->p.H * (arm[0] * dr[1] - arm[1] * dr[0]);
             ext2 += dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2];
             if (!pv) continue;
             /* Spring virial. The body carries its momentum at its centre R, so the
@@ -187,7 +168,7 @@ void colloid_step(Colloids *c, System *s, PairVirial *pv)
             for (int a = 0; a < 3; a++)
                 for (int e = 0; e < 3; e++) t[3 * a + e] = (dr[a] + arm[a]) * fs[e];
             for (int q = 0; q < 9; q++) pv->W[PART_CONSERVATIVE][q / 3][q % 3] += t[q];
-            pv->epot += 0.5 * c->H * (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
+            pv->epot += 0.5 * c->p.H * (dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2]);
             if (pv->nbins > 0)
                 ik_distribute(pv->Wbin + (size_t)PART_CONSERVATIVE * 9 * pv->nbins, pv->nbins, pv->bin_axis,
                               s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], dr[pv->bin_axis] + arm[pv->bin_axis], t);
@@ -204,7 +185,7 @@ void colloid_kinetic(const Colloids *c, const Box *box, double K[9])
         const double *V = c->V + 3 * b;
         const double u[3] = {V[0] - box_stream_vx(box, c->R[3 * b + 1]), V[1], V[2]};
         for (int a = 0; a < 3; a++)
-            for (int e = 0; e < 3; e++) K[3 * a + e] += c->mass * u[a] * u[e];
+            for (int e = 0; e < 3; e++) K[3 * a + e] += c->p.mass * u[a] * u[e];
     }
 }
 
@@ -215,5 +196,5 @@ void colloid_write(const Colloids *c, const System *s, FILE *summary, int nblock
     fprintf(summary, "colloids\t%d\t0\n", c->ncol);
     fprintf(summary, "colloid_spring_extension_rms\t%.10g\t%.4g\n", sqrt(v), v > 0 ? 0.5 * se / sqrt(v) : NAN);
     /* a particle on a spring to a fixed site: <|r - r_bar|^2> = 3 kBT / H */
-    fprintf(summary, "colloid_spring_extension_rms_equipartition\t%.10g\t0\n", sqrt(3.0 * s->kBT / c->H));
+    fprintf(summary, "colloid_spring_extension_rms_equipartition\t%.10g\t0\n", sqrt(3.0 * s->kBT / c->p.H));
 }

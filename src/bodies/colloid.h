@@ -10,19 +10,25 @@
 #include <stdio.h>
 #include <stdint.h>
 #include "system.h"
-#include "scene.h"
 #include "blockavg.h"
 #include "forces.h"
+#include "io.h"
 
 enum { COLLOID_P = 6 };
 
-typedef struct Colloids {
+/* colloids = { type; per_axis; H; site_distance; mass; inertia; } of the
+ * scene, read and checked by the input layer (setup_bodies.c). */
+typedef struct {
     int type;                 /* particle type of the constituent particles */
     int per_axis;             /* k: k^3 colloids on a cubic lattice */
-    int ncol;
     double H;                 /* spring stiffness, eq. 30 */
     double d;                 /* distance of the reference sites from the body centre */
     double mass, inertia;     /* rigid reference body */
+} ColloidParams;
+
+typedef struct Colloids {
+    ColloidParams p;
+    int ncol;                 /* per_axis^3 */
     double body[COLLOID_P][3];   /* site offsets in the body frame */
     double *R, *V, *q, *L;    /* per body: centre, velocity, unit quaternion (w,x,y,z), angular momentum */
     double *F, *T;            /* per body: spring reaction force and torque of the step */
@@ -34,12 +40,13 @@ typedef struct Colloids {
     long long nsteps;
 } Colloids;
 
-/* colloids = { type = "colloid"; per_axis = 3; H = 400.0; site_distance = 0.5;
- * mass = 6.0; inertia = 1.0; } with counts[t] the particle count of each type
- * (the colloid type must have 6 per_axis^3). NULL *out when the group is absent. */
-int  colloid_configure(Scene *sc, const config_setting_t *g, const System *s, const long long *counts,
-                       Colloids **out);
+/* per_axis^3 bodies of the parameters p (malloc'd), placed by colloid_place;
+ * NULL when out of memory. */
+Colloids *colloid_new(const ColloidParams *p);
 void colloid_free(Colloids *c);
+/* The rigid bodies (centre, velocity, quaternion, angular momentum, last
+ * reactions) and the extension record, written or read for the checkpoint. */
+void colloid_io(Io *io, Colloids *c);
 /* Bodies at the lattice sites (identity orientation, at rest); constituent
  * particles on their reference sites. */
 int  colloid_place(Colloids *c, System *s);

@@ -1,4 +1,6 @@
-/* checkpoint.c - save and restore the state of a run (see checkpoint.h). */
+/* checkpoint.c - save and restore the state of a run (see checkpoint.h).
+ * The modules write and read their own state (measure_io, field_io, tcaf_io,
+ * colloid_io, bonds_io; io.h); io_state fixes the order of the format. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -6,6 +8,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include "checkpoint.h"
+#include "io.h"
 #include "bonds.h"
 #include "colloid.h"
 
@@ -34,59 +37,10 @@ uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
     return h;
 }
 
-/* One traversal of the state, writing or reading: the two cannot drift apart. */
-typedef struct {
-    int reading;
-    FILE *out;
-    const unsigned char *in;
-    size_t len, pos;
-    int bad;
-    const char *what;         /* first field that did not fit */
-} Io;
-
-static void io_bytes(Io *io, void *p, size_t len, const char *what)
-{
-    if (io->bad || len == 0) return;
-    if (!io->reading) {
-        if (fwrite(p, 1, len, io->out) != len) { io->bad = 1; io->what = what; }
-        return;
-    }
-    if (len > io->len - io->pos) { io->bad = 1; io->what = what; return; }
-    memcpy(p, io->in + io->pos, len);
-    io->pos += len;
-}
-
-/* An array whose length the scene fixes: the stored length must match. */
-static void io_array(Io *io, void *p, size_t count, size_t size, const char *what)
-{
-    uint64_t c = count;
-    io_bytes(io, &c, sizeof c, what);
-    if (io->bad) return;
-    if (c != count) { io->bad = 1; io->what = what; return; }
-    io_bytes(io, p, count * size, what);
-}
-
-static void io_series(Io *io, Series *s, const char *what)
-{
-    uint64_t n = s->n;
-    io_bytes(io, &n, sizeof n, what);
-    if (io->bad) return;
-    if (io->reading) {
-        if (n > (io->len - io->pos) / sizeof(double)) { io->bad = 1; io->what = what; return; }
-        series_free(s);
-        if (n > 0) {
-            s->v = malloc((size_t)n * sizeof(double));
-            if (!s->v) { io->bad = 1; io->what = what; return; }
-            s->n = s->cap = (size_t)n;
-        }
-    }
-    io_bytes(io, s->v, (size_t)n * sizeof(double), what);
-}
-
-static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, CheckpointExtra *x)
+/* step, time, the Lees-Edwards offset and the particles in their current order */
+static void system_io(Io *io, System *s)
 {
     const size_t n = (size_t)s->n;
-    /* system */
     io_bytes(io, &s->step, sizeof s->step, "step");
     io_bytes(io, &s->time, sizeof s->time, "time");
     io_bytes(io, &s->box.le_offset, sizeof s->box.le_offset, "Lees-Edwards offset");
@@ -97,7 +51,13 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     io_array(io, s->img, 3 * n, sizeof(int32_t), "img");
     io_array(io, s->id, n, sizeof(uint32_t), "id");
     io_array(io, s->type, n, sizeof(uint8_t), "type");
-    /* neighbour list as built */
+}
+
+/* The pair list as built: a read one is checked (a checksum does not vouch
+ * for indices that the force loop follows). */
+static void neighbor_io(Io *io, NeighborList *nl, int np)
+{
+    const size_t n = (size_t)np;
     int64_t builds = nl->builds;
     io_bytes(io, &builds, sizeof builds, "neighbor builds");
     nl->builds = (long)builds;
@@ -110,69 +70,27 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     if (io->bad) return;
     if (io->reading) {
         if (nl->start[0] != 0 || npairs != (uint64_t)nl->start[n] || npairs > (io->len - io->pos) / sizeof(int)) {
-            io->bad = 1; io->what = "neighbor pairs"; return;
+            io_fail(io, "neighbor pairs");
+            return;
         }
         if (npairs + 1 > nl->cap) {
             int *p = realloc(nl->nbr, ((size_t)npairs + 1) * sizeof(int));
-            if (!p) { io->bad = 1; io->what = "neighbor pairs"; return; }
+            if (!p) { io_fail(io, "neighbor pairs"); return; }
             nl->nbr = p;
             nl->cap = (size_t)npairs + 1;
         }
     }
     io_bytes(io, nl->nbr, (size_t)npairs * sizeof(int), "neighbor list");
-    if (io->reading && !io->bad)
-        for (size_t i = 0; i < n; i++)
-            if (nl->start[i + 1] < nl->start[i]) { io->bad = 1; io->what = "neighbor start"; return; }
-    if (io->reading && !io->bad)
-        for (uint64_t k = 0; k < npairs; k++)
-            if (nl->nbr[k] < 0 || nl->nbr[k] >= s->n) { io->bad = 1; io->what = "neighbor list"; return; }
-    /* measurements */
-    io_series(io, &m->temperature, "temperature");
-    io_series(io, &m->pressure, "pressure");
-    io_series(io, &m->epot, "epot");
-    for (int p = 0; p < STRESS_PARTS; p++)
-        for (int k = 0; k < 9; k++) io_series(io, &m->P[p][k], "pressure tensor");
-    for (int t = 0; t < DPD_MAX_TYPES; t++)
-        for (int d = 0; d < 3; d++) io_series(io, &m->frozen_force[t][d], "frozen force");
-    if (m->prof_on) {
-        io_array(io, m->prof, (size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double), "profile");
-        io_array(io, m->prof_samples, (size_t)m->nblocks, sizeof(long long), "profile samples");
-    }
-    if (m->rdf_on) {
-        io_array(io, m->rdf_hist, (size_t)m->nblocks * m->rdf_bins, sizeof(double), "rdf");
-        io_array(io, m->rdf_samples, (size_t)m->nblocks, sizeof(long long), "rdf samples");
-    }
-    if (m->msd_on) {
-        io_array(io, m->msd_origin_pos, (size_t)m->msd_norig * 3 * n, sizeof(double), "msd origins");
-        io_array(io, m->msd_origin_step, (size_t)m->msd_norig, sizeof(long long), "msd origin steps");
-        io_array(io, m->msd_curve, (size_t)m->msd_norig * m->msd_groups * m->msd_nlags, sizeof(double), "msd curves");
-        io_series(io, &m->msd_done, "msd done");
-        io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
-    }
-    if (m->prof_on && m->prof_tsum)
-        io_array(io, m->prof_tsum, (size_t)m->nblocks, sizeof(double), "profile times");
-    if (m->com_on) {
-        for (int d = 0; d < 3; d++) {
-            io_series(io, &m->com_v[d], "centre-of-mass velocity");
-            io_series(io, &m->com_r[d], "centre-of-mass position");
-        }
-        io_bytes(io, m->com_r0, sizeof m->com_r0, "centre-of-mass start");
-    }
-    FieldMeasure *fm = &m->field;
-    for (int t = 0; t < DPD_MAX_TYPES; t++)
-        for (int d = 0; d < 3; d++) {
-            io_series(io, &fm->mean_v[t][d], "mean velocity");
-            io_series(io, &fm->torque[t][d], "body torque");
-        }
-    if (fm->around_on) {
-        io_array(io, fm->around_hist, (size_t)fm->nblocks * fm->around_bins, sizeof(double), "around");
-        io_array(io, fm->around_samples, (size_t)fm->nblocks, sizeof(long long), "around samples");
-    }
-    if (fm->map_on) {
-        io_array(io, fm->map_hist, 3 * (size_t)fm->map_bins[0] * fm->map_bins[1], sizeof(double), "density map");
-        io_bytes(io, &fm->map_samples, sizeof fm->map_samples, "density map samples");
-    }
-    /* run loop */
+    if (!io->reading || io->bad) return;
+    for (size_t i = 0; i < n; i++)
+        if (nl->start[i + 1] < nl->start[i]) { io_fail(io, "neighbor start"); return; }
+    for (uint64_t k = 0; k < npairs; k++)
+        if (nl->nbr[k] < 0 || nl->nbr[k] >= np) { io_fail(io, "neighbor list"); return; }
+}
+
+/* timers, CPU and wall time so far, the m = 0 solver's statistics */
+static void run_loop_io(Io *io, CheckpointExtra *x)
+{
     io_array(io, x->timers, (size_t)x->ntimers, sizeof(double), "timers");
     io_bytes(io, &x->cpu_used, sizeof x->cpu_used, "cpu time");
     io_bytes(io, &x->wall_used, sizeof x->wall_used, "wall time");
@@ -180,69 +98,51 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     io_bytes(io, &x->steps_done, sizeof x->steps_done, "steps done");
     for (int k = 0; k < x->nsolver; k++) io_series(io, x->solver[k], "solver statistics");
     io_bytes(io, x->unconverged, sizeof *x->unconverged, "solver unconverged");
-    if (x->bonds) {   /* 2D spring colloids: centre trajectory and histograms */
-        Bonds *b = x->bonds;
-        io_series(io, &b->traj, "colloid centres");
-        io_series(io, &b->ext2, "colloid spring extension");
-        io_series(io, &b->spring_wyx, "colloid spring stress");
-        io_bytes(io, &b->ext_max, sizeof b->ext_max, "colloid largest extension");
-        if (b->around_on) {
-            io_array(io, b->around_hist, (size_t)b->nblocks * b->around_bins, sizeof(double), "colloid around");
-            io_array(io, b->around_samples, (size_t)b->nblocks, sizeof(long long), "colloid around samples");
-        }
-        if (b->rdf_on) {
-            io_array(io, b->rdf_hist, (size_t)b->nblocks * b->rdf_bins, sizeof(double), "colloid rdf");
-            io_array(io, b->rdf_samples, (size_t)b->nblocks, sizeof(long long), "colloid rdf samples");
-        }
-    }
+}
+
+/* spins, their Groot-Warren prediction, the torques of the step */
+static void rotation_io(Io *io, System *s)
+{
+    const size_t n = (size_t)s->n;
+    io_array(io, s->omega, 3 * n, sizeof(double), "angular velocity");
+    io_array(io, s->omega_pred, 3 * n, sizeof(double), "predicted angular velocity");
+    io_array(io, s->torque, 3 * n, sizeof(double), "torque");
+}
+
+/* the trajectory segment files complete at this checkpoint */
+static void trajectory_io(Io *io, CheckpointExtra *x)
+{
+    int32_t seg = x->trajectory_segments;
+    int64_t frames = x->trajectory_frames;
+    io_bytes(io, &seg, sizeof seg, "trajectory segments");
+    io_bytes(io, &frames, sizeof frames, "trajectory frames");
+    if (io->reading && !io->bad && (seg < 0 || frames < 0)) io_fail(io, "trajectory segments");
+    x->trajectory_segments = seg;
+    x->trajectory_frames = frames;
+}
+
+/* The whole state in the order of the format: version 1, then what versions
+ * 2 and 4 appended (each part only for a scene that has it). */
+static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, CheckpointExtra *x)
+{
+    system_io(io, s);
+    neighbor_io(io, nl, s->n);
+    measure_io(io, m);
+    run_loop_io(io, x);
+    if (x->bonds) bonds_io(io, x->bonds);   /* 2D spring colloids */
     /* version 2 from here */
-    if (s->rotation) {   /* spins, their Groot-Warren prediction, the torques of the step */
-        io_array(io, s->omega, 3 * n, sizeof(double), "angular velocity");
-        io_array(io, s->omega_pred, 3 * n, sizeof(double), "predicted angular velocity");
-        io_array(io, s->torque, 3 * n, sizeof(double), "torque");
-        io_series(io, &m->rot_temperature, "rotational temperature");
-        for (int t = 0; t < DPD_MAX_TYPES; t++)
-            for (int d = 0; d < 3; d++) {
-                io_series(io, &m->frozen_torque[t][d], "frozen torque");
-                io_series(io, &m->frozen_drag[t][d], "frozen drag");
-                io_series(io, &m->frozen_torque_random[t][d], "frozen random torque");
-            }
+    if (s->rotation) {
+        rotation_io(io, s);
+        measure_rotation_io(io, m);
     }
-    if (x->colloids) {   /* 3D spring colloids: the rigid reference bodies */
-        Colloids *c = x->colloids;
-        const size_t nc = (size_t)c->ncol;
-        io_array(io, c->R, 3 * nc, sizeof(double), "colloid body centres");
-        io_array(io, c->V, 3 * nc, sizeof(double), "colloid body velocities");
-        io_array(io, c->q, 4 * nc, sizeof(double), "colloid body quaternions");
-        io_array(io, c->L, 3 * nc, sizeof(double), "colloid body angular momenta");
-        io_array(io, c->F, 3 * nc, sizeof(double), "colloid body forces");
-        io_array(io, c->T, 3 * nc, sizeof(double), "colloid body torques");
-        io_series(io, &c->ext2, "colloid spring extension");
-        io_bytes(io, &c->nsteps, sizeof c->nsteps, "colloid steps");
-    }
-    if (m->tcaf.on) {   /* time origins in flight, their running sums, the block sums */
-        Tcaf *t = &m->tcaf;
-        io_array(io, t->origin, (size_t)t->nslots * t->nvec * 3, sizeof(double complex), "tcaf origins");
-        io_array(io, t->origin_step, (size_t)t->nslots, sizeof(long long), "tcaf origin steps");
-        io_array(io, t->origin_index, (size_t)t->nslots, sizeof(long long), "tcaf origin indices");
-        io_array(io, t->curve, (size_t)t->nslots * t->nshell * t->nlags, sizeof(double), "tcaf curves");
-        io_array(io, t->acc, (size_t)t->nblocks * t->nshell * t->nlags, sizeof(double), "tcaf blocks");
-        io_array(io, t->acc_n, (size_t)t->nblocks, sizeof(long long), "tcaf block origins");
-        io_bytes(io, &t->nstarted, sizeof t->nstarted, "tcaf origins started");
-        io_bytes(io, &t->ndone, sizeof t->ndone, "tcaf origins done");
-        int32_t threads = x->threads;
+    if (x->colloids) colloid_io(io, x->colloids);   /* 3D spring colloids' rigid bodies */
+    if (m->tcaf.on) {
+        tcaf_io(io, &m->tcaf);
+        int32_t threads = x->threads;   /* the TCAF current is summed per thread */
         io_bytes(io, &threads, sizeof threads, "threads");
         x->threads = threads;
     }
-    if (x->trajectory) {   /* the trajectory segment files complete at this checkpoint */
-        int32_t seg = x->trajectory_segments;
-        int64_t frames = x->trajectory_frames;
-        io_bytes(io, &seg, sizeof seg, "trajectory segments");
-        io_bytes(io, &frames, sizeof frames, "trajectory frames");
-        if (io->reading && !io->bad && (seg < 0 || frames < 0)) { io->bad = 1; io->what = "trajectory segments"; }
-        x->trajectory_segments = seg;
-        x->trajectory_frames = frames;
-    }
+    if (x->trajectory) trajectory_io(io, x);
     /* version 4 from here */
     if (x->solver_cpu) io_series(io, x->solver_cpu, "solver cpu time");
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <math.h>
 #include "setup.h"
+#include "setup_parts.h"
 #include "random.h"
 #include "overdamped.h"
 #include "rotation.h"
@@ -21,7 +22,7 @@ typedef struct {
     double *at;               /* explicit positions (3 per particle), or NULL */
 } TypeInit;
 
-static int type_index(const System *s, const char *name)
+int setup_type_index(const System *s, const char *name)
 {
     for (int t = 0; t < s->ntypes; t++)
         if (strcmp(s->types[t].name, name) == 0) return t;
@@ -95,7 +96,7 @@ static int read_types(Scene *sc, System *s, TypeInit *ti)
         if (scene_string(sc, g, "name", &name, NULL, NULL, 1) < 0) return -1;
         if (strlen(name) == 0 || strlen(name) >= sizeof pt->name)
             return scene_fail(sc, g, "type name must have 1 to %zu characters", sizeof pt->name - 1);
-        if (type_index(s, name) >= 0 && type_index(s, name) < t)
+        if (setup_type_index(s, name) >= 0 && setup_type_index(s, name) < t)
             return scene_fail(sc, g, "type name \"%s\" used twice", name);
         snprintf(pt->name, sizeof pt->name, "%s", name);
         if (scene_double(sc, g, "mass", &pt->mass, 1.0, 1e-12, 1e12, 0) < 0) return -1;
@@ -171,7 +172,7 @@ static int read_pairs(Scene *sc, System *s)
         int t2[2];
         for (int e = 0; e < 2; e++) {
             const char *nm = config_setting_get_string_elem(tl, e);
-            t2[e] = type_index(s, nm);
+            t2[e] = setup_type_index(s, nm);
             if (t2[e] < 0) return scene_fail(sc, tl, "unknown type \"%s\"", nm);
         }
         if (seen[t2[0]][t2[1]]) return scene_fail(sc, g, "pair (%s, %s) defined twice",
@@ -281,16 +282,16 @@ static int read_overdamped(Scene *sc, System *s, RunConfig *rc)
     if (!g) return 0;
     const char *name;
     if (scene_string(sc, g, "solver", &name, "pcg", SOLVERS, 0) < 0) return -1;
-    for (int k = 0; SOLVERS[k]; k++) if (!strcmp(SOLVERS[k], name)) rc->od_solver = k;
+    for (int k = 0; SOLVERS[k]; k++) if (!strcmp(SOLVERS[k], name)) rc->od.solver = (OdSolver)k;
     if (scene_string(sc, g, "stop", &name, "change", STOPS, 0) < 0) return -1;
-    rc->od_stop = strcmp(name, "change") ? OD_STOP_RESIDUAL : OD_STOP_CHANGE;
-    if (scene_double(sc, g, "tolerance", &rc->od_tol, 1e-7, 1e-15, 1e-1, 0) < 0) return -1;
+    rc->od.stop = strcmp(name, "change") ? OD_STOP_RESIDUAL : OD_STOP_CHANGE;
+    if (scene_double(sc, g, "tolerance", &rc->od.tol, 1e-7, 1e-15, 1e-1, 0) < 0) return -1;
     long long v;
     if (scene_int(sc, g, "max_iterations", &v, 100000, 1, 100000000, 0) < 0) return -1;
-    rc->od_max_iter = (int)v;
-    if (scene_bool(sc, g, "allow_unconverged", &rc->od_allow_unconverged, 0) < 0) return -1;
-    if (scene_double(sc, g, "reference_tolerance", &rc->od_reference_tol, 0.0, 0.0, 1e-3, 0) < 0) return -1;
-    if (scene_bool(sc, g, "reference_own_fixed_point", &rc->od_reference_own, 0) < 0) return -1;
+    rc->od.max_iter = (int)v;
+    if (scene_bool(sc, g, "allow_unconverged", &rc->od.allow_unconverged, 0) < 0) return -1;
+    if (scene_double(sc, g, "reference_tolerance", &rc->od.reference_tol, 0.0, 0.0, 1e-3, 0) < 0) return -1;
+    if (scene_bool(sc, g, "reference_own_fixed_point", &rc->od.reference_own, 0) < 0) return -1;
     for (int t = 0; t < s->ntypes; t++)
         if (!s->types[t].frozen) s->types[t].mass = 0.0;   /* m = 0: no kinetic terms */
     return 0;
@@ -315,87 +316,6 @@ static int read_confine(Scene *sc, System *s, RunConfig *rc)
     if (rc->confine_hi <= rc->confine_lo) return scene_fail(sc, g, "need lo < hi (lo %g, hi %g)", rc->confine_lo, rc->confine_hi);
     if (rc->confine_axis == 1 && s->box.shear_rate != 0.0)
         return scene_fail(sc, g, "walls across y cannot be combined with Lees-Edwards shear_rate");
-    return 0;
-}
-
-static int read_measure(Scene *sc, System *s, Measure *m, long long steps)
-{
-    memset(m, 0, sizeof *m);
-    config_setting_t *g = scene_child(sc, NULL, "measure", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    long long v;
-    m->every = 10;     /* defaults when the scene has no measure group */
-    m->nblocks = 20;
-    if (g) {
-        if (scene_int(sc, g, "every", &v, 10, 1, 1000000, 0) < 0) return -1;
-        m->every = (int)v;
-        if (scene_int(sc, g, "blocks", &v, 20, 2, MAX_BLOCKS, 0) < 0) return -1;
-        m->nblocks = (int)v;
-    }
-    m->nsamples_expected = steps / m->every + 1;
-    if (field_read(sc, g, s, &m->field)) return -1;
-    m->prod_steps = steps;
-    if (!g) return 0;
-    config_setting_t *p = scene_child(sc, g, "profile", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (p) {
-        const char *ax;
-        m->prof_on = 1;
-        if (scene_string(sc, p, "axis", &ax, "y", AXES, 0) < 0) return -1;
-        m->prof_axis = ax[0] - 'x';
-        if (m->prof_axis >= s->box.dim) return scene_fail(sc, p, "axis \"%s\" does not exist in %dD", ax, s->box.dim);
-        if (scene_int(sc, p, "bins", &v, 20, 1, 100000, 0) < 0) return -1;
-        m->prof_bins = (int)v;
-        if (scene_bool(sc, p, "per_block", &m->prof_per_block, 0) < 0) return -1;
-    }
-    if (scene_bool(sc, g, "com", &m->com_on, 0) < 0) return -1;
-    config_setting_t *r = scene_child(sc, g, "rdf", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (r) {
-        m->rdf_on = 1;
-        if (scene_double(sc, r, "rmax", &m->rdf_rmax, s->rc_max, 1e-6, s->rc_max, 0) < 0) return -1;
-        if (scene_int(sc, r, "bins", &v, 100, 1, 100000, 0) < 0) return -1;
-        m->rdf_bins = (int)v;
-        if (scene_int(sc, r, "every", &v, m->every, 1, 1000000, 0) < 0) return -1;
-        m->rdf_every = (int)v;
-        m->rdf_types[0] = m->rdf_types[1] = -1;
-        config_setting_t *tl = scene_child(sc, r, "types", CONFIG_TYPE_ARRAY);
-        if (sc->failed) return -1;
-        if (tl) {
-            if (config_setting_length(tl) != 2) return scene_fail(sc, tl, "expected two type names");
-            for (int e = 0; e < 2; e++) {
-                const char *nm = config_setting_get_string_elem(tl, e);
-                m->rdf_types[e] = nm ? type_index(s, nm) : -1;
-                if (m->rdf_types[e] < 0) return scene_fail(sc, tl, "unknown type \"%s\"", nm ? nm : "(not a string)");
-            }
-        }
-    }
-    config_setting_t *d = scene_child(sc, g, "msd", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (d) {
-        m->msd_on = 1;
-        if (scene_int(sc, d, "every", &v, m->every, 1, 1000000, 0) < 0) return -1;
-        m->msd_every = (int)v;
-        if (scene_int(sc, d, "window", &v, 100 * m->msd_every, 1, 100000000, 1) < 0) return -1;
-        m->msd_window = (int)v;
-        if (scene_int(sc, d, "origin_every", &v, m->msd_window / 10 > 0 ? m->msd_window / 10 : 1, 1, 100000000, 0) < 0) return -1;
-        m->msd_origin_every = (int)v;
-        if (m->msd_window % m->msd_every || m->msd_origin_every % m->msd_every)
-            return scene_fail(sc, d, "window (%d) and origin_every (%d) must be multiples of every (%d)",
-                              m->msd_window, m->msd_origin_every, m->msd_every);
-        if (m->msd_window / m->msd_origin_every + 1 > 1000)
-            return scene_fail(sc, d, "window / origin_every = %d origins in flight; allowed up to 999",
-                              m->msd_window / m->msd_origin_every);
-        if (m->msd_window > steps)
-            return scene_fail(sc, d, "window %d is longer than the run (%lld steps)", m->msd_window, steps);
-        const char *tn;
-        if (scene_string(sc, d, "type", &tn, NULL, NULL, 0) < 0) return -1;
-        m->msd_type = tn ? type_index(s, tn) : -1;
-        if (tn && m->msd_type < 0) return scene_fail(sc, d, "unknown type \"%s\"", tn);
-    }
-    config_setting_t *tc = scene_child(sc, g, "tcaf", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (tc && tcaf_configure(sc, tc, s, &m->tcaf, steps, m->nblocks)) return -1;
     return 0;
 }
 
@@ -435,6 +355,36 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     return r;
 }
 
+/* The bare build (-DDPD_BARE, src/modules.h) has no optional modules: a
+ * scene that switches one on is refused. */
+static int refuse_in_bare_build(Scene *sc, const System *s, const Measure *m, const RunConfig *rc)
+{
+#ifdef DPD_BARE
+    const char *mod = NULL;
+    int frozen_type = 0;
+    for (int t = 0; t < s->ntypes; t++) frozen_type |= s->types[t].frozen;
+    if (s->box.shear_rate != 0.0) mod = "shear_rate (Lees-Edwards)";
+    else if (frozen_type) mod = "frozen particles";
+    else if (s->has_body_force) mod = "a body force";
+    else if (s->has_held_velocity) mod = "hold_mean_velocity";
+    else if (s->rotation) mod = "rotation";
+    else if (rc->overdamped) mod = "overdamped";
+    else if (rc->confine_axis >= 0) mod = "confining walls";
+    else if (rc->colloids) mod = "colloids";
+    else if (rc->bonds) mod = "colloids2d";
+    else if (m->tcaf_on) mod = "measure.tcaf";
+    else if (m->msd_on) mod = "measure.msd";
+    else if (m->rdf_on) mod = "measure.rdf";
+    else if (m->com_on) mod = "measure.com";
+    else if (m->prof_on) mod = "measure.profile";
+    if (mod) return scene_fail(sc, NULL, "this is the bare build (-DDPD_BARE), without optional modules, "
+                               "and the scene switches on %s; run it with bin/dpd", mod);
+#else
+    (void)sc; (void)s; (void)m; (void)rc;
+#endif
+    return 0;
+}
+
 /* The rest of the scene, once the types are known. */
 static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, TypeInit *ti)
 {
@@ -465,21 +415,21 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     }
     if (read_overdamped(sc, s, rc)) return -1;
     if (read_confine(sc, s, rc)) return -1;
-    if (read_measure(sc, s, m, rc->steps)) return -1;
+    if (setup_measure(sc, s, m, rc->steps)) return -1;
     config_setting_t *cg = scene_child(sc, NULL, "colloids", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
     if (cg) {
         long long counts[DPD_MAX_TYPES];
         for (int t = 0; t < s->ntypes; t++) counts[t] = ti[t].count;
         if (rc->overdamped) return scene_fail(sc, cg, "colloids need massive particles (no 'overdamped' group)");
-        if (colloid_configure(sc, cg, s, counts, &rc->colloids)) return -1;
+        if (setup_colloids(sc, cg, s, counts, &rc->colloids)) return -1;
     }
     config_setting_t *bg = scene_child(sc, NULL, "colloids2d", CONFIG_TYPE_GROUP);
     if (sc->failed) return -1;
     if (bg) {
         long long counts[DPD_MAX_TYPES];
         for (int t = 0; t < s->ntypes; t++) counts[t] = ti[t].count;
-        if (bonds_configure(sc, bg, s, counts, rc->steps, m->nblocks, &rc->bonds)) return -1;
+        if (setup_bonds(sc, bg, s, counts, rc->steps, m->nblocks, &rc->bonds)) return -1;
     }
     if (scene_check_unknown(sc)) return -1;
     if (s->rotation && rc->overdamped)
@@ -488,29 +438,7 @@ static int setup_particles(Scene *sc, System *s, Measure *m, RunConfig *rc, Type
     if (s->has_held_velocity && rc->overdamped)
         return scene_fail(sc, scene_child(sc, NULL, "overdamped", CONFIG_TYPE_GROUP),
                           "a type's hold_mean_velocity needs massive particles: no 'overdamped' group with it");
-#ifdef DPD_BARE
-    {   /* the bare build has no optional modules (src/modules.h) */
-        const char *mod = NULL;
-        int frozen_type = 0;
-        for (int t = 0; t < s->ntypes; t++) frozen_type |= s->types[t].frozen;
-        if (s->box.shear_rate != 0.0) mod = "shear_rate (Lees-Edwards)";
-        else if (frozen_type) mod = "frozen particles";
-        else if (s->has_body_force) mod = "a body force";
-        else if (s->has_held_velocity) mod = "hold_mean_velocity";
-        else if (s->rotation) mod = "rotation";
-        else if (rc->overdamped) mod = "overdamped";
-        else if (rc->confine_axis >= 0) mod = "confining walls";
-        else if (rc->colloids) mod = "colloids";
-        else if (rc->bonds) mod = "colloids2d";
-        else if (m->tcaf.on) mod = "measure.tcaf";
-        else if (m->msd_on) mod = "measure.msd";
-        else if (m->rdf_on) mod = "measure.rdf";
-        else if (m->com_on) mod = "measure.com";
-        else if (m->prof_on) mod = "measure.profile";
-        if (mod) return scene_fail(sc, NULL, "this is the bare build (-DDPD_BARE), without optional modules, "
-                                   "and the scene switches on %s; run it with bin/dpd", mod);
-    }
-#endif
+    if (refuse_in_bare_build(sc, s, m, rc)) return -1;
     if (setup_validate_only) return 0;
     if (system_alloc(s, (int)total)) return scene_fail(sc, NULL, "out of memory for %lld particles", total);
     s->box.le_offset = 0.0;

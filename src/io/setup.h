@@ -1,10 +1,14 @@
 /* setup.h - from a validated scene to a ready system: types, pair table,
- * initial positions and velocities, measurement and run settings. */
+ * initial positions and velocities, measurement and run settings. The input
+ * layer is scene.c (the file and its checks), setup.c (this), and
+ * setup_measure.c, setup_bodies.c (the modules' parameter structs,
+ * setup_parts.h): no other file reads the scene. */
 #ifndef DPD_SETUP_H
 #define DPD_SETUP_H
 
 #include "scene.h"
 #include "system.h"
+#include "overdamped.h"
 #include "measure.h"
 #include "colloid.h"
 #include "bonds.h"
@@ -16,10 +20,7 @@ typedef struct {
     double max_temperature_ratio;  /* blow-up guard: stop if T > this x kBT */
     /* m = 0 (Phan-Thien et al. 2016): velocities from A v = f every step */
     int overdamped;
-    int od_solver, od_stop, od_max_iter, od_allow_unconverged;
-    double od_tol;
-    double od_reference_tol;  /* > 0: also solve by PCG to this residual and record the true error */
-    int od_reference_own;     /* published Scheme 2: error against its own fixed point, not A v = f */
+    OdSettings od;            /* its solver (overdamped.h) */
     /* specular walls for mobile particles: confine_axis < 0 for none */
     int confine_axis;
     double confine_lo, confine_hi;

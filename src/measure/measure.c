@@ -47,7 +47,7 @@ static int msd_groups_init(Measure *m, const System *s)
 int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
-    if (field_init(&m->field, s, m->nblocks)) return -1;
+    if (field_init(&m->field, &m->field_par, s, m->nblocks)) return -1;
     m->n_mobile = 0;
     for (int i = 0; i < s->n; i++) m->n_mobile += !s->types[s->type[i]].frozen;
     if (m->prof_on) {
@@ -81,7 +81,7 @@ int measure_init(Measure *m, const System *s)
         if (!m->msd_origin_pos || !m->msd_origin_step || !m->msd_curve) return -1;
         for (int k = 0; k < m->msd_norig; k++) m->msd_origin_step[k] = -1;
     }
-    if (m->tcaf.on && tcaf_init(&m->tcaf, s, m->nblocks, m->prod_steps)) return -1;
+    if (m->tcaf_on && tcaf_init(&m->tcaf, &m->tcaf_par, s, m->nblocks, m->prod_steps)) return -1;
     return 0;
 }
 
@@ -104,6 +104,60 @@ void measure_free(Measure *m)
     series_free(&m->msd_done);
     field_free(&m->field);
     if (m->tcaf.on) tcaf_free(&m->tcaf);
+}
+
+/* profile, rdf and msd accumulators */
+static void binned_io(Io *io, Measure *m)
+{
+    const size_t n = (size_t)m->n;
+    if (m->prof_on) {
+        io_array(io, m->prof, (size_t)m->nblocks * m->prof_bins * PROF_Q, sizeof(double), "profile");
+        io_array(io, m->prof_samples, (size_t)m->nblocks, sizeof(long long), "profile samples");
+    }
+    if (m->rdf_on) {
+        io_array(io, m->rdf_hist, (size_t)m->nblocks * m->rdf_bins, sizeof(double), "rdf");
+        io_array(io, m->rdf_samples, (size_t)m->nblocks, sizeof(long long), "rdf samples");
+    }
+    if (m->msd_on) {
+        io_array(io, m->msd_origin_pos, (size_t)m->msd_norig * 3 * n, sizeof(double), "msd origins");
+        io_array(io, m->msd_origin_step, (size_t)m->msd_norig, sizeof(long long), "msd origin steps");
+        io_array(io, m->msd_curve, (size_t)m->msd_norig * m->msd_groups * m->msd_nlags, sizeof(double), "msd curves");
+        io_series(io, &m->msd_done, "msd done");
+        io_bytes(io, &m->msd_ndone, sizeof m->msd_ndone, "msd done count");
+    }
+}
+
+void measure_io(Io *io, Measure *m)
+{
+    io_series(io, &m->temperature, "temperature");
+    io_series(io, &m->pressure, "pressure");
+    io_series(io, &m->epot, "epot");
+    for (int p = 0; p < STRESS_PARTS; p++)
+        for (int k = 0; k < 9; k++) io_series(io, &m->P[p][k], "pressure tensor");
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) io_series(io, &m->frozen_force[t][d], "frozen force");
+    binned_io(io, m);
+    if (m->prof_on && m->prof_tsum)   /* its place in the format: after the MSD */
+        io_array(io, m->prof_tsum, (size_t)m->nblocks, sizeof(double), "profile times");
+    if (m->com_on) {
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &m->com_v[d], "centre-of-mass velocity");
+            io_series(io, &m->com_r[d], "centre-of-mass position");
+        }
+        io_bytes(io, m->com_r0, sizeof m->com_r0, "centre-of-mass start");
+    }
+    field_io(io, &m->field);
+}
+
+void measure_rotation_io(Io *io, Measure *m)
+{
+    io_series(io, &m->rot_temperature, "rotational temperature");
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &m->frozen_torque[t][d], "frozen torque");
+            io_series(io, &m->frozen_drag[t][d], "frozen drag");
+            io_series(io, &m->frozen_torque_random[t][d], "frozen random torque");
+        }
 }
 
 int measure_wants_virial(const Measure *m, long long step)
@@ -274,7 +328,7 @@ void measure_sample(Measure *m, const System *s, const NeighborList *nl, const P
 {
     if (prod_step < 0) return;
     if (MOD_ON(m->msd_on) && prod_step % m->msd_every == 0) sample_msd(m, s, prod_step);
-    if (MOD_ON(m->tcaf.on) && prod_step % m->tcaf.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
+    if (MOD_ON(m->tcaf.on) && prod_step % m->tcaf.p.every == 0) tcaf_sample(&m->tcaf, s, prod_step);
     if (MOD_ON(m->rdf_on) && prod_step % m->rdf_every == 0)
         sample_rdf(m, s, nl, block_of(m, prod_step / m->every));
     if (prod_step % m->every) return;
@@ -508,6 +562,77 @@ static int write_msd(const Measure *m, const System *s, FILE *summary, const cha
     return fclose(f);
 }
 
+/* Shear stress T_xy = -P_yx (x momentum carried across planes normal to y),
+ * with the viscosity and its parts under shear. */
+static int write_shear_stress(const Measure *m, const System *s, FILE *summary)
+{
+    static const char *part[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
+    const int B = m->nblocks;
+    const size_t ns = m->P[0][3].n;
+    if (ns == 0) return 0;
+    /* The random part of the stress has zero mean exactly (F_R at a step is
+     * independent of the positions it is paired with) but a variance of order
+     * 1/dt; the estimators without it have the same mean and far smaller
+     * errors. Both are reported. */
+    double v, se;
+    double *tot = malloc(ns * sizeof(double)), *all = malloc(ns * sizeof(double));
+    if (!tot || !all) { free(tot); free(all); return -1; }
+    for (size_t k = 0; k < ns; k++) {
+        tot[k] = -(m->P[STRESS_KINETIC][3].v[k] + m->P[STRESS_CONSERVATIVE][3].v[k]
+                   + m->P[STRESS_DISSIPATIVE][3].v[k]);
+        all[k] = tot[k] - m->P[STRESS_RANDOM][3].v[k];
+    }
+    block_stats(tot, ns, B, &v, &se);
+    row(summary, "stress_xy", v, se);
+    block_stats(all, ns, B, &v, &se);
+    row(summary, "stress_xy_with_random", v, se);
+    const double rate = s->box.shear_rate;
+    if (rate != 0.0) {
+        for (size_t k = 0; k < ns; k++) { tot[k] /= rate; all[k] /= rate; }
+        block_stats(tot, ns, B, &v, &se);
+        row(summary, "viscosity", v, se);
+        block_stats(all, ns, B, &v, &se);
+        row(summary, "viscosity_with_random", v, se);
+        for (int p = 0; p < STRESS_PARTS; p++) {
+            char name[64];
+            for (size_t k = 0; k < ns; k++) tot[k] = -m->P[p][3].v[k] / rate;
+            block_stats(tot, ns, B, &v, &se);
+            snprintf(name, sizeof name, "viscosity_%s", part[p]);
+            row(summary, name, v, se);
+        }
+    }
+    free(tot);
+    free(all);
+    return 0;
+}
+
+/* The row `prefix`_`type`_`axis` of a series. */
+static void series_row(FILE *summary, const char *prefix, const char *type, int axis, const Series *x, int nblocks)
+{
+    char name[96];
+    double v, se;
+    snprintf(name, sizeof name, "%s_%s_%c", prefix, type, "xyz"[axis]);
+    series_stats(x, nblocks, &v, &se);
+    row(summary, name, v, se);
+}
+
+/* Force on each frozen type and, in rotation scenes, the eq. 1 torques and drag. */
+static void write_frozen_bodies(const Measure *m, const System *s, FILE *summary)
+{
+    const int B = m->nblocks;
+    for (int t = 0; t < s->ntypes; t++) {
+        if (!s->types[t].frozen) continue;
+        const char *tn = s->types[t].name;
+        for (int d = 0; d < s->box.dim; d++) series_row(summary, "force_on", tn, d, &m->frozen_force[t][d], B);
+        if (s->rotation)
+            for (int d = 0; d < 3; d++) {
+                series_row(summary, "torque_on", tn, d, &m->frozen_torque[t][d], B);
+                series_row(summary, "torque_random_on", tn, d, &m->frozen_torque_random[t][d], B);
+                series_row(summary, "drag_on", tn, d, &m->frozen_drag[t][d], B);
+            }
+    }
+}
+
 int measure_write(const Measure *m, const System *s, FILE *summary, const char *dir)
 {
     double v, se;
@@ -518,65 +643,8 @@ int measure_write(const Measure *m, const System *s, FILE *summary, const char *
     row(summary, "pressure", v, se);
     series_stats(&m->epot, B, &v, &se);
     row(summary, "potential_energy_per_particle", v, se);
-    /* shear stress T_xy = -P_yx: x momentum carried across planes normal to y */
-    static const char *part[STRESS_PARTS] = {"kinetic", "conservative", "dissipative", "random"};
-    const size_t ns = m->P[0][3].n;
-    if (ns > 0) {
-        /* The random part of the stress has zero mean exactly (F_R at a step is
-         * independent of the positions it is paired with) but a variance of order
-         * 1/dt; the estimators without it have the same mean and far smaller
-         * errors. Both are reported. */
-        double *tot = malloc(ns * sizeof(double)), *all = malloc(ns * sizeof(double));
-        if (!tot || !all) { free(tot); free(all); return -1; }
-        for (size_t k = 0; k < ns; k++) {
-            tot[k] = -(m->P[STRESS_KINETIC][3].v[k] + m->P[STRESS_CONSERVATIVE][3].v[k]
-                       + m->P[STRESS_DISSIPATIVE][3].v[k]);
-            all[k] = tot[k] - m->P[STRESS_RANDOM][3].v[k];
-        }
-        block_stats(tot, ns, B, &v, &se);
-        row(summary, "stress_xy", v, se);
-        block_stats(all, ns, B, &v, &se);
-        row(summary, "stress_xy_with_random", v, se);
-        const double rate = s->box.shear_rate;
-        if (rate != 0.0) {
-            for (size_t k = 0; k < ns; k++) { tot[k] /= rate; all[k] /= rate; }
-            block_stats(tot, ns, B, &v, &se);
-            row(summary, "viscosity", v, se);
-            block_stats(all, ns, B, &v, &se);
-            row(summary, "viscosity_with_random", v, se);
-            for (int p = 0; p < STRESS_PARTS; p++) {
-                char name[64];
-                for (size_t k = 0; k < ns; k++) tot[k] = -m->P[p][3].v[k] / rate;
-                block_stats(tot, ns, B, &v, &se);
-                snprintf(name, sizeof name, "viscosity_%s", part[p]);
-                row(summary, name, v, se);
-            }
-        }
-        free(tot);
-        free(all);
-    }
-    for (int t = 0; t < s->ntypes; t++) {
-        if (!s->types[t].frozen) continue;
-        for (int d = 0; d < s->box.dim; d++) {
-            char name[96];
-            snprintf(name, sizeof name, "force_on_%s_%c", s->types[t].name, "xyz"[d]);
-            series_stats(&m->frozen_force[t][d], B, &v, &se);
-            row(summary, name, v, se);
-        }
-        if (s->rotation)
-            for (int d = 0; d < 3; d++) {
-                char name[96];
-                snprintf(name, sizeof name, "torque_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_torque[t][d], B, &v, &se);
-                row(summary, name, v, se);
-                snprintf(name, sizeof name, "torque_random_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_torque_random[t][d], B, &v, &se);
-                row(summary, name, v, se);
-                snprintf(name, sizeof name, "drag_on_%s_%c", s->types[t].name, "xyz"[d]);
-                series_stats(&m->frozen_drag[t][d], B, &v, &se);
-                row(summary, name, v, se);
-            }
-    }
+    if (write_shear_stress(m, s, summary)) return -1;
+    write_frozen_bodies(m, s, summary);
     if (s->rotation) {
         series_stats(&m->rot_temperature, B, &v, &se);
         row(summary, "rotational_temperature", v, se);

@@ -59,7 +59,10 @@ typedef struct {
     long long n_mobile;
     /* frozen body forces */
     Series frozen_force[DPD_MAX_TYPES][3];
+    FieldParams field_par;    /* measure.around, density_map, force_map (setup_measure.c) */
     FieldMeasure field;       /* about points, on grids, torques, mean velocities */
+    int tcaf_on;              /* measure.tcaf given: tcaf_par holds it */
+    TcafParams tcaf_par;
     Tcaf tcaf;                /* transverse current autocorrelation (tcaf.h) */
     const struct Colloids *colloids;   /* rigid bodies whose momentum flux joins the stress, or NULL */
     Series frozen_torque[DPD_MAX_TYPES][3], rot_temperature;   /* rotation scenes */
@@ -79,6 +82,10 @@ int  measure_wants_virial(const Measure *m, long long step);
 /* Sample after the step is complete; pv holds the virial of this step's forces. */
 void measure_sample(Measure *m, const System *s, const NeighborList *nl, const PairVirial *pv,
                     long long prod_step);
+/* The accumulators (with the field measurements, not the TCAF), written or
+ * read for the checkpoint; measure_rotation_io: those of rotation scenes. */
+void measure_io(Io *io, Measure *m);
+void measure_rotation_io(Io *io, Measure *m);
 /* Write summary rows and the plot tables into dir. */
 int  measure_write(const Measure *m, const System *s, FILE *summary, const char *dir);
 

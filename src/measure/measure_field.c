@@ -5,74 +5,6 @@
 #include <math.h>
 #include "measure_field.h"
 
-static int type_named(const System *s, const char *name)
-{
-    for (int t = 0; t < s->ntypes; t++)
-        if (strcmp(s->types[t].name, name) == 0) return t;
-    return -1;
-}
-
-static int read_type(Scene *sc, const config_setting_t *g, const char *key, const System *s, int *t)
-{
-    const char *name;
-    if (scene_string(sc, g, key, &name, NULL, NULL, 1) < 0) return -1;
-    *t = type_named(s, name);
-    if (*t < 0) return scene_fail(sc, g, "%s: unknown type \"%s\"", key, name);
-    return 0;
-}
-
-static int read_bins(Scene *sc, const config_setting_t *g, int out[2])
-{
-    double b[2];
-    if (scene_vector(sc, g, "bins", b, 2, NULL, 1.0, 4096.0, 1) < 0) return -1;
-    for (int k = 0; k < 2; k++) {
-        if (b[k] != floor(b[k])) return scene_fail(sc, g, "bins: %g is not a whole number", b[k]);
-        out[k] = (int)b[k];
-    }
-    return 0;
-}
-
-int field_read(Scene *sc, const config_setting_t *g, const System *s, FieldMeasure *f)
-{
-    memset(f, 0, sizeof *f);
-    if (!g) return 0;
-    const int dim = s->box.dim;
-    config_setting_t *a = scene_child(sc, g, "around", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (a) {
-        f->around_on = 1;
-        if (scene_vector(sc, a, "centre", f->around_centre, dim, NULL, 0.0, 1e9, 1) < 0) return -1;
-        for (int d = 0; d < dim; d++)
-            if (f->around_centre[d] >= s->box.L[d])
-                return scene_fail(sc, a, "centre: %c = %g outside the box [0, %g)", "xyz"[d],
-                                  f->around_centre[d], s->box.L[d]);
-        if (read_type(sc, a, "type", s, &f->around_type)) return -1;
-        double qmax, hmin = 0.5 * s->box.L[0];
-        for (int d = 1; d < dim; d++) if (0.5 * s->box.L[d] < hmin) hmin = 0.5 * s->box.L[d];
-        if (scene_double(sc, a, "dq", &f->around_dq, 0.01, 1e-6, hmin, 0) < 0) return -1;
-        if (scene_double(sc, a, "qmax", &qmax, hmin, f->around_dq, hmin, 0) < 0) return -1;
-        if (scene_double(sc, a, "threshold", &f->around_threshold, 1e-3, 0.0, 1.0, 0) < 0) return -1;
-        f->around_bins = (int)floor(qmax / f->around_dq + 0.5);
-        if (f->around_bins < 1) f->around_bins = 1;
-    }
-    config_setting_t *m = scene_child(sc, g, "density_map", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (m) {
-        f->map_on = 1;
-        if (read_type(sc, m, "type", s, &f->map_type) || read_bins(sc, m, f->map_bins)) return -1;
-    }
-    config_setting_t *fm = scene_child(sc, g, "force_map", CONFIG_TYPE_GROUP);
-    if (sc->failed) return -1;
-    if (fm) {
-        f->fmap_on = 1;
-        if (read_type(sc, fm, "body", s, &f->fmap_body) || read_type(sc, fm, "probe", s, &f->fmap_probe)
-            || read_bins(sc, fm, f->fmap_bins)) return -1;
-        if (!s->types[f->fmap_body].frozen)
-            return scene_fail(sc, fm, "body: type \"%s\" is not frozen", s->types[f->fmap_body].name);
-    }
-    return 0;
-}
-
 /* Centroid of each frozen type, from the first particle by minimum images. */
 static void frozen_centroids(FieldMeasure *f, const System *s)
 {
@@ -93,21 +25,23 @@ static void frozen_centroids(FieldMeasure *f, const System *s)
             f->centroid[t][k] = cnt[t] ? first[t][k] + sum[t][k] / cnt[t] : 0.0;
 }
 
-int field_init(FieldMeasure *f, const System *s, int nblocks)
+int field_init(FieldMeasure *f, const FieldParams *p, const System *s, int nblocks)
 {
+    memset(f, 0, sizeof *f);
+    f->p = *p;
     f->nblocks = nblocks;
-    if (f->around_on) {
-        f->around_hist = calloc((size_t)nblocks * f->around_bins, sizeof(double));
+    if (f->p.around.on) {
+        f->around_hist = calloc((size_t)nblocks * f->p.around.bins, sizeof(double));
         f->around_samples = calloc((size_t)nblocks, sizeof(long long));
         if (!f->around_hist || !f->around_samples) return -1;
         long long cnt = 0;
-        for (int i = 0; i < s->n; i++) cnt += s->type[i] == f->around_type;
+        for (int i = 0; i < s->n; i++) cnt += s->type[i] == f->p.around.type;
         double A = 1.0;
         for (int d = 0; d < s->box.dim; d++) A *= s->box.L[d];
         f->around_density = cnt / A;
     }
-    if (f->map_on) {
-        f->map_hist = calloc(3 * (size_t)f->map_bins[0] * f->map_bins[1], sizeof(double));
+    if (f->p.map_on) {
+        f->map_hist = calloc(3 * (size_t)f->p.map_bins[0] * f->p.map_bins[1], sizeof(double));
         if (!f->map_hist) return -1;
     }
     return 0;
@@ -118,6 +52,23 @@ void field_free(FieldMeasure *f)
     free(f->around_hist); free(f->around_samples); free(f->map_hist);
     for (int t = 0; t < DPD_MAX_TYPES; t++)
         for (int d = 0; d < 3; d++) { series_free(&f->mean_v[t][d]); series_free(&f->torque[t][d]); }
+}
+
+void field_io(Io *io, FieldMeasure *f)
+{
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++) {
+            io_series(io, &f->mean_v[t][d], "mean velocity");
+            io_series(io, &f->torque[t][d], "body torque");
+        }
+    if (f->p.around.on) {
+        io_array(io, f->around_hist, (size_t)f->nblocks * f->p.around.bins, sizeof(double), "around");
+        io_array(io, f->around_samples, (size_t)f->nblocks, sizeof(long long), "around samples");
+    }
+    if (f->p.map_on) {
+        io_array(io, f->map_hist, 3 * (size_t)f->p.map_bins[0] * f->p.map_bins[1], sizeof(double), "density map");
+        io_bytes(io, &f->map_samples, sizeof f->map_samples, "density map samples");
+    }
 }
 
 static void sample_velocities_and_torques(FieldMeasure *f, const System *s)
@@ -151,22 +102,22 @@ static void sample_velocities_and_torques(FieldMeasure *f, const System *s)
 void field_sample(FieldMeasure *f, const System *s, int block)
 {
     sample_velocities_and_torques(f, s);
-    if (f->around_on) {
-        double *h = f->around_hist + (size_t)block * f->around_bins;
+    if (f->p.around.on) {
+        double *h = f->around_hist + (size_t)block * f->p.around.bins;
         for (int i = 0; i < s->n; i++) {
-            if (s->type[i] != f->around_type) continue;
+            if (s->type[i] != f->p.around.type) continue;
             double d[3];
-            for (int k = 0; k < 3; k++) d[k] = s->x[3 * i + k] - f->around_centre[k];
+            for (int k = 0; k < 3; k++) d[k] = s->x[3 * i + k] - f->p.around_centre[k];
             box_min_image(&s->box, d, NULL);
-            const int b = (int)(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / f->around_dq);
-            if (b < f->around_bins) h[b] += 1.0;
+            const int b = (int)(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / f->p.around.dq);
+            if (b < f->p.around.bins) h[b] += 1.0;
         }
         f->around_samples[block]++;
     }
-    if (f->map_on) {
-        const int nx = f->map_bins[0], ny = f->map_bins[1];
+    if (f->p.map_on) {
+        const int nx = f->p.map_bins[0], ny = f->p.map_bins[1];
         for (int i = 0; i < s->n; i++) {
-            if (s->type[i] != f->map_type) continue;
+            if (s->type[i] != f->p.map_type) continue;
             int bx = (int)(s->x[3 * i] / s->box.L[0] * nx), by = (int)(s->x[3 * i + 1] / s->box.L[1] * ny);
             if (bx >= nx) bx = nx - 1;
             if (by >= ny) by = ny - 1;
@@ -179,77 +130,13 @@ void field_sample(FieldMeasure *f, const System *s, int block)
     }
 }
 
-static double shell_measure(int dim, double q0, double q1)
-{
-    return dim == 3 ? 4.0 / 3.0 * M_PI * (q1 * q1 * q1 - q0 * q0 * q0) : M_PI * (q1 * q1 - q0 * q0);
-}
-
-/* g(q) of eq. 48 from histogram sums h over nsamp samples; the radius is the
- * lower edge of the first bin where g reaches the threshold. */
-static double radius_from(const AroundHist *a, const double *h, long long nsamp)
-{
-    for (int b = 0; b < a->bins; b++) {
-        const double q0 = b * a->dq;
-        const double g = h[b] / (nsamp * a->density * shell_measure(a->dim, q0, q0 + a->dq));
-        if (g >= a->threshold) return q0;
-    }
-    return a->bins * a->dq;
-}
-
-int around_write(const AroundHist *a, const char *path, FILE *summary, const char *name)
-{
-    const int B = a->nblocks, nb = a->bins;
-    double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
-    double *g = calloc((size_t)B + 1, sizeof(double)), *r = calloc((size_t)B + 1, sizeof(double));
-    FILE *out = all && loo && g && r ? fopen(path, "w") : NULL;
-    if (!out) { free(all); free(loo); free(g); free(r); return -1; }
-    long long ntot = 0;
-    for (int k = 0; k < B; k++) {
-        ntot += a->samples[k];
-        for (int b = 0; b < nb; b++) all[b] += a->hist[(size_t)k * nb + b];
-    }
-    fprintf(out, "q\tg\tg_se\n");
-    for (int b = 0; b < nb; b++) {
-        const double q0 = b * a->dq, sh = shell_measure(a->dim, q0, q0 + a->dq);
-        int used = 0;
-        for (int k = 0; k < B; k++)
-            if (a->samples[k] > 0)
-                g[used++] = a->hist[(size_t)k * nb + b] / (a->samples[k] * a->density * sh);
-        double mean, se;
-        block_stats(g, (size_t)used, used, &mean, &se);
-        fprintf(out, "%.6g\t%.6g\t%.3g\n", q0 + 0.5 * a->dq, mean, se);
-    }
-    /* jackknife over blocks: the crossing is a nonlinear function of g */
-    const double r_all = ntot > 0 ? radius_from(a, all, ntot) : NAN;
-    int used = 0;
-    double rbar = 0.0, var = 0.0;
-    for (int k = 0; k < B; k++) {
-        if (a->samples[k] == 0 || a->samples[k] == ntot) continue;
-        for (int b = 0; b < nb; b++) loo[b] = all[b] - a->hist[(size_t)k * nb + b];
-        r[used] = radius_from(a, loo, ntot - a->samples[k]);
-        rbar += r[used++];
-    }
-    if (used > 1) {
-        rbar /= used;
-        for (int k = 0; k < used; k++) var += (r[k] - rbar) * (r[k] - rbar);
-        var *= (used - 1.0) / used;
-    }
-    /* the radius is a bin edge: a uniform bin adds dq^2 / 12 to the jackknife
-     * variance (which is zero when every leave-one-out estimate lands on the
-     * same edge) */
-    var += a->dq * a->dq / 12.0;
-    fprintf(summary, "%s\t%.10g\t%.4g\n", name, r_all, used > 1 ? sqrt(var) : NAN);
-    free(all); free(loo); free(g); free(r);
-    return fclose(out);
-}
-
 static int write_around(const FieldMeasure *f, const System *s, FILE *summary, const char *dir)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/around.tsv", dir);
     const AroundHist a = {.hist = f->around_hist, .samples = f->around_samples, .nblocks = f->nblocks,
-                          .bins = f->around_bins, .dim = s->box.dim, .dq = f->around_dq,
-                          .density = f->around_density, .threshold = f->around_threshold};
+                          .bins = f->p.around.bins, .dim = s->box.dim, .dq = f->p.around.dq,
+                          .density = f->around_density, .threshold = f->p.around.threshold};
     return around_write(&a, path, summary, "exclusion_radius");
 }
 
@@ -259,7 +146,7 @@ static int write_density_map(const FieldMeasure *f, const System *s, const char 
     snprintf(path, sizeof path, "%s/density_map.tsv", dir);
     FILE *out = fopen(path, "w");
     if (!out) return -1;
-    const int nx = f->map_bins[0], ny = f->map_bins[1];
+    const int nx = f->p.map_bins[0], ny = f->p.map_bins[1];
     double cell = s->box.L[0] / nx * s->box.L[1] / ny;
     if (s->box.dim == 3) cell *= s->box.L[2];
     fprintf(out, "x\ty\tdensity\tvx\tvy\n");
@@ -284,9 +171,9 @@ static int write_force_map(const FieldMeasure *f, const System *s, const char *d
     snprintf(path, sizeof path, "%s/force_map.tsv", dir);
     FILE *out = fopen(path, "w");
     if (!out) return -1;
-    const PairParams *p = &s->pair[f->fmap_body][f->fmap_probe];
-    const double *o = f->centroid[f->fmap_body];
-    const int nx = f->fmap_bins[0], ny = f->fmap_bins[1];
+    const PairParams *p = &s->pair[f->p.fmap_body][f->p.fmap_probe];
+    const double *o = f->centroid[f->p.fmap_body];
+    const int nx = f->p.fmap_bins[0], ny = f->p.fmap_bins[1];
     fprintf(out, "x\ty\tradial_force\n");
     for (int by = 0; by < ny; by++) {
         for (int bx = 0; bx < nx; bx++) {
@@ -296,7 +183,7 @@ static int write_force_map(const FieldMeasure *f, const System *s, const char *d
             const double ro = sqrt(eo[0] * eo[0] + eo[1] * eo[1] + eo[2] * eo[2]);
             double fr = 0.0;
             for (int j = 0; j < s->n && ro > 0.0; j++) {
-                if (s->type[j] != f->fmap_body) continue;
+                if (s->type[j] != f->p.fmap_body) continue;
                 double d[3] = {X[0] - s->x[3 * j], X[1] - s->x[3 * j + 1], X[2] - s->x[3 * j + 2]};
                 box_min_image(&s->box, d, NULL);
                 const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -325,8 +212,8 @@ int field_write(const FieldMeasure *f, const System *s, FILE *summary, const cha
             series_stats(frozen ? &f->torque[t][d] : &f->mean_v[t][d], f->nblocks, &v, &se);
             fprintf(summary, "%s\t%.10g\t%.4g\n", name, v, se);
         }
-    if (f->around_on && write_around(f, s, summary, dir)) return -1;
-    if (f->map_on && write_density_map(f, s, dir)) return -1;
-    if (f->fmap_on && write_force_map(f, s, dir)) return -1;
+    if (f->p.around.on && write_around(f, s, summary, dir)) return -1;
+    if (f->p.map_on && write_density_map(f, s, dir)) return -1;
+    if (f->p.fmap_on && write_force_map(f, s, dir)) return -1;
     return 0;
 }

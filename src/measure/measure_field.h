@@ -14,51 +14,40 @@
 
 #include <stdio.h>
 #include "system.h"
-#include "scene.h"
 #include "blockavg.h"
+#include "io.h"
+#include "around.h"
+
+/* measure.around, measure.density_map, measure.force_map of the scene, read
+ * and checked by the input layer (setup_measure.c). */
+typedef struct {
+    AroundParams around;          /* around = { centre; type; dq; qmax; threshold; } */
+    double around_centre[3];
+    int map_on, map_type, map_bins[2];   /* density_map = { type; bins = [nx, ny]; } */
+    int fmap_on, fmap_body, fmap_probe, fmap_bins[2];   /* force_map = { body; probe; bins; } */
+} FieldParams;
 
 typedef struct FieldMeasure {
+    FieldParams p;
     int nblocks;
-    /* around = { centre = [..]; type = "..."; dq = 0.01; qmax = 1.5; threshold = 1e-3; } */
-    int around_on, around_type, around_bins;
-    double around_centre[3], around_dq, around_threshold;
     double *around_hist;          /* nblocks x bins: counts */
     long long *around_samples;    /* per block */
     double around_density;        /* N / A of the type (eq. 48) */
-    /* density_map = { type = "..."; bins = [nx, ny]; } */
-    int map_on, map_type, map_bins[2];
     double *map_hist;             /* per bin: count, sum vx, sum vy */
     long long map_samples;
-    /* force_map = { body = "..."; probe = "..."; bins = [nx, ny]; } */
-    int fmap_on, fmap_body, fmap_probe, fmap_bins[2];
     /* always */
     Series mean_v[DPD_MAX_TYPES][3];
     Series torque[DPD_MAX_TYPES][3];
     double centroid[DPD_MAX_TYPES][3];
 } FieldMeasure;
 
-/* Counts of a type in shells about centres (eq. 48), per block of samples:
- * measure.around about a point, colloids2d.around about the colloid centres. */
-typedef struct {
-    const double *hist;           /* nblocks x bins */
-    const long long *samples;     /* per block: samples x centres */
-    int nblocks, bins, dim;
-    double dq, density, threshold;
-} AroundHist;
-
-/* The table q, g, g_se (block errors) into the file `path` and the summary
- * row `name`: the lower edge of the first bin where g reaches the threshold,
- * its error the jackknife over blocks plus the dq^2 / 12 of a bin (nan with
- * fewer than two blocks). The one rule of exclusion_radius and colloid_radius. */
-int  around_write(const AroundHist *a, const char *path, FILE *summary, const char *name);
-
-/* Read measure.around, measure.density_map, measure.force_map from group g
- * (NULL: none of them). Returns 0, or -1 with the scene error set. */
-int  field_read(Scene *sc, const config_setting_t *g, const System *s, FieldMeasure *f);
-int  field_init(FieldMeasure *f, const System *s, int nblocks);
+/* The measurements p asks for, with nblocks blocks; -1 out of memory. */
+int  field_init(FieldMeasure *f, const FieldParams *p, const System *s, int nblocks);
 void field_free(FieldMeasure *f);
 /* One sample; s->f must hold this step's pair forces (for the torques). */
 void field_sample(FieldMeasure *f, const System *s, int block);
 int  field_write(const FieldMeasure *f, const System *s, FILE *summary, const char *dir);
+/* The accumulators, written or read for the checkpoint. */
+void field_io(Io *io, FieldMeasure *f);
 
 #endif

@@ -14,30 +14,23 @@
 
 static int selected(const Tcaf *t, const System *s, int i)
 {
-    return !s->types[s->type[i]].frozen && (t->type < 0 || s->type[i] == t->type);
+    return !s->types[s->type[i]].frozen && (t->p.type < 0 || s->type[i] == t->p.type);
 }
 
 /* Order of shells: by |k|. */
 typedef struct { double k; int n2; } ShellKey;
 
-int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
+/* The wave vectors: the half space of integer vectors (i > 0, or i = 0 and
+ * j > 0, or i = j = 0 and l > 0) in the sphere n^2 <= n2max, plus the axes up
+ * to axis_nmax; components up to nmax[d]. */
+static int wave_vectors(Tcaf *t, const Box *box)
 {
-    const int dim = s->box.dim;
-    t->nblocks = nblocks;
-    t->nlags = t->window / t->every + 1;
-    t->nslots = t->window / t->origin_every + 1;
-    t->norig_expected = prod_steps >= t->window ? (prod_steps - t->window) / t->origin_every + 1 : 0;
-    const int ns2 = (int)floor(sqrt((double)t->n2max) + 1e-9);
-    const int nm = t->axis_nmax > ns2 ? t->axis_nmax : ns2;
-    if (nm > TCAF_NMAX) return -1;   /* phase tables of tcaf_current */
-    for (int d = 0; d < 3; d++) t->nmax[d] = d < dim ? nm : 0;
-    /* half space of integer vectors: i > 0, or i = 0 and j > 0, or i = j = 0 and l > 0 */
-    int cap = (2 * nm + 1) * (2 * nm + 1) * (2 * nm + 1);
+    const int dim = box->dim, nm = t->nmax[0];
+    const int cap = (2 * nm + 1) * (2 * nm + 1) * (2 * nm + 1);
     t->vec = malloc((size_t)cap * 3 * sizeof(int));
     t->kvec = malloc((size_t)cap * 3 * sizeof(double));
     t->shell_of = malloc((size_t)cap * sizeof(int));
-    ShellKey *keys = malloc((size_t)cap * sizeof *keys);
-    if (!t->vec || !t->kvec || !t->shell_of || !keys) { free(keys); return -1; }
+    if (!t->vec || !t->kvec || !t->shell_of) return -1;
     int nv = 0;
     for (int i = 0; i <= t->nmax[0]; i++)
         for (int j = -t->nmax[1]; j <= t->nmax[1]; j++)
@@ -46,16 +39,25 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
                 const int n2 = i * i + j * j + l * l;
                 /* the sphere n^2 <= n2max, plus the axes up to axis_nmax */
                 const int on_axis = (i != 0) + (j != 0) + (l != 0) == 1;
-                if (n2 > t->n2max && !(on_axis && n2 <= t->axis_nmax * t->axis_nmax)) continue;
+                if (n2 > t->p.n2max && !(on_axis && n2 <= t->p.axis_nmax * t->p.axis_nmax)) continue;
                 const int c[3] = {i, j, l};
                 for (int d = 0; d < 3; d++) {
                     t->vec[3 * nv + d] = c[d];
-                    t->kvec[3 * nv + d] = d < dim ? 2.0 * M_PI * c[d] / s->box.L[d] : 0.0;
+                    t->kvec[3 * nv + d] = d < dim ? 2.0 * M_PI * c[d] / box->L[d] : 0.0;
                 }
                 nv++;
             }
     t->nvec = nv;
-    /* shells: equal |k| (to rounding) */
+    return 0;
+}
+
+/* Shells of equal |k| (to rounding), numbered by |k|, with their n^2 and
+ * number of vectors. */
+static int shells(Tcaf *t)
+{
+    const int nv = t->nvec;
+    ShellKey *keys = malloc((size_t)(nv > 0 ? nv : 1) * sizeof *keys);
+    if (!keys) return -1;
     int ns = 0;
     for (int v = 0; v < nv; v++) {
         const double *k = t->kvec + 3 * v;
@@ -83,13 +85,19 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
     for (int q = 0; q < ns; q++) { t->shell_k[rank[q]] = keys[q].k; t->shell_n2[rank[q]] = keys[q].n2; }
     for (int v = 0; v < nv; v++) { t->shell_of[v] = rank[t->shell_of[v]]; t->shell_nvec[t->shell_of[v]]++; }
     free(order); free(rank); free(keys);
-    /* selection */
+    return 0;
+}
+
+/* The selected particles, their mass density, and the sample buffers. */
+static int buffers(Tcaf *t, const System *s)
+{
+    const int nv = t->nvec, ns = t->nshell, nblocks = t->nblocks;
     double mass = 0.0;
     t->count = 0;
     for (int i = 0; i < s->n; i++)
         if (selected(t, s, i)) { t->count++; mass += s->types[s->type[i]].mass; }
     double V = 1.0;
-    for (int d = 0; d < dim; d++) V *= s->box.L[d];
+    for (int d = 0; d < s->box.dim; d++) V *= s->box.L[d];
     t->rho = mass / V;
     t->J = calloc((size_t)nv * 3 + 1, sizeof(double complex));
     t->origin = calloc((size_t)t->nslots * nv * 3 + 1, sizeof(double complex));
@@ -102,6 +110,34 @@ int tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps)
     for (int k = 0; k < t->nslots; k++) t->origin_step[k] = -1;
     t->nstarted = t->ndone = 0;
     return 0;
+}
+
+int tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long long prod_steps)
+{
+    memset(t, 0, sizeof *t);
+    t->on = 1;
+    t->p = *p;
+    t->nblocks = nblocks;
+    t->nlags = t->p.window / t->p.every + 1;
+    t->nslots = t->p.window / t->p.origin_every + 1;
+    t->norig_expected = prod_steps >= t->p.window ? (prod_steps - t->p.window) / t->p.origin_every + 1 : 0;
+    const int ns2 = (int)floor(sqrt((double)t->p.n2max) + 1e-9);
+    const int nm = t->p.axis_nmax > ns2 ? t->p.axis_nmax : ns2;
+    if (nm > TCAF_NMAX) return -1;   /* phase tables of tcaf_current */
+    for (int d = 0; d < 3; d++) t->nmax[d] = d < s->box.dim ? nm : 0;
+    return wave_vectors(t, &s->box) || shells(t) || buffers(t, s) ? -1 : 0;
+}
+
+void tcaf_io(Io *io, Tcaf *t)
+{
+    io_array(io, t->origin, (size_t)t->nslots * t->nvec * 3, sizeof(double complex), "tcaf origins");
+    io_array(io, t->origin_step, (size_t)t->nslots, sizeof(long long), "tcaf origin steps");
+    io_array(io, t->origin_index, (size_t)t->nslots, sizeof(long long), "tcaf origin indices");
+    io_array(io, t->curve, (size_t)t->nslots * t->nshell * t->nlags, sizeof(double), "tcaf curves");
+    io_array(io, t->acc, (size_t)t->nblocks * t->nshell * t->nlags, sizeof(double), "tcaf blocks");
+    io_array(io, t->acc_n, (size_t)t->nblocks, sizeof(long long), "tcaf block origins");
+    io_bytes(io, &t->nstarted, sizeof t->nstarted, "tcaf origins started");
+    io_bytes(io, &t->ndone, sizeof t->ndone, "tcaf origins done");
 }
 
 void tcaf_free(Tcaf *t)
@@ -213,8 +249,8 @@ void tcaf_sample(Tcaf *t, const System *s, long long step)
         tcaf_transverse(t->kvec + 3 * q, t->J + 3 * q, jp);
         memcpy(t->J + 3 * q, jp, sizeof jp);
     }
-    if (step % t->origin_every == 0) {
-        const int slot = (int)((step / t->origin_every) % t->nslots);
+    if (step % t->p.origin_every == 0) {
+        const int slot = (int)((step / t->p.origin_every) % t->nslots);
         memcpy(t->origin + (size_t)slot * nv * 3, t->J, (size_t)nv * 3 * sizeof(double complex));
         t->origin_step[slot] = step;
         t->origin_index[slot] = t->nstarted++;
@@ -222,8 +258,8 @@ void tcaf_sample(Tcaf *t, const System *s, long long step)
     }
     for (int slot = 0; slot < t->nslots; slot++) {
         const long long t0 = t->origin_step[slot];
-        if (t0 < 0 || step - t0 > t->window) continue;
-        const int lag = (int)((step - t0) / t->every);
+        if (t0 < 0 || step - t0 > t->p.window) continue;
+        const int lag = (int)((step - t0) / t->p.every);
         const double complex *o = t->origin + (size_t)slot * nv * 3;
         double *cur = t->curve + (size_t)slot * ns * L;
         for (int q = 0; q < nv; q++) {
@@ -344,20 +380,20 @@ static int extrapolate_k0(const Tcaf *t, const double *eta, const double *eta_se
 {
     const int ns = t->nshell;
     double cb_all[MAX_BLOCKS], coefb[TCAF_MAX_ORDER + 1];
-    if (B > MAX_BLOCKS || t->extrap_order > TCAF_MAX_ORDER) return -1;
+    if (B > MAX_BLOCKS || t->p.extrap_order > TCAF_MAX_ORDER) return -1;
     double *kx = calloc((size_t)ns + 1, sizeof(double)), *ex = calloc((size_t)ns + 1, sizeof(double));
     double *wx = calloc((size_t)ns + 1, sizeof(double)), *eb = calloc((size_t)ns + 1, sizeof(double));
     int *idx = calloc((size_t)ns + 1, sizeof(int)), nx = 0;
     if (!kx || !ex || !wx || !eb || !idx) { free(kx); free(ex); free(wx); free(eb); free(idx); return -1; }
     for (int q = 0; q < ns; q++)
-        if (t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
+        if (t->shell_k[q] <= t->p.extrap_kmax * (1 + 1e-12) && isfinite(eta[q]) && isfinite(eta_se[q]) && eta_se[q] > 0) {
             kx[nx] = t->shell_k[q]; ex[nx] = eta[q]; wx[nx] = 1.0 / (eta_se[q] * eta_se[q]); idx[nx] = q; nx++;
         }
-    tcaf_extrapolate(kx, ex, wx, nx, t->extrap_order, coef);
-    for (int p = 0; p <= t->extrap_order; p++) {
+    tcaf_extrapolate(kx, ex, wx, nx, t->p.extrap_order, coef);
+    for (int p = 0; p <= t->p.extrap_order; p++) {
         for (int j = 0; j < B; j++) {
             for (int i = 0; i < nx; i++) eb[i] = etab[(size_t)j * ns + idx[i]];
-            tcaf_extrapolate(kx, eb, wx, nx, t->extrap_order, coefb);
+            tcaf_extrapolate(kx, eb, wx, nx, t->p.extrap_order, coefb);
             cb_all[j] = coefb[p];
         }
         mean_se(cb_all, B, &coef_se[p]);
@@ -368,208 +404,254 @@ static int extrapolate_k0(const Tcaf *t, const double *eta, const double *eta_se
     return nx;
 }
 
-int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
+/* Scratch arrays of one analysis: the blocks that completed an origin, C_perp
+ * per block and over all origins, eta per block and shell, fit buffers. */
+typedef struct {
+    int B, blk[MAX_BLOCKS];
+    double invm;              /* mean 1/m of the selection */
+    double *Cb, *C;           /* B x ns x L, ns x L */
+    double *etab;             /* B x ns */
+    double *tt, *cc, *tmp;    /* L, L, MAX_BLOCKS */
+} Work;
+
+static void work_free(Work *w)
 {
-    const int ns = t->nshell, L = t->nlags, dim = s->box.dim, npol = dim - 1;
-    const double dts = t->every * s->dt;
-    /* blocks that completed at least one origin */
-    int B = 0, blk[MAX_BLOCKS];
-    if (t->nblocks > MAX_BLOCKS) return -1;   /* more than blk and the per-block statistics hold */
-    for (int b = 0; b < t->nblocks; b++) if (t->acc_n[b] > 0) blk[B++] = b;
-    /* mean 1/m of the selection: equipartition C(k,0) = k^2 kBT <1/m> */
-    double invm = 0.0;
-    for (int i = 0; i < s->n; i++) if (selected(t, s, i)) invm += 1.0 / s->types[s->type[i]].mass;
-    invm = t->count > 0 ? invm / t->count : NAN;
-    /* C_perp per block (eq. 26) and over all origins */
-    double *Cb = calloc((size_t)(B > 0 ? B : 1) * ns * L, sizeof(double)), *C = calloc((size_t)ns * L + 1, sizeof(double));
-    double *eta = malloc((size_t)ns * sizeof(double)), *eta_se = malloc((size_t)ns * sizeof(double));
-    double *etab = malloc((size_t)(B > 0 ? B : 1) * ns * sizeof(double));
-    double *c0r = malloc((size_t)ns * sizeof(double)), *c0r_se = malloc((size_t)ns * sizeof(double));
-    int *nfit = calloc((size_t)ns, sizeof(int));
-    double *tt = malloc((size_t)L * sizeof(double)), *cc = malloc((size_t)L * sizeof(double)), *tmp = malloc(MAX_BLOCKS * sizeof(double));
-    if (!Cb || !C || !eta || !eta_se || !etab || !c0r || !c0r_se || !nfit || !tt || !cc || !tmp) {
-        free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
-        return -1;
-    }
+    free(w->Cb); free(w->C); free(w->etab); free(w->tt); free(w->cc); free(w->tmp);
+}
+
+static int work_alloc(Work *w, const Tcaf *t, const System *s)
+{
+    const int ns = t->nshell, L = t->nlags;
+    memset(w, 0, sizeof *w);
+    for (int b = 0; b < t->nblocks; b++) if (t->acc_n[b] > 0) w->blk[w->B++] = b;
+    /* equipartition: C(k,0) = k^2 kBT <1/m> */
+    for (int i = 0; i < s->n; i++) if (selected(t, s, i)) w->invm += 1.0 / s->types[s->type[i]].mass;
+    w->invm = t->count > 0 ? w->invm / t->count : NAN;
+    const size_t B1 = (size_t)(w->B > 0 ? w->B : 1);
+    w->Cb = calloc(B1 * ns * L, sizeof(double));
+    w->C = calloc((size_t)ns * L + 1, sizeof(double));
+    w->etab = malloc(B1 * ns * sizeof(double));
+    w->tt = malloc((size_t)L * sizeof(double));
+    w->cc = malloc((size_t)L * sizeof(double));
+    w->tmp = malloc(MAX_BLOCKS * sizeof(double));
+    if (w->Cb && w->C && w->etab && w->tt && w->cc && w->tmp) return 0;
+    work_free(w);
+    return -1;
+}
+
+static int result_alloc(TcafResult *r, int ns, int L)
+{
+    r->c = malloc((size_t)ns * L * sizeof(double) + 1);
+    r->c_se = malloc((size_t)ns * L * sizeof(double) + 1);
+    r->eta = malloc((size_t)ns * sizeof(double) + 1);
+    r->eta_se = malloc((size_t)ns * sizeof(double) + 1);
+    r->c0_ratio = malloc((size_t)ns * sizeof(double) + 1);
+    r->c0_ratio_se = malloc((size_t)ns * sizeof(double) + 1);
+    r->fit_points = calloc((size_t)ns + 1, sizeof(int));
+    return r->c && r->c_se && r->eta && r->eta_se && r->c0_ratio && r->c0_ratio_se && r->fit_points ? 0 : -1;
+}
+
+void tcaf_result_free(TcafResult *r)
+{
+    free(r->c); free(r->c_se); free(r->eta); free(r->eta_se); free(r->c0_ratio); free(r->c0_ratio_se);
+    free(r->fit_points);
+    memset(r, 0, sizeof *r);
+}
+
+/* C_perp(k,t) of eq. 26 per block (Cb) and over all origins (C). */
+static void correlations(const Tcaf *t, int npol, Work *w)
+{
+    const int ns = t->nshell, L = t->nlags;
     for (int q = 0; q < ns; q++) {
         const double k2 = t->shell_k[q] * t->shell_k[q];
         const double norm = k2 / (t->count * (double)npol * t->shell_nvec[q]);
         for (int l = 0; l < L; l++) {
             double sum = 0.0;
-            for (int j = 0; j < B; j++) {
-                const double *a = t->acc + (size_t)blk[j] * ns * L;
-                Cb[((size_t)j * ns + q) * L + l] = a[(size_t)q * L + l] * norm / t->acc_n[blk[j]];
+            for (int j = 0; j < w->B; j++) {
+                const double *a = t->acc + (size_t)w->blk[j] * ns * L;
+                w->Cb[((size_t)j * ns + q) * L + l] = a[(size_t)q * L + l] * norm / t->acc_n[w->blk[j]];
                 sum += a[(size_t)q * L + l];
             }
-            C[(size_t)q * L + l] = t->ndone > 0 ? sum * norm / t->ndone : NAN;
+            w->C[(size_t)q * L + l] = t->ndone > 0 ? sum * norm / t->ndone : NAN;
         }
-        /* equipartition check */
-        for (int j = 0; j < B; j++) tmp[j] = Cb[((size_t)j * ns + q) * L] / (k2 * s->kBT * invm);
-        double se;
-        mean_se(tmp, B, &se);
-        c0r[q] = C[(size_t)q * L] / (k2 * s->kBT * invm);
-        c0r_se[q] = se;
-        /* fit window: lags 1.. while the average normalised TCAF stays >= fit_min */
-        int n = 0;
-        for (int l = 1; l < L; l++) {
-            const double c = C[(size_t)q * L + l] / C[(size_t)q * L];
-            if (!(c >= t->fit_min)) break;
-            n++;
-        }
-        nfit[q] = n;
-        eta[q] = eta_se[q] = NAN;
-        for (int j = 0; j < B; j++) etab[(size_t)j * ns + q] = NAN;
-        if (n < 3) continue;   /* decay not resolved by the sampling interval */
-        for (int l = 0; l < n; l++) { tt[l] = (l + 1) * dts; cc[l] = C[(size_t)q * L + l + 1] / C[(size_t)q * L]; }
-        tcaf_fit_eta(tt, cc, n, k2, t->rho, &eta[q]);
-        for (int j = 0; j < B; j++) {
-            const double *cb = Cb + ((size_t)j * ns + q) * L;
-            for (int l = 0; l < n; l++) cc[l] = cb[l + 1] / cb[0];
-            double e;
-            tcaf_fit_eta(tt, cc, n, k2, t->rho, &e);
-            etab[(size_t)j * ns + q] = e;
-            tmp[j] = e;
-        }
-        mean_se(tmp, B, &eta_se[q]);
     }
-    /* k -> 0: weighted polynomial in k^2 over the shells with |k| <= extrap_kmax */
-    const int P = t->extrap_order + 1;
-    double coef[TCAF_MAX_ORDER + 1], coef_se[TCAF_MAX_ORDER + 1], kend = 0.0;
-    const int nx = extrapolate_k0(t, eta, eta_se, etab, B, coef, coef_se, &kend);
-    if (nx < 0) {
-        free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
-        return -1;
-    }
-    /* eta(first shell) - eta(last fitted shell), block by block */
-    int qlast = -1;
-    for (int q = 0; q < ns; q++) if (isfinite(eta[q])) qlast = q;
-    double drop = NAN, drop_se = NAN;
-    if (qlast > 0 && isfinite(eta[0])) {
-        drop = eta[0] - eta[qlast];
-        for (int j = 0; j < B; j++) tmp[j] = etab[(size_t)j * ns] - etab[(size_t)j * ns + qlast];
-        mean_se(tmp, B, &drop_se);
-    }
-    /* summary */
-    fprintf(summary, "tcaf_eta_k0\t%.10g\t%.4g\n", coef[0], coef_se[0]);
-    if (P > 1) fprintf(summary, "tcaf_eta_k2_coefficient\t%.10g\t%.4g\n", coef[1], coef_se[1]);
-    if (P > 2) fprintf(summary, "tcaf_eta_k4_coefficient\t%.10g\t%.4g\n", coef[2], coef_se[2]);
-    fprintf(summary, "tcaf_eta_drop\t%.10g\t%.4g\n", drop, drop_se);
-    for (int q = 0; q < ns; q++)
-        fprintf(summary, "tcaf_eta_n2_%d\t%.10g\t%.4g\n", t->shell_n2[q], eta[q], eta_se[q]);
-    {
-        double r = 0.0;
-        int m = 0;
-        for (int j = 0; j < B; j++) {
-            double sum = 0.0;
-            for (int q = 0; q < ns; q++) sum += Cb[((size_t)j * ns + q) * L] / (t->shell_k[q] * t->shell_k[q] * s->kBT * invm);
-            tmp[m++] = sum / ns;
-        }
-        double se;
-        for (int q = 0; q < ns; q++) r += c0r[q];
-        mean_se(tmp, m, &se);
-        fprintf(summary, "tcaf_C0_equipartition_ratio\t%.10g\t%.4g\n", ns > 0 ? r / ns : NAN, se);
-    }
-    fprintf(summary, "tcaf_origins\t%lld\t0\n", t->ndone);
-    fprintf(summary, "tcaf_vectors\t%d\t0\n", t->nvec);
-    fprintf(summary, "tcaf_shells\t%d\t0\n", ns);
-    fprintf(summary, "tcaf_extrapolation_shells\t%d\t0\n", nx);
-    fprintf(summary, "tcaf_mass_density\t%.10g\t0\n", t->rho);
-    /* tables */
-    int rc = 0;
-    char path[1024];
-    snprintf(path, sizeof path, "%s/tcaf.tsv", dir);
-    FILE *f = fopen(path, "w");
-    if (f) {
-        fprintf(f, "# C_perp(k,t)/C_perp(k,0) (eqs 26, 28) averaged over %lld time origins; se over %d blocks of origins\n", t->ndone, B);
-        fprintf(f, "# column 2+2q: shell q (0-based) of tcaf_eta.tsv\n");
-        fprintf(f, "t");
-        for (int q = 0; q < ns; q++) fprintf(f, "\tc_n2_%d\tc_n2_%d_se", t->shell_n2[q], t->shell_n2[q]);
-        fputc('\n', f);
-        for (int l = 0; l < L; l++) {
-            fprintf(f, "%.6g", l * dts);
-            for (int q = 0; q < ns; q++) {
-                for (int j = 0; j < B; j++) { const double *cb = Cb + ((size_t)j * ns + q) * L; tmp[j] = cb[l] / cb[0]; }
-                double se;
-                mean_se(tmp, B, &se);
-                fprintf(f, "\t%.6g\t%.3g", C[(size_t)q * L + l] / C[(size_t)q * L], se);
-            }
-            fputc('\n', f);
-        }
-        rc |= fclose(f);
-    } else rc = -1;
-    snprintf(path, sizeof path, "%s/tcaf_eta.tsv", dir);
-    f = fopen(path, "w");
-    if (f) {
-        fprintf(f, "# eta(k) from C/C0 = exp(-eta k^2 t / rho) (eq. 28), rho = %g, fit over the lags with <C/C0> >= %g;\n"
-                   "# se from %d blocks of time origins; k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g:",
-                t->rho, t->fit_min, B, t->extrap_order, t->extrap_kmax);
-        for (int p = 0; p < P; p++) fprintf(f, " c%d = %.6g +- %.3g", p, coef[p], coef_se[p]);
-        fprintf(f, "\nk\tn2\tvectors\teta\teta_se\tfit_points\tfit_tmax\tC0_ratio\tC0_ratio_se\teta_extrapolation\n");
-        for (int q = 0; q < ns; q++) {
-            double fit = 0.0, xp = 1.0;
-            for (int p = 0; p < P; p++) { fit += coef[p] * xp; xp *= t->shell_k[q] * t->shell_k[q]; }
-            fprintf(f, "%.6g\t%d\t%d\t%.8g\t%.3g\t%d\t%.4g\t%.6g\t%.3g\t%.6g\n", t->shell_k[q], t->shell_n2[q],
-                    t->shell_nvec[q], eta[q], eta_se[q], nfit[q], nfit[q] * dts, c0r[q], c0r_se[q],
-                    t->shell_k[q] <= t->extrap_kmax * (1 + 1e-12) ? fit : NAN);
-        }
-        rc |= fclose(f);
-    } else rc = -1;
-    /* the k -> 0 fit as a curve from k = 0 */
-    snprintf(path, sizeof path, "%s/tcaf_extrapolation.tsv", dir);
-    f = fopen(path, "w");
-    if (f) {
-        fprintf(f, "k\teta_fit\n");
-        for (int i = 0; i <= 40; i++) {
-            const double k = kend * i / 40.0;
-            double fit = 0.0, xp = 1.0;
-            for (int p = 0; p < P; p++) { fit += coef[p] * xp; xp *= k * k; }
-            fprintf(f, "%.6g\t%.8g\n", k, fit);
-        }
-        rc |= fclose(f);
-    } else rc = -1;
-    free(Cb); free(C); free(eta); free(eta_se); free(etab); free(c0r); free(c0r_se); free(nfit); free(tt); free(cc); free(tmp);
-    return rc ? -1 : 0;
 }
 
-int tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
-                   long long steps, int nblocks)
+/* Shell q: C(k,0) against equipartition, C(k,t)/C(k,0) with its block
+ * errors, and eta(k) from eq. 28 over all origins and block by block. */
+static void analyse_shell(const Tcaf *t, const System *s, Work *w, int q, TcafResult *r)
 {
-    long long v;
-    memset(t, 0, sizeof *t);
-    t->on = 1;
-    if (scene_int(sc, g, "every", &v, 1, 1, 1000000, 0) < 0) return -1;
-    t->every = (int)v;
-    if (scene_int(sc, g, "window", &v, 0, 1, 100000000, 1) < 0) return -1;
-    t->window = (int)v;
-    if (scene_int(sc, g, "origin_every", &v, t->window / 10 > 0 ? t->window / 10 : 1, 1, 100000000, 0) < 0) return -1;
-    t->origin_every = (int)v;
-    if (t->window % t->every || t->origin_every % t->every)
-        return scene_fail(sc, g, "window (%d) and origin_every (%d) must be multiples of every (%d)",
-                          t->window, t->origin_every, t->every);
-    if (t->window / t->origin_every + 1 > 1000)
-        return scene_fail(sc, g, "window / origin_every = %d origins in flight; allowed up to 999",
-                          t->window / t->origin_every);
-    if (scene_int(sc, g, "n2max", &v, 9, 1, 400, 0) < 0) return -1;
-    t->n2max = (int)v;
-    if (scene_int(sc, g, "axis_nmax", &v, 0, 0, TCAF_NMAX, 0) < 0) return -1;
-    t->axis_nmax = (int)v;
-    if (scene_bool(sc, g, "include_bodies", &t->include_bodies, 0) < 0) return -1;
-    if (scene_double(sc, g, "fit_min", &t->fit_min, 0.3, 1e-6, 0.99, 0) < 0) return -1;
-    if (scene_double(sc, g, "extrapolate_kmax", &t->extrap_kmax, 1e9, 0.0, 1e9, 0) < 0) return -1;
-    if (scene_int(sc, g, "extrapolate_order", &v, 1, 0, TCAF_MAX_ORDER, 0) < 0) return -1;
-    t->extrap_order = (int)v;
-    const char *tn;
-    if (scene_string(sc, g, "type", &tn, NULL, NULL, 0) < 0) return -1;
-    t->type = -1;
-    if (tn) {
-        for (int k = 0; k < s->ntypes; k++) if (!strcmp(s->types[k].name, tn)) t->type = k;
-        if (t->type < 0) return scene_fail(sc, g, "unknown type \"%s\"", tn);
+    const int ns = t->nshell, L = t->nlags, B = w->B;
+    const double k2 = t->shell_k[q] * t->shell_k[q];
+    const double *C = w->C + (size_t)q * L;
+    for (int j = 0; j < B; j++) w->tmp[j] = w->Cb[((size_t)j * ns + q) * L] / (k2 * s->kBT * w->invm);
+    mean_se(w->tmp, B, &r->c0_ratio_se[q]);
+    r->c0_ratio[q] = C[0] / (k2 * s->kBT * w->invm);
+    for (int l = 0; l < L; l++) {
+        for (int j = 0; j < B; j++) { const double *cb = w->Cb + ((size_t)j * ns + q) * L; w->tmp[j] = cb[l] / cb[0]; }
+        mean_se(w->tmp, B, &r->c_se[(size_t)q * L + l]);
+        r->c[(size_t)q * L + l] = C[l] / C[0];
     }
-    if (s->box.shear_rate != 0.0)
-        return scene_fail(sc, g, "the TCAF needs a fluid at rest; the scene has shear_rate = %g", s->box.shear_rate);
-    const long long norig = steps >= t->window ? (steps - t->window) / t->origin_every + 1 : 0;
-    if (norig < nblocks)
-        return scene_fail(sc, g, "the run gives %lld complete time origins (steps %lld, window %d, origin_every %d); "
-                          "need at least one per block (%d)", norig, steps, t->window, t->origin_every, nblocks);
+    /* fit window: lags 1.. while the average normalised TCAF stays >= fit_min */
+    int n = 0;
+    for (int l = 1; l < L; l++) {
+        if (!(C[l] / C[0] >= t->p.fit_min)) break;
+        n++;
+    }
+    r->fit_points[q] = n;
+    r->eta[q] = r->eta_se[q] = NAN;
+    for (int j = 0; j < B; j++) w->etab[(size_t)j * ns + q] = NAN;
+    if (n < 3) return;   /* decay not resolved by the sampling interval */
+    for (int l = 0; l < n; l++) { w->tt[l] = (l + 1) * r->dt_lag; w->cc[l] = C[l + 1] / C[0]; }
+    tcaf_fit_eta(w->tt, w->cc, n, k2, t->rho, &r->eta[q]);
+    for (int j = 0; j < B; j++) {
+        const double *cb = w->Cb + ((size_t)j * ns + q) * L;
+        for (int l = 0; l < n; l++) w->cc[l] = cb[l + 1] / cb[0];
+        double e;
+        tcaf_fit_eta(w->tt, w->cc, n, k2, t->rho, &e);
+        w->etab[(size_t)j * ns + q] = e;
+        w->tmp[j] = e;
+    }
+    mean_se(w->tmp, B, &r->eta_se[q]);
+}
+
+/* eta(first shell) - eta(last fitted shell), its error block by block; the
+ * mean equipartition ratio over the shells, its error from the blocks. */
+static void shell_summaries(const Tcaf *t, const System *s, Work *w, TcafResult *r)
+{
+    const int ns = t->nshell, L = t->nlags, B = w->B;
+    int qlast = -1;
+    for (int q = 0; q < ns; q++) if (isfinite(r->eta[q])) qlast = q;
+    r->drop = r->drop_se = NAN;
+    if (qlast > 0 && isfinite(r->eta[0])) {
+        r->drop = r->eta[0] - r->eta[qlast];
+        for (int j = 0; j < B; j++) w->tmp[j] = w->etab[(size_t)j * ns] - w->etab[(size_t)j * ns + qlast];
+        mean_se(w->tmp, B, &r->drop_se);
+    }
+    double sum_r = 0.0;
+    for (int j = 0; j < B; j++) {
+        double sum = 0.0;
+        for (int q = 0; q < ns; q++) sum += w->Cb[((size_t)j * ns + q) * L] / (t->shell_k[q] * t->shell_k[q] * s->kBT * w->invm);
+        w->tmp[j] = sum / ns;
+    }
+    for (int q = 0; q < ns; q++) sum_r += r->c0_ratio[q];
+    mean_se(w->tmp, B, &r->c0_ratio_mean_se);
+    r->c0_ratio_mean = ns > 0 ? sum_r / ns : NAN;
+}
+
+int tcaf_analyse(const Tcaf *t, const System *s, TcafResult *r)
+{
+    memset(r, 0, sizeof *r);
+    if (t->nblocks > MAX_BLOCKS) return -1;   /* more than Work.blk and the per-block statistics hold */
+    Work w;
+    if (work_alloc(&w, t, s)) return -1;
+    r->nshell = t->nshell;
+    r->nlags = t->nlags;
+    r->nblocks = w.B;
+    r->dt_lag = t->p.every * s->dt;
+    if (result_alloc(r, t->nshell, t->nlags)) { work_free(&w); tcaf_result_free(r); return -1; }
+    correlations(t, s->box.dim - 1, &w);
+    for (int q = 0; q < t->nshell; q++) analyse_shell(t, s, &w, q, r);
+    r->nextrap = extrapolate_k0(t, r->eta, r->eta_se, w.etab, w.B, r->coef, r->coef_se, &r->kend);
+    shell_summaries(t, s, &w, r);
+    work_free(&w);
+    if (r->nextrap < 0) { tcaf_result_free(r); return -1; }
     return 0;
+}
+
+/* The k -> 0 polynomial of r at k. */
+static double extrapolation_at(const Tcaf *t, const TcafResult *r, double k)
+{
+    double fit = 0.0, xp = 1.0;
+    for (int p = 0; p <= t->p.extrap_order; p++) { fit += r->coef[p] * xp; xp *= k * k; }
+    return fit;
+}
+
+static void write_summary(const Tcaf *t, const TcafResult *r, FILE *summary)
+{
+    const int P = t->p.extrap_order + 1;
+    fprintf(summary, "tcaf_eta_k0\t%.10g\t%.4g\n", r->coef[0], r->coef_se[0]);
+    if (P > 1) fprintf(summary, "tcaf_eta_k2_coefficient\t%.10g\t%.4g\n", r->coef[1], r->coef_se[1]);
+    if (P > 2) fprintf(summary, "tcaf_eta_k4_coefficient\t%.10g\t%.4g\n", r->coef[2], r->coef_se[2]);
+    fprintf(summary, "tcaf_eta_drop\t%.10g\t%.4g\n", r->drop, r->drop_se);
+    for (int q = 0; q < t->nshell; q++)
+        fprintf(summary, "tcaf_eta_n2_%d\t%.10g\t%.4g\n", t->shell_n2[q], r->eta[q], r->eta_se[q]);
+    fprintf(summary, "tcaf_C0_equipartition_ratio\t%.10g\t%.4g\n", r->c0_ratio_mean, r->c0_ratio_mean_se);
+    fprintf(summary, "tcaf_origins\t%lld\t0\n", t->ndone);
+    fprintf(summary, "tcaf_vectors\t%d\t0\n", t->nvec);
+    fprintf(summary, "tcaf_shells\t%d\t0\n", t->nshell);
+    fprintf(summary, "tcaf_extrapolation_shells\t%d\t0\n", r->nextrap);
+    fprintf(summary, "tcaf_mass_density\t%.10g\t0\n", t->rho);
+}
+
+static FILE *open_table(const char *dir, const char *name)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return fopen(path, "w");
+}
+
+/* tcaf.tsv: C(k,t)/C(k,0) of every shell */
+static int write_curves(const Tcaf *t, const TcafResult *r, const char *dir)
+{
+    FILE *f = open_table(dir, "tcaf.tsv");
+    if (!f) return -1;
+    const int ns = t->nshell, L = t->nlags;
+    fprintf(f, "# C_perp(k,t)/C_perp(k,0) (eqs 26, 28) averaged over %lld time origins; se over %d blocks of origins\n",
+            t->ndone, r->nblocks);
+    fprintf(f, "# column 2+2q: shell q (0-based) of tcaf_eta.tsv\n");
+    fprintf(f, "t");
+    for (int q = 0; q < ns; q++) fprintf(f, "\tc_n2_%d\tc_n2_%d_se", t->shell_n2[q], t->shell_n2[q]);
+    fputc('\n', f);
+    for (int l = 0; l < L; l++) {
+        fprintf(f, "%.6g", l * r->dt_lag);
+        for (int q = 0; q < ns; q++) fprintf(f, "\t%.6g\t%.3g", r->c[(size_t)q * L + l], r->c_se[(size_t)q * L + l]);
+        fputc('\n', f);
+    }
+    return fclose(f);
+}
+
+/* tcaf_eta.tsv: eta(k) per shell with its fit and the k -> 0 polynomial */
+static int write_eta(const Tcaf *t, const TcafResult *r, const char *dir)
+{
+    FILE *f = open_table(dir, "tcaf_eta.tsv");
+    if (!f) return -1;
+    fprintf(f, "# eta(k) from C/C0 = exp(-eta k^2 t / rho) (eq. 28), rho = %g, fit over the lags with <C/C0> >= %g;\n"
+               "# se from %d blocks of time origins; k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g:",
+            t->rho, t->p.fit_min, r->nblocks, t->p.extrap_order, t->p.extrap_kmax);
+    for (int p = 0; p <= t->p.extrap_order; p++) fprintf(f, " c%d = %.6g +- %.3g", p, r->coef[p], r->coef_se[p]);
+    fprintf(f, "\nk\tn2\tvectors\teta\teta_se\tfit_points\tfit_tmax\tC0_ratio\tC0_ratio_se\teta_extrapolation\n");
+    for (int q = 0; q < t->nshell; q++) {
+        const double k = t->shell_k[q];
+        fprintf(f, "%.6g\t%d\t%d\t%.8g\t%.3g\t%d\t%.4g\t%.6g\t%.3g\t%.6g\n", k, t->shell_n2[q],
+                t->shell_nvec[q], r->eta[q], r->eta_se[q], r->fit_points[q], r->fit_points[q] * r->dt_lag,
+                r->c0_ratio[q], r->c0_ratio_se[q], k <= t->p.extrap_kmax * (1 + 1e-12) ? extrapolation_at(t, r, k) : NAN);
+    }
+    return fclose(f);
+}
+
+/* tcaf_extrapolation.tsv: the k -> 0 fit as a curve from k = 0 */
+static int write_extrapolation(const Tcaf *t, const TcafResult *r, const char *dir)
+{
+    FILE *f = open_table(dir, "tcaf_extrapolation.tsv");
+    if (!f) return -1;
+    fprintf(f, "k\teta_fit\n");
+    for (int i = 0; i <= 40; i++) {
+        const double k = r->kend * i / 40.0;
+        fprintf(f, "%.6g\t%.8g\n", k, extrapolation_at(t, r, k));
+    }
+    return fclose(f);
+}
+
+int tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir)
+{
+    TcafResult r;
+    if (tcaf_analyse(t, s, &r)) return -1;
+    write_summary(t, &r, summary);
+    int rc = 0;
+    rc |= write_curves(t, &r, dir);
+    rc |= write_eta(t, &r, dir);
+    rc |= write_extrapolation(t, &r, dir);
+    tcaf_result_free(&r);
+    return rc ? -1 : 0;
 }

@@ -23,10 +23,10 @@
 #include <stdio.h>
 #include <complex.h>
 #include "system.h"
-#include "scene.h"
+#include "io.h"
 
+/* measure.tcaf of the scene, read and checked by the input layer (setup_measure.c). */
 typedef struct {
-    int on;
     int every;                /* sampling interval (steps) */
     int window;               /* correlation window (steps, multiple of every) */
     int origin_every;         /* steps between time origins (multiple of every) */
@@ -36,6 +36,12 @@ typedef struct {
     double fit_min;           /* fit lags while <C/C0> >= fit_min */
     double extrap_kmax;       /* shells with |k| <= this enter the k -> 0 fit */
     int extrap_order;         /* polynomial degree in k^2 of the k -> 0 fit */
+    int include_bodies;       /* the run adds the colloid bodies (tcaf_set_bodies) */
+} TcafParams;
+
+typedef struct {
+    int on;                   /* set up by tcaf_init */
+    TcafParams p;
     int nblocks;
     long long norig_expected; /* complete origins the run will give */
     /* derived */
@@ -55,21 +61,20 @@ typedef struct {
     long long *acc_n;         /* nblocks: complete origins */
     long long nstarted, ndone;
     /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
-    int include_bodies, nbody;
+    int nbody;
     const double *body_R, *body_V;
     double body_mass;
 } Tcaf;
 
-/* measure.tcaf = { every; window; origin_every; n2max; axis_nmax; type; fit_min;
- * extrapolate_kmax; extrapolate_order; } of the scene group g (validated). */
-int  tcaf_configure(Scene *sc, const config_setting_t *g, const System *s, Tcaf *t,
-                    long long steps, int nblocks);
 /* Add nbody bodies of mass M at R with velocity V (arrays owned by the caller,
  * read at every sample) to the current: J += sum_b M V_b exp(i k.R_b); rho too. */
 void tcaf_set_bodies(Tcaf *t, const System *s, int nbody, const double *R, const double *V, double M);
-/* Wave vectors and buffers; -1 on bad sizes or memory. */
-int  tcaf_init(Tcaf *t, const System *s, int nblocks, long long prod_steps);
+/* Wave vectors and buffers for the parameters p; -1 on bad sizes or memory. */
+int  tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long long prod_steps);
 void tcaf_free(Tcaf *t);
+/* The time origins in flight, their running sums and the block sums, written
+ * or read for the checkpoint. */
+void tcaf_io(Io *io, Tcaf *t);
 /* J(k) of the selection for every wave vector into t->J (eq. 23). */
 void tcaf_current(Tcaf *t, const System *s);
 /* J_perp = (1 - k k / k^2) J (both transverse polarisations, eqs 25-26). */
@@ -88,8 +93,34 @@ int  tcaf_extrapolate(const double *k, const double *eta, const double *w, int n
  * either may be NULL. */
 int  tcaf_extrapolate_cov(const double *k, const double *eta, const double *w, int n, int order,
                           double *coef, double *covariance, double *chi2);
-/* tcaf.tsv (normalised TCAF per shell), tcaf_eta.tsv (eta(k)) and the
- * summary rows tcaf_eta_k0, tcaf_eta_k2_coefficient, tcaf_eta_drop, ... */
+/* What the TCAF of a run gives (tcaf_analyse; tcaf_write prints it). Shell q
+ * is |k| = shell_k[q] of the Tcaf, lag l the time l dt_lag. Errors are the
+ * standard errors over the blocks of time origins. */
+typedef struct {
+    int nshell, nlags;
+    int nblocks;              /* blocks with a complete time origin */
+    double dt_lag;            /* time between lags */
+    double *c, *c_se;         /* nshell x nlags: C_perp(k,t)/C_perp(k,0), eqs 26 and 28 */
+    double *eta, *eta_se;     /* nshell: eta(k) of eq. 28 (nan: decay not resolved, < 3 lags) */
+    int *fit_points;          /* nshell: lags in the fit (those with <C/C0> >= fit_min) */
+    double *c0_ratio, *c0_ratio_se;      /* nshell: C_perp(k,0) / (k^2 kBT <1/m>), 1 at equipartition */
+    double c0_ratio_mean, c0_ratio_mean_se;   /* over the shells */
+    /* eta(k) = sum_p coef[p] k^(2p) over the shells with |k| <= extrap_kmax:
+     * coef[0] = eta(k -> 0); p up to extrap_order */
+    double coef[TCAF_MAX_ORDER + 1], coef_se[TCAF_MAX_ORDER + 1];
+    int nextrap;              /* shells in that fit */
+    double kend;              /* largest |k| among them */
+    double drop, drop_se;     /* eta(first shell) - eta(last shell with an eta) */
+} TcafResult;
+
+/* Fits, block errors and the k -> 0 extrapolation of the accumulated TCAF
+ * (malloc'd arrays: tcaf_result_free). Returns 0, or -1 when out of memory or
+ * with more blocks than MAX_BLOCKS (blockavg.h). */
+int  tcaf_analyse(const Tcaf *t, const System *s, TcafResult *out);
+void tcaf_result_free(TcafResult *r);
+/* tcaf.tsv (normalised TCAF per shell), tcaf_eta.tsv (eta(k)),
+ * tcaf_extrapolation.tsv and the summary rows tcaf_eta_k0,
+ * tcaf_eta_k2_coefficient, tcaf_eta_drop, ...: tcaf_analyse, formatted. */
 int  tcaf_write(const Tcaf *t, const System *s, FILE *summary, const char *dir);
 
 #endif
