@@ -20,8 +20,15 @@ endif
 CFLAGS_ALL := $(WARN) $(OPT) -fopenmp -D_DEFAULT_SOURCE
 DEPS_STAMP := build/.deps-ok
 
-SRC := $(filter-out src/main.c,$(wildcard src/*.c))
-OBJ := $(patsubst src/%.c,$(BUILD)/%.o,$(SRC))
+# The simulator's folders, lowest layer first (README.md, "The simulator"): a
+# file includes only from its own layer and those before it (tests/layers.sh).
+LAYERS := core pair dynamics bodies measure analysis io app
+SRC_DIRS := $(addprefix src/,$(LAYERS))
+INCLUDES := $(addprefix -I,$(SRC_DIRS))
+HDRS := $(wildcard $(addsuffix /*.h,$(SRC_DIRS)))
+SRC := $(filter-out src/app/main.c,$(wildcard $(addsuffix /*.c,$(SRC_DIRS))))
+OBJ := $(patsubst %.c,$(BUILD)/%.o,$(notdir $(SRC)))
+vpath %.c $(SRC_DIRS)
 BIN := bin/dpd
 
 .PHONY: all deps test test-slurm figures check reproduce paper paper-pdf bench bench-peer clean
@@ -37,10 +44,10 @@ $(DEPS_STAMP): tools/deps
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
 
-$(BUILD)/%.o: src/%.c src/*.h | $(DEPS_STAMP)
+$(BUILD)/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)
 	@echo "CC $<"
-	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL)"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL)"' -c $< -o $@
 
 # the objects that print the version are rebuilt when it changes, not only when their source does
 # (an edit compiled before its commit would otherwise keep the older commit's name)
@@ -65,11 +72,11 @@ ifeq ($(SANITIZE),1)
 else
   BARE := build/dpd-bare
 endif
-BARE_OBJ := $(patsubst src/%.c,$(BUILD)/bare/%.o,$(SRC) src/main.c)
-$(BUILD)/bare/%.o: src/%.c src/*.h | $(DEPS_STAMP)
+BARE_OBJ := $(patsubst %.c,$(BUILD)/bare/%.o,$(notdir $(SRC) src/app/main.c))
+$(BUILD)/bare/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)/bare
 	@echo "CC $< (bare)"
-	@$(CC) $(CFLAGS_ALL) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE"' -c $< -o $@
 
 $(BARE): $(BARE_OBJ)
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm

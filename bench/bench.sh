@@ -268,3 +268,57 @@ if [ "${MODULES:-1}" = 1 ]; then
     echo "unused modules: bin/dpd against the bare build (standard scene, no module on; bench/modules.tsv):"
     column -t -s $'\t' bench/modules.tsv
 fi
+
+# ---- a refactor against the binary before it (issue 24): BASE=path/to/earlier/dpd (e.g. built by
+# `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the three kernels -- the
+# standard scene, the rotating particles of Pan et al. 2008 (bench/pan-fluid.cfg) and the m = 0 solver
+# (the Couette scene of phan-thien-2016 Fig. 3) -- instructions per production particle-step
+# (cachegrind, the difference of a long and a short run, deterministic) and CPU time per particle-step
+# (the two binaries alternating, median of REPEAT pairs' ratios). Written to bench/refactor.tsv.
+# Without BASE the section is skipped.
+if [ -n "${BASE:-}" ]; then
+    [ -x "$BASE" ] || { echo "bench: BASE=$BASE is not an executable"; exit 1; }
+    kernel_args() {  # KERNEL -> scene and settings of 3000 particles (standard, pan) or its own size (m = 0)
+        case $1 in
+            standard) echo "bench/standard.cfg --set box=[10.0,10.0,10.0]" ;;
+            pan2008) echo "bench/pan-fluid.cfg" ;;
+            m0) echo "experiments/phan-thien-2016/fig03-couette-profile/couette.cfg" ;;
+        esac
+    }
+    kernel_irefs() {  # BIN KERNEL STEPS -> instructions of the whole run
+        # shellcheck disable=SC2046
+        OMP_NUM_THREADS=1 valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+            "$1" run $(kernel_args "$2") --out "$out/refactor-cg" --threads 1 --quiet --set steps="$3" \
+            --set equilibration=20 2>&1 >/dev/null | awk '/I *refs:/ { gsub(",", "", $NF); print $NF }'
+    }
+    kernel_cpu() {  # BIN KERNEL -> production particle-steps per CPU second
+        # shellcheck disable=SC2046
+        OMP_NUM_THREADS=1 "$1" run $(kernel_args "$2") --out "$out/refactor-run" --threads 1 --quiet \
+            --set steps="$3" --set equilibration=20 >/dev/null && val "$out/refactor-run" production_particle_steps_per_second_cpu
+    }
+    {
+        printf 'kernel\tinstructions per particle-step, base\tnew\tnew / base\tCPU time new / base (median of %s pairs)\trange\n' "$REPEAT"
+        for k in standard pan2008 m0; do
+            case $k in m0) short=20 long=60 ;; *) short=50 long=150 ;; esac
+            n=$("$DPD" run $(kernel_args $k) --dry-run --out "$out/refactor-plan" | awk '$1 == "particles" { print $2 }')
+            ib=$(( $(kernel_irefs "$BASE" $k $long) - $(kernel_irefs "$BASE" $k $short) ))
+            in=$(( $(kernel_irefs "$DPD" $k $long) - $(kernel_irefs "$DPD" $k $short) ))
+            r=""
+            for j in $(seq "$REPEAT"); do   # alternating, so slow spells of the machine hit both
+                a=$(kernel_cpu "$BASE" $k $long); b=$(kernel_cpu "$DPD" $k $long)
+                r+="$(awk -v a="$a" -v b="$b" 'BEGIN{print a/b}') "   # CPU time ratio = inverse rate ratio
+            done
+            printf '%s (%d particles)\t%.1f\t%.1f\t%.4f\t%.3f\t%s\n' "$k" "$n" \
+                "$(awk -v i="$ib" -v n="$n" -v s=$((long - short)) 'BEGIN{print i / (n * s)}')" \
+                "$(awk -v i="$in" -v n="$n" -v s=$((long - short)) 'BEGIN{print i / (n * s)}')" \
+                "$(awk -v a="$ib" -v b="$in" 'BEGIN{print b / a}')" \
+                "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)"
+        done
+        printf 'date, commits\t%s\t%s\t-\tbase %s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" \
+            "$("$BASE" --version 2>/dev/null | head -1 || echo unknown)" "$(uname -m), $(nproc --all) cores"
+    } > "$out/refactor.tsv"
+    cp "$out/refactor.tsv" bench/refactor.tsv
+    echo
+    echo "this build against BASE=$BASE (bench/refactor.tsv):"
+    column -t -s $'\t' bench/refactor.tsv
+fi

@@ -7,8 +7,8 @@
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh library-exits
-for f in src/*.c; do
-    [ "$f" = src/main.c ] && continue
+for f in src/*/*.c; do
+    [ "$f" = src/app/main.c ] && continue
     # strip /* */ and // comments, keep line numbers
     hits=$(perl -0pe 's{/\*.*?\*/}{$& =~ tr/\n//cdr}gse; s{//[^\n]*}{}g' "$f" \
            | grep -nE '(^|[^A-Za-z0-9_])(exit|_exit|_Exit|quick_exit|abort)[[:space:]]*\(' || true)

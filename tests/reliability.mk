@@ -8,14 +8,14 @@
 # Needs clang: `tools/deps fuzz`.
 FUZZ_SECONDS ?= 900
 FUZZ_DIR := build/fuzz
-FUZZ_SRC := src/scene.c src/setup.c src/system.c src/box.c src/random.c
+FUZZ_SRC := src/io/scene.c src/io/setup.c src/core/system.c src/core/box.c src/core/random.c
 FUZZ_FLAGS := -std=c11 -Wall -Wextra -Werror -D_DEFAULT_SOURCE -g -O1 -fno-omit-frame-pointer \
               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
 
-$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(FUZZ_SRC) src/*.h
+$(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(HDRS)
 	@tools/deps fuzz
 	@mkdir -p $(FUZZ_DIR)
-	clang $(FUZZ_FLAGS) $(PKG_CFLAGS) -Isrc -o $@ tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(PKG_LIBS) -lm
+	clang $(FUZZ_FLAGS) $(PKG_CFLAGS) $(INCLUDES) -o $@ tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(PKG_LIBS) -lm
 
 .PHONY: fuzz
 fuzz: $(FUZZ_DIR)/fuzz_scene

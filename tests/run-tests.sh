@@ -43,7 +43,7 @@ for bin in "$@"; do
     pass=$((pass + p)); fail=$((fail + f))
     rm -f "$log"
 done
-for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/library_exits.sh tests/h5md.sh; do
+for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh; do
 name=$(basename "$script")
 log=$(mktemp)
 t0=$(date +%s.%N)

@@ -59,7 +59,7 @@ static void torque_about_centroid_across_boundary(void **state)
     for (int i = 0; i < 3; i++) { s.type[i] = type[i]; s.id[i] = (uint32_t)i; }
     FieldMeasure fm;
     memset(&fm, 0, sizeof fm);
-    assert_int_equal(field_init(&fm, &s, 2), 0);
+    assert_int_equal(field_init(&fm, &(FieldParams){0}, &s, 2), 0);
     field_sample(&fm, &s, 0);
     CHECK_ABS("centroid x (minimum image)", fmod(fm.centroid[1][0] + 6.0, 6.0), 0.0, 1e-12);
     /* r = (+0.1, 0) x (0, 1) + (-0.1, 0) x (0, -1) = 0.2 */

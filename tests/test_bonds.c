@@ -70,10 +70,10 @@ static void make_col(Col *c, double side0, double a_intra, int nsolv, double kBT
             s->x[3 * i + 1] = 6.0 * tu_uniform(&st);
         }
     }
-    c->b.type = 1;
-    c->b.ncol = 1;
-    c->b.side = SIDE;
-    c->b.H = H_SPRING;
+    c->b.p.type = 1;
+    c->b.p.ncol = 1;
+    c->b.p.side = SIDE;
+    c->b.p.H = H_SPRING;
     c->b.ids = calloc(3, sizeof(uint32_t));
     c->b.index = calloc((size_t)n + 1, sizeof(int));
     assert_non_null(c->b.ids);

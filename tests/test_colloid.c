@@ -37,16 +37,9 @@ static Colloids *one_colloid(System *s, double H, double dt)
     s->kBT = 1.0;
     s->lambda = 0.5;
     for (int i = 0; i < s->n; i++) s->id[i] = (uint32_t)i;
-    Colloids *c = calloc(1, sizeof *c);
+    const ColloidParams p = {.type = 0, .per_axis = 1, .H = H, .d = 0.5, .mass = 6.0, .inertia = 1.0};
+    Colloids *c = colloid_new(&p);
     assert_non_null(c);
-    c->type = 0; c->per_axis = 1; c->ncol = 1; c->H = H; c->d = 0.5;
-    c->mass = 6.0; c->inertia = 1.0;
-    static const double OCT[COLLOID_P][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (int k = 0; k < COLLOID_P; k++)
-        for (int d = 0; d < 3; d++) c->body[k][d] = c->d * OCT[k][d];
-    c->R = calloc(3, sizeof(double)); c->V = calloc(3, sizeof(double)); c->q = calloc(4, sizeof(double));
-    c->L = calloc(3, sizeof(double)); c->F = calloc(3, sizeof(double)); c->T = calloc(3, sizeof(double));
-    c->ids = calloc(COLLOID_P, sizeof(uint32_t));
     assert_int_equal(colloid_place(c, s), 0);
     return c;
 }
@@ -65,9 +58,9 @@ static void free_body_keeps_angular_momentum(void **state)
     const double qn = sqrt(c->q[0] * c->q[0] + c->q[1] * c->q[1] + c->q[2] * c->q[2] + c->q[3] * c->q[3]);
     CHECK_ABS("unit quaternion", qn, 1.0, 1e-12);
     /* Rodrigues: site 0 (0.5, 0, 0) turned by |omega| n dt about omega */
-    const double wn = sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]) / c->inertia;
+    const double wn = sqrt(L0[0] * L0[0] + L0[1] * L0[1] + L0[2] * L0[2]) / c->p.inertia;
     double e[3], v[3] = {0.5, 0, 0}, want[3], got[3];
-    for (int d = 0; d < 3; d++) e[d] = L0[d] / (c->inertia * wn);
+    for (int d = 0; d < 3; d++) e[d] = L0[d] / (c->p.inertia * wn);
     const double th = wn * n * dt, ev = e[0] * v[0] + e[1] * v[1] + e[2] * v[2];
     const double exv[3] = {e[1] * v[2] - e[2] * v[1], e[2] * v[0] - e[0] * v[2], e[0] * v[1] - e[1] * v[0]};
     for (int d = 0; d < 3; d++) want[d] = c->R[d] + v[d] * cos(th) + exv[d] * sin(th) + e[d] * ev * (1 - cos(th));
@@ -89,7 +82,7 @@ static void spring_reactions_balance(void **state)
     for (int d = 0; d < 3; d++) {
         double sum = c->F[d];
         for (int i = 0; i < s.n; i++) sum += s.f[3 * i + d];
-        CHECK_ABS("spring forces + reaction on the body", sum, 0.0, 1e-12 * c->H);
+        CHECK_ABS("spring forces + reaction on the body", sum, 0.0, 1e-12 * c->p.H);
     }
     colloid_free(c);
     system_free(&s);
@@ -157,7 +150,7 @@ static void spring_virial_balances_momentum_flux(void **state)
     uint64_t rng = 11;
     /* spin about (1, 1, 0) / sqrt 2 at |omega| = 2, plus random velocities */
     const double w[3] = {M_SQRT2, M_SQRT2, 0.0};
-    for (int d = 0; d < 3; d++) { c->L[d] = c->inertia * w[d]; c->V[d] = 0.1 * (2 * tu_uniform(&rng) - 1); }
+    for (int d = 0; d < 3; d++) { c->L[d] = c->p.inertia * w[d]; c->V[d] = 0.1 * (2 * tu_uniform(&rng) - 1); }
     double p[3] = {0, 0, 0};
     for (int i = 0; i < s.n; i++) {
         double a[3];
@@ -165,9 +158,9 @@ static void spring_virial_balances_momentum_flux(void **state)
         const double wxa[3] = {w[1] * a[2] - w[2] * a[1], w[2] * a[0] - w[0] * a[2], w[0] * a[1] - w[1] * a[0]};
         for (int d = 0; d < 3; d++) { s.v[3 * i + d] = wxa[d] + 0.3 * (2 * tu_uniform(&rng) - 1); p[d] += s.v[3 * i + d]; }
     }
-    for (int d = 0; d < 3; d++) p[d] += c->mass * c->V[d];
+    for (int d = 0; d < 3; d++) p[d] += c->p.mass * c->V[d];
     for (int d = 0; d < 3; d++) {   /* zero total momentum: G does not depend on the origin */
-        const double u = p[d] / (s.n + c->mass);
+        const double u = p[d] / (s.n + c->p.mass);
         c->V[d] -= u;
         for (int i = 0; i < s.n; i++) s.v[3 * i + d] -= u;
     }
@@ -188,13 +181,13 @@ static void spring_virial_balances_momentum_flux(void **state)
             colloid_site(c, 0, k, &s.box, site);
             for (int d = 0; d < 3; d++) dr[d] = s.x[3 * k + d] - site[d];
             for (int a = 0; a < 3; a++)
-                for (int e = 0; e < 3; e++) Wsite[3 * a + e] += dr[a] * (-c->H * dr[e]);
+                for (int e = 0; e < 3; e++) Wsite[3 * a + e] += dr[a] * (-c->p.H * dr[e]);
         }
         colloid_step(c, &s, &pv);
         for (int k = 0; k < 3 * s.n; k++) s.v[k] += 0.5 * dt * s.f[k];
         for (int a = 0; a < 3; a++)
             for (int e = 0; e < 3; e++) {
-                double K = c->mass * c->V[a] * c->V[e], G = c->mass * R[a] * c->V[e];
+                double K = c->p.mass * c->V[a] * c->V[e], G = c->p.mass * R[a] * c->V[e];
                 for (int i = 0; i < s.n; i++) {
                     K += s.v[3 * i + a] * s.v[3 * i + e];
                     G += s.x[3 * i + a] * s.v[3 * i + e];

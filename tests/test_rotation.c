@@ -52,8 +52,8 @@ static void pair_conserves_momentum_and_angular_momentum(void **state)
         double d[3], dv[3], ws[3], xi[3], th, F[3][3], G[3][3], Ft[3], Gt[3], ti[3], tj[3];
         rand_pair(&st, d, dv, ws, &th, xi);
         const double md[3] = {-d[0], -d[1], -d[2]}, mdv[3] = {-dv[0], -dv[1], -dv[2]};
-        rotation_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Ft, ti);
-        rotation_pair_force(&p, md, mdv, ws, th, xi, 10.0, G, Gt, tj);
+        pan2008_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Ft, ti);
+        pan2008_pair_force(&p, md, mdv, ws, th, xi, 10.0, G, Gt, tj);
         double orb[3], Fij[3];
         for (int a = 0; a < 3; a++) {
             Fij[a] = Ft[a];
@@ -77,7 +77,7 @@ static void torque_is_eq1(void **state)
     for (int k = 0; k < 200; k++) {
         double d[3], dv[3], ws[3], xi[3], th, F[3][3], Fsum[3], tau[3], Ft[3], c[3];
         rand_pair(&st, d, dv, ws, &th, xi);
-        rotation_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Fsum, tau);
+        pan2008_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Fsum, tau);
         for (int a = 0; a < 3; a++) Ft[a] = -0.5 * (F[0][a] + F[1][a] + F[2][a]);
         cross3(d, Ft, c);
         for (int a = 0; a < 3; a++) CHECK_ABS("torque vs -(r/2) x F", tau[a], c[a], 1e-12 * (1.0 + fabs(c[a])));
@@ -93,7 +93,7 @@ static void zero_shear_is_standard_dpd(void **state)
     for (int k = 0; k < 200; k++) {
         double d[3], dv[3], ws[3], xi[3], th, F[3][3], Fsum[3], tau[3], fc, fd, fr;
         rand_pair(&st, d, dv, ws, &th, xi);
-        rotation_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Fsum, tau);
+        pan2008_pair_force(&p, d, dv, ws, th, xi, 10.0, F, Fsum, tau);
         const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         const double edv = (d[0] * dv[0] + d[1] * dv[1] + d[2] * dv[2]) / r;
         dpd_pair_magnitudes(&p, r, edv, th, 10.0, &fc, &fd, &fr);
@@ -121,7 +121,7 @@ static void random_covariance_matches_dissipation(void **state)
     for (int b = 0; b < 3; b++) {
         double dv[3] = {0, 0, 0}, F[3][3], Fsum[3], tau[3];
         dv[b] = 1.0;
-        rotation_pair_force(&p, d, dv, zero, 0.0, zero, 1.0, F, Fsum, tau);
+        pan2008_pair_force(&p, d, dv, zero, 0.0, zero, 1.0, F, Fsum, tau);
         for (int a = 0; a < 3; a++) D[a][b] = -F[1][a];
     }
     const int N = 200000;
@@ -133,7 +133,7 @@ static void random_covariance_matches_dissipation(void **state)
         double xi[3];
         for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);
         double F[3][3], Fsum[3], tau[3];
-        rotation_pair_force(&p, d, zero, zero, th, xi, 1.0, F, Fsum, tau);
+        pan2008_pair_force(&p, d, zero, zero, th, xi, 1.0, F, Fsum, tau);
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) C[a][b] += F[2][a] * F[2][b] / N;
     }

@@ -39,10 +39,9 @@ static void lattice(System *s)
 static void configure(Tcaf *t, int n2max, int window, int origin_every, int nblocks, long long steps,
                       const System *s)
 {
-    memset(t, 0, sizeof *t);
-    t->on = 1; t->every = 1; t->window = window; t->origin_every = origin_every; t->n2max = n2max;
-    t->type = -1; t->fit_min = 0.3; t->extrap_kmax = 1e9; t->extrap_order = 0;
-    assert_int_equal(tcaf_init(t, s, nblocks, steps), 0);
+    const TcafParams p = {.every = 1, .window = window, .origin_every = origin_every, .n2max = n2max,
+                          .type = -1, .fit_min = 0.3, .extrap_kmax = 1e9, .extrap_order = 0};
+    assert_int_equal(tcaf_init(t, &p, s, nblocks, steps), 0);
 }
 
 static int find_vec(const Tcaf *t, int i, int j, int l)
@@ -90,10 +89,9 @@ static void axis_vectors_extend_k(void **state)
     (void)state;
     System s; lattice(&s);
     Tcaf t;
-    memset(&t, 0, sizeof t);
-    t.on = 1; t.every = 1; t.window = 10; t.origin_every = 5; t.n2max = 2; t.axis_nmax = 7;
-    t.type = -1; t.fit_min = 0.3; t.extrap_kmax = 1e9;
-    assert_int_equal(tcaf_init(&t, &s, 2, 100), 0);
+    const TcafParams p = {.every = 1, .window = 10, .origin_every = 5, .n2max = 2, .axis_nmax = 7,
+                          .type = -1, .fit_min = 0.3, .extrap_kmax = 1e9};
+    assert_int_equal(tcaf_init(&t, &p, &s, 2, 100), 0);
     /* sphere n^2 <= 2: 3 + 6 = 9 vectors; axes n = 2..7: 3 each */
     CHECK_TRUE(t.nvec == 9 + 3 * 6, "%d vectors, want 9 of the sphere + 18 on the axes", t.nvec);
     for (int n = 2; n <= 7; n++) {
@@ -303,11 +301,81 @@ static void too_many_blocks_are_refused(void **state)
     assert_non_null(mkdtemp(dir));
     const int rc = tcaf_write(&t, &s, f, dir);
     fclose(f);
+    TcafResult r;
+    CHECK_TRUE(tcaf_analyse(&t, &s, &r) != 0, "tcaf_analyse of %d blocks succeeded: it must refuse them", nblocks);
+    tcaf_result_free(&r);
     free(buf);
     char cmd[256];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     if (system(cmd) != 0) fprintf(stderr, "warning: could not remove %s\n", dir);
     CHECK_TRUE(rc != 0, "tcaf_write of %d blocks returned %d: it must refuse more blocks than it holds", nblocks, rc);
+    tcaf_free(&t);
+    system_free(&s);
+}
+
+/* tcaf_analyse on a synthetic state: in block b every shell decays as
+ * exp(-eta_b k^2 t / rho) (eq. 28) with eta_b = (E0 + E1 k^2)(1 + d_b), the
+ * d_b of mean 0, and C(k,0) at equipartition. Each block's fit gives eta_b
+ * back (exact exponentials), so eta_se and the k -> 0 coefficients' errors are
+ * the known block scatter; the pooled curve, a mean of exponentials, gives eta
+ * to second order in d_b (tolerance 1e-3). The curves carry a ripple of 1e-9:
+ * on an exact exponential GSL's driver makes no progress and the fit fails. */
+static double ripple(int l) { return l == 0 ? 1.0 : 1.0 + (l % 2 ? 1e-9 : -1e-9); }
+
+static void analyse_synthetic_blocks(void **state)
+{
+    (void)state;
+    System s; lattice(&s);
+    enum { B = 4, WINDOW = 20 };
+    const double E0 = 30.0, E1 = -2.0, D[B] = {-0.015, -0.005, 0.005, 0.015};
+    const TcafParams p = {.every = 1, .window = WINDOW, .origin_every = 5, .n2max = 2, .type = -1,
+                          .fit_min = 0.3, .extrap_kmax = 1e9, .extrap_order = 1};
+    Tcaf t;
+    assert_int_equal(tcaf_init(&t, &p, &s, B, 200), 0);
+    const int ns = t.nshell, L = t.nlags;
+    assert_int_equal(ns, 2);
+    for (int b = 0; b < B; b++) {
+        t.acc_n[b] = 5;
+        for (int q = 0; q < ns; q++) {
+            const double k2 = t.shell_k[q] * t.shell_k[q], eta = (E0 + E1 * k2) * (1 + D[b]);
+            /* sum over origins of sum_k J_perp J_perp: C(k,0) = k^2 kBT <1/m> (mass 1, 2 polarisations) */
+            const double c0 = t.acc_n[b] * (double)t.count * 2 * t.shell_nvec[q];
+            for (int l = 0; l < L; l++) t.acc[((size_t)b * ns + q) * L + l] = c0 * exp(-eta * k2 * l * s.dt / t.rho) * ripple(l);
+        }
+    }
+    t.ndone = 5 * B;
+    TcafResult r;
+    assert_int_equal(tcaf_analyse(&t, &s, &r), 0);
+    CHECK_TRUE(r.nshell == ns && r.nlags == L && r.nblocks == B, "sizes %d %d %d", r.nshell, r.nlags, r.nblocks);
+    double sd = 0.0;   /* sample standard deviation of 1 + d_b */
+    for (int b = 0; b < B; b++) sd += D[b] * D[b];
+    const double rel_se = sqrt(sd / (B - 1)) / sqrt((double)B);
+    for (int q = 0; q < ns; q++) {
+        const double k2 = t.shell_k[q] * t.shell_k[q], eta = E0 + E1 * k2;
+        print_message("shell %d: eta %.6f +- %.3g (want %.6f +- %.3g), %d fit points\n", q, r.eta[q], r.eta_se[q],
+                      eta, rel_se * eta, r.fit_points[q]);
+        CHECK_REL("eta(k) of the pooled curve", r.eta[q], eta, 1e-3);
+        CHECK_REL("eta_se: the scatter of the blocks' eta", r.eta_se[q], rel_se * eta, 1e-6);
+        CHECK_REL("C(k,0) at equipartition", r.c0_ratio[q], 1.0, 1e-12);
+        for (int l = 0; l < L; l++) {
+            double want = 0.0;
+            for (int b = 0; b < B; b++) want += exp(-eta * (1 + D[b]) * k2 * l * s.dt / t.rho) * ripple(l) / B;
+            CHECK_REL("pooled C(k,t)/C(k,0)", r.c[(size_t)q * L + l], want, 1e-12);
+        }
+        const int n = r.fit_points[q];
+        CHECK_TRUE(n >= 3 && n + 1 < L && r.c[(size_t)q * L + n] >= p.fit_min && r.c[(size_t)q * L + n + 1] < p.fit_min,
+                   "shell %d: %d fit points do not end where C/C0 drops below %g", q, n, p.fit_min);
+    }
+    CHECK_REL("mean equipartition ratio", r.c0_ratio_mean, 1.0, 1e-12);
+    CHECK_TRUE(r.nextrap == 2 && r.kend == t.shell_k[1], "%d shells up to %g in the k -> 0 fit", r.nextrap, r.kend);
+    CHECK_REL("eta(k -> 0)", r.coef[0], E0, 1e-3);
+    CHECK_REL("k^2 coefficient", r.coef[1], E1, 2e-2);
+    CHECK_REL("eta(k -> 0) error: the blocks' scatter", r.coef_se[0], rel_se * E0, 1e-6);
+    CHECK_REL("k^2 coefficient error", r.coef_se[1], rel_se * fabs(E1), 1e-6);
+    const double k20 = t.shell_k[0] * t.shell_k[0], k21 = t.shell_k[1] * t.shell_k[1];
+    CHECK_REL("eta drop over the shells", r.drop, E1 * (k20 - k21), 2e-2);
+    CHECK_REL("eta drop error", r.drop_se, rel_se * fabs(E1 * (k20 - k21)), 1e-6);
+    tcaf_result_free(&r);
     tcaf_free(&t);
     system_free(&s);
 }
@@ -324,6 +392,7 @@ int main(void)
         cmocka_unit_test(sampled_decaying_mode_gives_its_viscosity),
         cmocka_unit_test(bodies_join_the_current),
         cmocka_unit_test(too_many_blocks_are_refused),
+        cmocka_unit_test(analyse_synthetic_blocks),
     };
     return cmocka_run_group_tests_name("tcaf", tests, NULL, NULL);
 }

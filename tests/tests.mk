@@ -13,10 +13,10 @@ else
   TEST_DPD := $(BIN)
 endif
 
-$(BUILD)/tests/test_%: tests/test_%.c tests/testutil.h tests/runutil.h $(BUILD)/libdpd.a src/*.h
+$(BUILD)/tests/test_%: tests/test_%.c tests/testutil.h tests/runutil.h $(BUILD)/libdpd.a $(HDRS)
 	@mkdir -p $(BUILD)/tests
 	@echo "CC $<"
-	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) -Isrc -o $@ $< $(BUILD)/libdpd.a $(PKG_LIBS) $(CMOCKA_FLAGS) -lm
+	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) $(INCLUDES) -o $@ $< $(BUILD)/libdpd.a $(PKG_LIBS) $(CMOCKA_FLAGS) -lm
 
 $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 	@mkdir -p $(BUILD)/tests

@@ -1,0 +1,269 @@
+/* forces.c - the pair driver: the walk over the neighbour list, cut into
+ * FORCE_CHUNKS fixed chunks that accumulate into their own buffers, summed in
+ * a fixed order (deterministic for any thread count); the virial by part; the
+ * evaluators of pair_dpd.h and pair_pan2008.h compiled into the walk once per
+ * model and Lees-Edwards state; the serial walk of the m = 0 assembly
+ * (pair_visit); body forces. */
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "forces.h"
+#include "pair_dpd.h"
+#include "pair_pan2008.h"
+
+int forces_init(ForceWork *w, const System *s, int nbins)
+{
+    const int n = s->n;
+    const size_t chunk_bytes = (size_t)(FORCE_CHUNKS - 1) * 3 * (size_t)n * sizeof(double) + 1;
+    memset(w, 0, sizeof *w);
+    w->n = n;
+    w->nbins = nbins;
+    w->buf = malloc(chunk_bytes);
+    if (s->rotation && !(w->tbuf = malloc(chunk_bytes))) { forces_free(w); return -1; }
+    w->nblk = (n >> FORCE_BLOCK_SHIFT) + 1;
+    w->mask_stride = (w->nblk + 63) / 64 * 64;   /* each chunk's mask on its own cache lines */
+    w->touched = calloc((size_t)FORCE_CHUNKS * w->mask_stride, 1);
+    if (!w->buf || !w->touched) { forces_free(w); return -1; }
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        w->chunk[c].nbins = nbins;
+        if (nbins > 0) {
+            w->chunk[c].Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double));
+            if (!w->chunk[c].Wbin) { forces_free(w); return -1; }
+        }
+    }
+    return 0;
+}
+
+void forces_free(ForceWork *w)
+{
+    free(w->buf);
+    free(w->tbuf);
+    free(w->touched);
+    for (int c = 0; c < FORCE_CHUNKS; c++) free(w->chunk[c].Wbin);
+    memset(w, 0, sizeof *w);
+}
+
+void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
+                         double inv_sqrt_dt, double *fc, double *fd, double *fr)
+{
+    dpd_pair_terms(p, r, e_dot_v, theta, inv_sqrt_dt, fc, fd, fr);
+}
+
+void pan2008_pair_force(const PairParams *p, const double d[3], const double dv[3],
+                        const double wsum[3], double theta, const double xi[3],
+                        double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3])
+{
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double e[3], wc, f;
+    pan_pair_geometry(p, d, r, e, &wc, &f);
+    pan_pair_force(p, d, e, wc, f, dv, wsum, theta, xi, inv_sqrt_dt, F, Ftot, tau);
+}
+
+void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
+                   double xi_axis, double d_axis, const double t[9])
+{
+    const double h = Laxis / nbins;
+    double lo = xi_axis - d_axis, hi = xi_axis;
+    if (lo > hi) { double tmp = lo; lo = hi; hi = tmp; }
+    const double len = hi - lo;
+    (void)axis;
+    if (len < 1e-14) {
+        int b = (int)floor(xi_axis / h);
+        b = ((b % nbins) + nbins) % nbins;
+        for (int k = 0; k < 9; k++) Wbin[9 * b + k] += t[k];
+        return;
+    }
+    int b0 = (int)floor(lo / h), b1 = (int)floor(hi / h);
+    for (int b = b0; b <= b1; b++) {
+        const double s0 = fmax(lo, b * h), s1 = fmin(hi, (b + 1) * h);
+        if (s1 <= s0) continue;
+        const double frac = (s1 - s0) / len;
+        const int bb = ((b % nbins) + nbins) % nbins;
+        for (int k = 0; k < 9; k++) Wbin[9 * bb + k] += frac * t[k];
+    }
+}
+
+void pair_virial_add(PairVirial *pv, const System *s, int i, int q, const double d[3], const double t[9])
+{
+    for (int kk = 0; kk < 9; kk++) pv->W[q][kk / 3][kk % 3] += t[kk];
+    if (pv->nbins > 0)
+        ik_distribute(pv->Wbin + (size_t)q * 9 * pv->nbins, pv->nbins, pv->bin_axis,
+                      s->box.L[pv->bin_axis], s->x[3 * i + pv->bin_axis], d[pv->bin_axis], t);
+}
+
+void forces_zero_virial(PairVirial *pv)
+{
+    double *wb = pv->Wbin;
+    int nb = pv->nbins, ax = pv->bin_axis;
+    memset(pv, 0, sizeof *pv);
+    pv->Wbin = wb; pv->nbins = nb; pv->bin_axis = ax;
+    if (wb && nb > 0) memset(wb, 0, (size_t)nb * PAIR_PARTS * 9 * sizeof(double));
+}
+
+enum { MODEL_DPD, MODEL_PAN2008 };
+
+/* The walk over the particles [i0, i1) of one chunk: each particle's list
+ * entries a batch at a time, those inside the largest cutoff (pairs_in_range)
+ * handed to the model's evaluator, then i's own sums added. The list holds
+ * interacting type pairs only (neighbor.c keep_pair). model and le (Lees-Edwards
+ * shear) are constants: the walk is compiled once per value (pair_chunk), so
+ * that a scene without shear or rotation runs no test for them. */
+static inline __attribute__((always_inline))
+void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc,
+               PairVirial *pv, const int model, const int le)
+{
+    int near[PAIR_BATCH];
+    double dd[PAIR_BATCH][4];
+    for (int i = i0; i < i1; i++) {
+        for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
+            const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
+            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
+            if (model == MODEL_PAN2008) pan_pair_batch(s, i, near, dd, m, acc, pv, le);
+            else dpd_pair_batch(s, i, near, dd, m, acc, pv, le);
+        }
+        force_claim(acc->f, acc->tq, acc->touched, i, acc->n);
+        for (int a = 0; a < 3; a++) acc->f[3 * i + a] += acc->fi[a];
+        if (model == MODEL_PAN2008)
+            for (int a = 0; a < 3; a++) acc->tq[3 * i + a] += acc->ti[a];
+    }
+}
+
+static void walk_dpd_plain(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_DPD, 0); }
+static void walk_dpd_shear(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_DPD, 1); }
+static void walk_pan2008_plain(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_PAN2008, 0); }
+static void walk_pan2008_shear(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{ pair_walk(s, nl, i0, i1, acc, pv, MODEL_PAN2008, 1); }
+
+/* One chunk with the walk the scene's model and box need. */
+static void pair_chunk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc, PairVirial *pv)
+{
+    const int le = MOD_SHEAR(&s->box);
+    if (MOD_ROTATION(s)) (le ? walk_pan2008_shear : walk_pan2008_plain)(s, nl, i0, i1, acc, pv);
+    else (le ? walk_dpd_shear : walk_dpd_plain)(s, nl, i0, i1, acc, pv);
+}
+
+int forces_chunk_start(const NeighborList *nl, int n, int c)
+{
+    if (c >= FORCE_CHUNKS) return n;
+    const size_t want = (size_t)nl->start[n] * (size_t)c / FORCE_CHUNKS;
+    int lo = 0, hi = n;
+    while (lo < hi) { int mid = (lo + hi) / 2; if ((size_t)nl->start[mid] < want) lo = mid + 1; else hi = mid; }
+    return lo;
+}
+
+unsigned char *forces_chunk_mask(ForceWork *w, int c)
+{
+    unsigned char *m = w->touched + (size_t)c * w->mask_stride;
+    memset(m, 0, (size_t)w->nblk);
+    return m;
+}
+
+static void sum_block(const ForceWork *w, double *f0, const double *rest, int b)
+{
+    const size_t stride = 3 * (size_t)w->n, nb = w->mask_stride;
+    const size_t k0 = 3 * ((size_t)b << FORCE_BLOCK_SHIFT);
+    const size_t k1 = k0 + (3u << FORCE_BLOCK_SHIFT) < stride ? k0 + (3u << FORCE_BLOCK_SHIFT) : stride;
+    const int own = w->touched[b];
+    for (size_t k = k0; k < k1; k++) {
+        double sum = own ? f0[k] : 0.0;
+        for (int c = 1; c < FORCE_CHUNKS; c++)
+            if (w->touched[(size_t)c * nb + (size_t)b]) sum += rest[(size_t)(c - 1) * stride + k];
+        f0[k] = sum;
+    }
+}
+
+void forces_sum_chunks(const ForceWork *w, double *f0, const double *rest, double *t0, const double *trest)
+{
+    /* contiguous blocks per thread, as the chunks and the integrator's loops */
+    #pragma omp parallel for schedule(static)
+    for (int b = 0; b < w->nblk; b++) {
+        sum_block(w, f0, rest, b);
+        if (t0) sum_block(w, t0, trest, b);
+    }
+}
+
+void forces_body(System *s)
+{
+    if (!MOD_BODY_FORCE(s)) return;
+    for (int i = 0; i < s->n; i++) {
+        const ParticleType *t = &s->types[s->type[i]];
+        if (t->frozen) continue;
+        double sign = 1.0;
+        if (t->body_force_flip_axis >= 0) {
+            const int a = t->body_force_flip_axis;
+            sign = s->x[3 * i + a] < s->box.half[a] ? 1.0 : -1.0;
+        }
+        for (int d = 0; d < 3; d++) s->f[3 * i + d] += sign * t->body_force[d];
+    }
+}
+
+/* The chunks' virials added in chunk order (deterministic); the rotation
+ * fields stay zero in scenes without rotation. */
+void forces_reduce_virial(PairVirial *pv, const ForceWork *w)
+{
+    forces_zero_virial(pv);
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        const PairVirial *cv = &w->chunk[c];
+        for (int q = 0; q < PAIR_PARTS; q++)
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) pv->W[q][a][b] += cv->W[q][a][b];
+        pv->epot += cv->epot;
+        for (int t = 0; t < DPD_MAX_TYPES; t++)
+            for (int d = 0; d < 3; d++) {
+                pv->frozen_force[t][d] += cv->frozen_force[t][d];
+                pv->frozen_torque[t][d] += cv->frozen_torque[t][d];
+                pv->frozen_drag[t][d] += cv->frozen_drag[t][d];
+                pv->frozen_torque_random[t][d] += cv->frozen_torque_random[t][d];
+            }
+        if (pv->nbins > 0)
+            for (size_t k = 0; k < (size_t)pv->nbins * PAIR_PARTS * 9; k++) pv->Wbin[k] += cv->Wbin[k];
+    }
+}
+
+void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial *pv)
+{
+    const int n = s->n, rot = MOD_ROTATION(s);
+    const size_t stride = 3 * (size_t)n;
+    /* contiguous chunks per thread (thread 0: the first half of the particles
+     * on 2 threads), as the particle loops of the integrator: each thread
+     * reads and writes mostly the particles it will move */
+    #pragma omp parallel for schedule(static)
+    for (int c = 0; c < FORCE_CHUNKS; c++) {
+        /* chunk 0 accumulates straight into f (and the torques): one buffer less to clear and read */
+        PairAcc acc = {.f = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride,
+                       .tq = !rot ? NULL : c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride,
+                       .touched = forces_chunk_mask(w, c), .n = n};
+        const int i0 = forces_chunk_start(nl, n, c), i1 = forces_chunk_start(nl, n, c + 1);
+        PairVirial *cv = NULL;
+        if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }
+        pair_chunk(s, nl, i0, i1, &acc, cv);
+    }
+    if (rot) forces_sum_chunks(w, s->f, w->buf, s->torque, w->tbuf);
+    else forces_sum_chunks(w, s->f, w->buf, NULL, NULL);
+    if (pv) forces_reduce_virial(pv, w);
+    forces_body(s);
+}
+
+/* The serial walk for the m = 0 assembly: every interacting listed pair, in
+ * list order, with its minimum-image separation d = r_i - r_j, r^2 and the x
+ * velocity of j's nearest Lees-Edwards image relative to j. */
+void pair_visit(const System *s, const NeighborList *nl, PairVisitor visit, void *ctx)
+{
+    const int le = MOD_SHEAR(&s->box);
+    int near[PAIR_BATCH];
+    double dd[PAIR_BATCH][4];
+    for (int i = 0; i < s->n; i++)
+        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
+            const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
+            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, 1);
+            for (int q = 0; q < m; q++) {
+                const int j = near[q];
+                if (!pair_interacts(&s->pair[s->type[i]][s->type[j]], dd[q][3])) continue;
+                visit(ctx, i, j, dd[q], dd[q][3], pair_image_vx(s, i, j, le));
+            }
+        }
+}

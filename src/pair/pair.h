@@ -1,0 +1,129 @@
+/* pair.h - what every pair kernel shares, in one copy: the r -> 0 guard, the
+ * weight functions of eqs 5-7 (Mai-Duy et al. 2019; Groot & Warren 1997), the
+ * batch of listed pairs inside the cutoff, the per-chunk accumulator a kernel
+ * writes its forces and torques into, and the virial by part.
+ *
+ * The pair driver (forces.c) walks the neighbour list of a chunk of particles
+ * a batch of PAIR_BATCH entries at a time and hands each batch to an evaluator
+ * (pair_dpd.h: standard DPD; pair_pan2008.h: rotating particles), the way
+ * HOOMD-blue's PotentialPair hands pairs to an Evaluator. The m = 0 assembly
+ * (overdamped.c) visits the same pairs through pair_visit (forces.h). */
+#ifndef DPD_PAIR_H
+#define DPD_PAIR_H
+
+#include <math.h>
+#include "system.h"
+#include "neighbor.h"
+
+/* Pairs closer than this have no direction: they exert no force (LAMMPS'
+ * EPSILON in pair_dpd.cpp). Springs use it too (bonds.c). */
+#define PAIR_R_EPSILON 1e-10
+
+/* A listed pair interacts: inside its own cutoff and not coincident (a NaN
+ * r^2 interacts, so that the NaN reaches the forces and stops the run). */
+static inline int pair_interacts(const PairParams *p, double r2)
+{
+    return !(r2 >= p->rc2 || r2 < PAIR_R_EPSILON * PAIR_R_EPSILON);
+}
+
+/* w_R = (1 - r/rc)^(s/2) from w_C = 1 - r/rc (eqs 5, 7), so that
+ * w_D = w_R^2 = (1 - r/rc)^s (eq. 6); the usual exponents without pow(). */
+static inline double random_weight(double wc, double s)
+{
+    if (s == 2.0) return wc;
+    if (s == 1.0) return sqrt(wc);
+    if (s == 0.5) return sqrt(sqrt(wc));
+    return pow(wc, 0.5 * s);
+}
+
+/* w_D = (1 - r/rc)^s (eq. 6) computed directly, for the m = 0 matrix, which
+ * needs w_D and w_R = sqrt(w_D): for s = 0.5, 1 and 2 this w_R is
+ * random_weight's bit for bit (sqrt of a correctly rounded square is exact). */
+static inline double dissipative_weight(double wc, double s)
+{
+    if (s == 2.0) return wc * wc;
+    if (s == 1.0) return wc;
+    if (s == 0.5) return sqrt(wc);
+    return pow(wc, s);
+}
+
+enum { PART_CONSERVATIVE = 0, PART_DISSIPATIVE = 1, PART_RANDOM = 2, PAIR_PARTS = 3 };
+
+/* Pair virial sum_{i<j} r_ij F_ij (components [a][b] = r_a F_b), kept by part,
+ * and optionally split over slabs along one axis (Irving & Kirkwood 1950). */
+typedef struct {
+    double W[PAIR_PARTS][3][3];
+    double epot;
+    int bin_axis, nbins;      /* nbins = 0: no binned stress */
+    double *Wbin;             /* PAIR_PARTS x nbins x 9 */
+    double frozen_force[DPD_MAX_TYPES][3]; /* force of mobile particles on frozen ones, by frozen type */
+    double frozen_torque[DPD_MAX_TYPES][3]; /* rotation scenes: torque on frozen ones, by frozen type, */
+    double frozen_drag[DPD_MAX_TYPES][3];   /* and force, both without the zero-mean random part; */
+    double frozen_torque_random[DPD_MAX_TYPES][3]; /* the random part of the torque */
+} PairVirial;
+
+/* Distribute one pair term t[a][b] over slabs along axis (segment from the image
+ * of j at x_i - d to x_i); used by the evaluators and tests. */
+void ik_distribute(double *Wbin, int nbins, int axis, double Laxis,
+                   double xi_axis, double d_axis, const double t[9]);
+/* A pair's 9 virial terms of one part into W and its slabs. */
+void pair_virial_add(PairVirial *pv, const System *s, int i, int q, const double d[3], const double t[9]);
+/* The pair energy a rc w_C^2 / 2 (the potential of eq. 2). */
+static inline double pair_energy(const PairParams *p, double wc) { return 0.5 * p->a * p->rc * wc * wc; }
+
+/* A chunk writes to its own particles, the next cell layer and the periodic
+ * wrap: most of its buffer is never written. Buffers are cleared on a block's
+ * first write and summed only over the blocks each chunk touched. */
+#define FORCE_BLOCK_SHIFT 8   /* 256 particles per block */
+
+/* What an evaluator writes into: the chunk's force (and torque) buffer, its
+ * touched-block mask, and the sums of particle i's own pairs. */
+typedef struct {
+    double *f, *tq;           /* tq: rotation scenes only */
+    unsigned char *touched;
+    int n;
+    double fi[3], ti[3];
+} PairAcc;
+
+/* Before writing particle j of a chunk's buffer(s) f (and t, or NULL): clear
+ * its block if this is the block's first write of the step. */
+static inline void force_claim(double *f, double *t, unsigned char *touched, int j, int n)
+{
+    const int b = j >> FORCE_BLOCK_SHIFT;
+    if (touched[b]) return;
+    touched[b] = 1;
+    const int p0 = b << FORCE_BLOCK_SHIFT, p1 = p0 + (1 << FORCE_BLOCK_SHIFT) < n ? p0 + (1 << FORCE_BLOCK_SHIFT) : n;
+    for (int k = 3 * p0; k < 3 * p1; k++) f[k] = 0.0;
+    if (t) for (int k = 3 * p0; k < 3 * p1; k++) t[k] = 0.0;
+}
+
+#define PAIR_BATCH 256
+/* Pass 1 of the walk, branch free: the list entries k0..k1 of particle i that
+ * lie inside the largest cutoff, with their minimum-image separation and r^2
+ * (dd[q] = dx, dy, dz, r2). Returns their number. le: as box_min_image_le. */
+static inline __attribute__((always_inline)) int pairs_in_range(const System *s, const NeighborList *nl, int i, int k0, int k1,
+                                 int near[PAIR_BATCH], double dd[PAIR_BATCH][4], const int le)
+{
+    const double *x = s->x;
+    const double rc2_max = s->rc_max * s->rc_max;
+    int m = 0;
+    for (int k = k0; k < k1; k++) {
+        const int j = nl->nbr[k];
+        double d[3] = {x[3 * i] - x[3 * j], x[3 * i + 1] - x[3 * j + 1], x[3 * i + 2] - x[3 * j + 2]};
+        box_min_image_le(&s->box, d, NULL, le);
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        near[m] = j;
+        dd[m][0] = d[0]; dd[m][1] = d[1]; dd[m][2] = d[2]; dd[m][3] = r2;
+        m += (r2 < rc2_max);
+    }
+    return m;
+}
+
+/* The x velocity of particle j's nearest image relative to j, seen from i
+ * (box_image_vx); 0 without shear (le = 0, a constant). */
+static inline double pair_image_vx(const System *s, int i, int j, const int le)
+{
+    return DPD_MODULES && le ? box_image_vx(&s->box, s->x[3 * i + 1] - s->x[3 * j + 1]) : 0.0;
+}
+
+#endif
