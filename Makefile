@@ -62,7 +62,7 @@ $(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
 	@mkdir -p bin
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
-# The bare build (src/modules.h): the same sources with every optional module
+# The bare build (src/core/modules.h): the same sources with every optional module
 # compiled out (-DDPD_BARE); it refuses scenes that switch one on. make bench
 # runs it beside bin/dpd (what unused modules cost); tests/bare.sh checks that
 # it gives bin/dpd's numbers bit for bit.

@@ -203,7 +203,7 @@ if [ "${SOLVERS:-1}" = 1 ]; then
 fi
 
 # ---- unused modules (issue 7): bin/dpd against build/dpd-bare, the same sources with every
-# optional module's run-time test compiled out (-DDPD_BARE, src/modules.h; tests/bare.sh: the two
+# optional module's run-time test compiled out (-DDPD_BARE, src/core/modules.h; tests/bare.sh: the two
 # give the same numbers bit for bit on this scene). On the standard scene, which switches no module
 # on, the difference is what the unused modules cost. Three measures:
 #  - instructions per production particle-step (valgrind cachegrind, 3000 particles, 1 thread): the

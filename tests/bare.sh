@@ -1,5 +1,5 @@
 #!/bin/bash
-# bare.sh - the bare build (make build/dpd-bare, -DDPD_BARE, src/modules.h: every
+# bare.sh - the bare build (make build/dpd-bare, -DDPD_BARE, src/core/modules.h: every
 # optional module compiled out of the hot path) computes bin/dpd's numbers bit for
 # bit on a scene without modules (the standard scene of make bench, small, with
 # measurement steps): the same summary rows (all but times, rates and memory) and

@@ -93,7 +93,7 @@ else bad "fluid: trajectory" "$(ls -a "$tmp/fluid")"; fi
 if [ -s "$tmp/fluid/checkpoint.dpd" ]; then ok "fluid: the last checkpoint before the blow-up is kept"
 else bad "fluid: checkpoint" "$(ls -a "$tmp/fluid")"; fi
 # far past the limit (gamma = 45 at dt = 1): stopped at once, no hang while wrapping
-# coordinates that ran off to 1e100 (src/box.c, src/neighbor.c)
+# coordinates that ran off to 1e100 (src/core/box.c, src/pair/neighbor.c)
 t0=$(date +%s)
 blowup far "$tmp/fluid.cfg" "(kinetic temperature|largest displacement per step)" --set dt=1.0 --set 'pairs.[0].gamma=45.0' --set output.trajectory_every=0
 if [ $(( $(date +%s) - t0 )) -lt 30 ]; then ok "far: stopped within 30 s"; else bad "far" "took $(( $(date +%s) - t0 )) s"; fi

@@ -1,5 +1,5 @@
 #!/bin/bash
-# fit_line.sh - `dpd fit-line` (src/linefit.c, gsl_fit_wlinear / gsl_fit_wmul), used by the
+# fit_line.sh - `dpd fit-line` (src/analysis/linefit.c, gsl_fit_wlinear / gsl_fit_wmul), used by the
 # experiments for slopes of profiles and g(r): a noiseless line is returned exactly (slope,
 # value at the range's centre, r2 = 1), over more rows than the first allocation (64); rows
 # outside --range or with se <= 0 are skipped; --origin fits through (0, 0); fewer than 3

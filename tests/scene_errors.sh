@@ -33,7 +33,7 @@ for cfg in tests/bad-scenes/*.cfg; do
     rm -rf "$tmp/out"
     # Under ASan, usage errors (status 1) run with leak detection off: main()
     # returns from its option loop without freeing its two argument buffers
-    # (src/main.c), a leak at exit only. Bad scenes (status 2) keep it on.
+    # (src/app/main.c), a leak at exit only. Bad scenes (status 2) keep it on.
     leak=${ASAN_OPTIONS:-}
     [ "$want" = 1 ] && leak="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
     ASAN_OPTIONS=$leak "$DPD" run "$cfg" "${args[@]}" --out "$tmp/out" --quiet >"$tmp/stdout" 2>"$tmp/err"

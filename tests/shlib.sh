@@ -19,7 +19,7 @@ refuse() {
 }
 # wait_for FILE PID: until FILE exists or the process ended (at most 60 s)
 wait_for() { for _ in $(seq 6000); do [ -e "$1" ] && return; kill -0 "$2" 2>/dev/null || return; sleep 0.01; done; }
-# reseal FILE VERSION [OFFSET BITS]: rewrite a checkpoint (src/checkpoint.c): set its format
+# reseal FILE VERSION [OFFSET BITS]: rewrite a checkpoint (src/io/checkpoint.c): set its format
 # version (empty: keep it) and, with OFFSET, the 8 bytes there to the 64-bit value BITS (hex,
 # stored little-endian), then recompute the FNV-1a checksum so that dpd accepts the file.
 # The layout starts: magic 8, version 4, scene hash 8, particle count n 4, step 8 (offset 24),

@@ -1,5 +1,5 @@
 #!/bin/bash
-# tcaf_fit.sh - `dpd tcaf-fit` (src/transverse_relaxation.c) on a synthetic tcaf.tsv in the
+# tcaf_fit.sh - `dpd tcaf-fit` (src/analysis/transverse_relaxation.c) on a synthetic tcaf.tsv in the
 # simulator's layout: three shells n2 = 1, 2, 4 of a box L = 10 whose C/C0 are exact exponentials
 # exp(-eta(k) k^2 t / rho) with eta(k) = 30 - 2 k^2 (rho = 4, lags every 0.01 to t = 2, se 0.01).
 # Each model returns eta(k) per shell (exp and two-mode to the fit's tolerance, integral to the

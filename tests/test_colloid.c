@@ -1,4 +1,4 @@
-/* test_colloid.c - spring-model colloids (Mai-Duy et al. 2019, eq. 30; src/colloid.c).
+/* test_colloid.c - spring-model colloids (Mai-Duy et al. 2019, eq. 30; src/bodies/colloid.c).
  * - A free rigid body keeps its angular momentum exactly and turns by |omega| t
  *   about omega (Rodrigues), its quaternion stays a unit quaternion (1e-12).
  * - The spring forces on the particles and the reaction on the body sum to

@@ -1,5 +1,5 @@
 /* test_lengthscale.c - eqs 31-32 of Mai-Duy et al. 2019 and the phi of its
- * tables (src/lengthscale.c). Expected values are recomputed here from the
+ * tables (src/analysis/lengthscale.c). Expected values are recomputed here from the
  * definitions (long double); tolerance 1e-14 relative (a cube root and a few
  * products in double). */
 #include "testutil.h"

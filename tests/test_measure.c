@@ -1,4 +1,4 @@
-/* test_measure.c - the writers of src/measure.c against more blocks than their
+/* test_measure.c - the writers of src/measure/measure.c against more blocks than their
  * per-block arrays hold (issue 24, bug 4c): the scene validator allows at most
  * 1000 blocks, but a caller that bypasses it must get an error, not a read past
  * an array or silently dropped blocks. */

@@ -1,4 +1,4 @@
-/* test_poiseuille.c - the reverse Poiseuille viscosity fit (src/poiseuille.c,
+/* test_poiseuille.c - the reverse Poiseuille viscosity fit (src/analysis/poiseuille.c,
  * Backer et al. 2005) and, above all, its standard error.
  * 1. An exact two-parabola profile (+g below L/2, -g above) gives mu exactly,
  *    from one profile and from identical blocks (error 0).

@@ -108,7 +108,7 @@ static void zero_shear_is_standard_dpd(void **state)
  * the friction tensor D of the dissipative force, F_D = -D . u with u the
  * relative velocity at the midpoint. D is read off the kernel with unit
  * velocities; the covariance is sampled over N draws of the eq. 15 noise
- * (Philox, the pair's STREAM_PAIR_NOISE sequence: theta then xi, as src/rotation.c draws them):
+ * (Philox, the pair's STREAM_PAIR_NOISE sequence: theta then xi, as src/dynamics/rotation.c draws them):
  * each entry has a standard error of at
  * most sqrt(2 / N) times the largest diagonal entry; tolerance 5 of those. */
 static void random_covariance_matches_dissipation(void **state)
@@ -128,7 +128,7 @@ static void random_covariance_matches_dissipation(void **state)
     double C[3][3] = {{0}};
     for (int k = 0; k < N; k++) {
         CounterRng c;
-        rng_pair_start(&c, 77, (uint64_t)k, 3, 9);   /* as src/rotation.c */
+        rng_pair_start(&c, 77, (uint64_t)k, 3, 9);   /* as src/dynamics/rotation.c */
         const double th = rng_counter_normal(&c);
         double xi[3];
         for (int a = 0; a < 3; a++) xi[a] = rng_counter_normal(&c);

@@ -1,5 +1,5 @@
 /* test_tcaf.c - transverse current autocorrelation functions (Mai-Duy et al.
- * 2019, eqs 22-28; src/tcaf.c).
+ * 2019, eqs 22-28; src/measure/tcaf.c).
  * Synthetic fields on a simple cubic lattice of m^3 sites in a box L^3: for
  * wave vectors 2 pi n / L with |n_d| < m the discrete Fourier sums are exact,
  * sum_j cos^2(k x_j) = N / 2 and sum_j cos(k x_j) sin(k x_j) = 0, so the

@@ -1,6 +1,6 @@
 /* test_transverse_relaxation.c - eta(k) from a normalised C(k,t)/C(k,0) by the
  * single exponential of eq. 28, the slow mode beside a damped oscillation, and
- * the zero-frequency integral (src/transverse_relaxation.c).
+ * the zero-frequency integral (src/analysis/transverse_relaxation.c).
  *
  * Exact curves: the estimators return eta = rho rate / k^2 (or rho / (k^2
  * integral)) to the fit's stopping rule (1e-8 relative), the integral to the
@@ -240,7 +240,7 @@ static double current_step(Current *cu, const Modes *m, uint64_t *rng)
     return sqrt(m->A) * cu->x + sqrt(1 - m->A) * cu->v;
 }
 
-/* C(t)/C(0) of `samples` values of the current as src/tcaf.c measures it: origins
+/* C(t)/C(0) of `samples` values of the current as src/measure/tcaf.c measures it: origins
  * every ORIGIN lags, window `n` lags, 20 contiguous blocks of origins; the mean
  * curve over all origins normalised by its C(0), the per-lag error the scatter of
  * the blocks' curves (each normalised by its own C(0)) / sqrt(20) */

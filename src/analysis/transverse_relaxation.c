@@ -333,14 +333,14 @@ static int fit_relaxation(Curve *cv, double *G, double *cov, double *chi2_dof, i
     return 0;
 }
 
-/* eq. 28 as the simulator fits it (src/tcaf.c tcaf_fit_eta: unweighted, amplitude 1,
+/* eq. 28 as the simulator fits it (src/measure/tcaf.c tcaf_fit_eta: unweighted, amplitude 1,
  * lags while <C/C0> >= fit_min); the response d eta / d c_i = J_i / sum J^2 (Gauss-Newton). */
 static int single_exponential(const double *t, const double *c, const double *se, int n, double k2, double rho,
                               double fit_min, ShellViscosity *o)
 {
     int m = 0;
     while (m + 1 < n && c[m + 1] >= fit_min && se[m + 1] > 0) m++;
-    if (m < 3) return -1;   /* decay not resolved by the sampling interval (as src/tcaf.c) */
+    if (m < 3) return -1;   /* decay not resolved by the sampling interval (as src/measure/tcaf.c) */
     double eta;
     if (tcaf_fit_eta(t + 1, c + 1, m, k2, rho, &eta)) return -1;
     const double a = k2 / rho;
@@ -654,7 +654,7 @@ static int fit_shells(const TcafTable *tb, const TcafFitArgs *a, TcafFit *f)
     return ok ? 0 : -1;
 }
 
-/* k -> 0: weighted polynomial in k^2 (src/tcaf.c) over the fitted shells with
+/* k -> 0: weighted polynomial in k^2 (src/measure/tcaf.c) over the fitted shells with
  * |k| <= kmax, covariance scaled by chi^2/dof when > 1; and its error from the
  * shells' bounds (shells independent): dc0/deta_i = sum_j cov_0j k_i^2j w_i. */
 static int extrapolate_shells(const TcafFitArgs *a, TcafFit *f)

@@ -3,7 +3,7 @@
  * estimators, and `dpd tcaf-fit`.
  *
  *  exp       eq. 28 as written: C/C0 = exp(-eta k^2 t / rho), amplitude 1, fitted
- *            while <C/C0> >= fit_min (the simulator's own fit, src/tcaf.c). Right
+ *            while <C/C0> >= fit_min (the simulator's own fit, src/measure/tcaf.c). Right
  *            for a simple fluid, whose C(k,t) is one relaxing mode.
  *  two-mode  a slow (hydrodynamic) relaxation beside a damped oscillation:
  *              C/C0 = A e^{-t/tau} + (1 - A) e^{-t/tau2} cos(w t) + S e^{-t/tau2} sin(w t),
@@ -33,7 +33,7 @@
  * the fitted curve, scaled by the measured per-lag errors; checked against the
  * blocks' scatter in tests/test_transverse_relaxation.c), and `se_bound` =
  * sum_i |g_i| se_i, the largest standard error any correlation of the lags
- * allows (Cauchy-Schwarz). The k -> 0 limit (as src/tcaf.c: weighted polynomial
+ * allows (Cauchy-Schwarz). The k -> 0 limit (as src/measure/tcaf.c: weighted polynomial
  * in k^2 over |k| <= kmax) weights the shells by 1/se^2 and takes them as
  * independent (distinct wave vectors of a fluid at rest are uncorrelated); its
  * covariance is scaled by chi^2/dof when that exceeds 1. */

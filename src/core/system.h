@@ -19,7 +19,7 @@ typedef struct {
     double wall_velocity[3];
     double body_force[3];     /* per particle */
     int body_force_flip_axis; /* -1: none; else sign flips in the upper half along this axis */
-    double inertia;           /* moment of inertia (rotation scenes only, src/rotation.c) */
+    double inertia;           /* moment of inertia (rotation scenes only, src/dynamics/rotation.c) */
     double spin[3];           /* prescribed angular velocity of frozen particles (rotation scenes) */
     int hold_velocity;        /* 1: the type's mean velocity is reset to held_velocity every step */
     double held_velocity[3];

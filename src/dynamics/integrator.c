@@ -1,6 +1,6 @@
 /* integrator.c - Groot-Warren velocity Verlet. The particle loops are compiled
  * once per module state (constants `walls` and `le`, Lees-Edwards): a scene
- * without frozen particles or shear runs no test for them (src/modules.h). */
+ * without frozen particles or shear runs no test for them (src/core/modules.h). */
 #include <math.h>
 #include "integrator.h"
 #include "rotation.h"

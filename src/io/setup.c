@@ -355,7 +355,7 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     return r;
 }
 
-/* The bare build (-DDPD_BARE, src/modules.h) has no optional modules: a
+/* The bare build (-DDPD_BARE, src/core/modules.h) has no optional modules: a
  * scene that switches one on is refused. */
 static int refuse_in_bare_build(Scene *sc, const System *s, const Measure *m, const RunConfig *rc)
 {
