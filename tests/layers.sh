@@ -4,7 +4,8 @@
 # of LAYERS in the Makefile). A file includes only headers of its own layer and
 # the layers below it, and no header of src/ exists twice; then the include
 # graph has no cycle between layers. Also checks the include graph of the
-# files themselves for cycles. Prints "N passed, M failed"; exit status = verdict.
+# files themselves for cycles, and that the Lees-Edwards image velocity, w_R and
+# the r -> 0 guard each exist once. Prints "N passed, M failed"; exit status = verdict.
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh layers
@@ -46,5 +47,16 @@ edges=$(for f in src/*/*.h; do
         echo "$inc $(basename "$f")"; done; echo "$(basename "$f") $(basename "$f")"; done)
 if err=$(tsort <<<"$edges" 2>&1 >/dev/null) && [ -z "$err" ]; then ok "no include cycle among the headers"
 else bad "no include cycle among the headers" "$(head -c 300 <<<"$err")"; fi
+# one copy each (issue 24): the Lees-Edwards image velocity (rate L_y) in the box,
+# w_R = (1 - r/rc)^(s/2) and the r -> 0 guard in the pair driver's pair.h
+once() {  # NAME PATTERN HOME...: PATTERN (grep -E) appears in src/ only in the HOME files
+    local name=$1 pat=$2; shift 2
+    local hits
+    hits=$(grep -rlE "$pat" src | grep -vxF -f <(printf '%s\n' "$@") | tr '\n' ' ')
+    if [ -z "$hits" ]; then ok "one copy: $name"; else bad "one copy: $name" "also in $hits"; fi
+}
+once "the Lees-Edwards image velocity" 'shear_rate \* [a-z>.-]*L\[1\]' src/core/box.h src/core/box.c
+once "w_R" 'sqrt\(sqrt\(|pow\([a-z]+, 0\.5 \*' src/pair/pair.h
+once "the r -> 0 guard" 'define [A-Z_]*EPSILON' src/pair/pair.h
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
