@@ -38,6 +38,16 @@ for r in $ROWS; do
             --set "types.[2].velocity=[$V,0.0,0.0]" --set "types.[3].spin=[0.0,$W,0.0]" --set "seed=$(run_seed $n)"
     done
 done
+# Control-variate diagnostic (reduced tier; issue 23 item 5, README "Where the torque's variance comes
+# from"): the torque is reported without its random part R, which has zero mean exactly; the rest, D,
+# fluctuates because the neighbours' thermal velocities do. R is a control variate for D only if
+# their run means are correlated (D + c R keeps D's mean for any c; variance factor 1 - rho^2 at the
+# best c). Measured on seven frozen spheres at rest (random-part-cv.cfg, sampled every step), 24
+# independent runs of 3 + 10 time units: the per-run means of D and R of every sphere and component.
+CV_RUNS=24
+if [ "$TIER" = reduced ]; then
+    for i in $(seq 1 $CV_RUNS); do dpd_run "cv$(printf %02d $i)" random-part-cv.cfg --set "seed=$((9100 + i))"; done
+fi
 # mean_runs: the equal-weight mean of "value<TAB>stderr" lines (replicas of equal length), stderr
 # sqrt(sum se^2) / n
 mean_runs() { awk -F'\t' '{n++; s += $1; v += $2 * $2} END{printf "%.10g\t%.4g", s / n, sqrt(v) / n}'; }
@@ -59,3 +69,25 @@ for r in $ROWS; do
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done
+# the control-variate diagnostic: one "D R" line per run, sphere and component; the intensities
+# (variance of a run mean x its 10 time units) of D, R and D + R, their correlation rho, and the
+# variance factor 1 - rho^2 of the best D + c R (stderrs: a variance's sqrt(2 / (n - 1)), and
+# (1 - rho^2) / sqrt(n - 3) for rho)
+if [ "$TIER" = reduced ]; then
+    for i in $(seq 1 $CV_RUNS); do
+        f=$OUT/runs/cv$(printf %02d $i)/summary.tsv
+        awk -F'\t' '$1 ~ /^torque_on_s[0-9]_[xyz]$/ {k = substr($1, 11); d[k] = $2}
+            $1 ~ /^torque_random_on_s[0-9]_[xyz]$/ {k = substr($1, 18); r[k] = $2}
+            END {for (k in d) print d[k] "\t" r[k]}' "$f"
+    done | LC_ALL=C sort > "$OUT/random_part_cv.tsv"
+    awk -F'\t' -v t=10 'function q(name, v, se) {printf "%s\t%.6g\t%.3g\n", name, v, se}
+        {n++; d += $1; r += $2; dd += $1 * $1; rr += $2 * $2; dr += $1 * $2}
+        END {md = d / n; mr = r / n; vd = (dd - n * md * md) / (n - 1); vr = (rr - n * mr * mr) / (n - 1)
+             c = (dr - n * md * mr) / (n - 1); vt = vd + vr + 2 * c; rho = c / sqrt(vd * vr); f = sqrt(2 / (n - 1))
+             q("cv_samples", n, 0)
+             q("cv_torque_mean", md, sqrt(vd / n)); q("cv_random_mean", mr, sqrt(vr / n))
+             q("cv_noise_D", vd * t, vd * t * f); q("cv_noise_R", vr * t, vr * t * f); q("cv_noise_total", vt * t, vt * t * f)
+             q("cv_rho", rho, (1 - rho * rho) / sqrt(n - 3)); q("cv_c_best", -c / vr, sqrt((1 - rho * rho) * vd / vr / (n - 3)))
+             q("cv_variance_factor_best", 1 - rho * rho, 2 * (rho < 0 ? -rho : rho) * (1 - rho * rho) / sqrt(n - 3))}' \
+        "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
+fi
