@@ -105,13 +105,13 @@ eq_steps() { case $TIER in reduced) echo 5000;; *) echo 1500;; esac; }
 noise() { awk -v s=$1 -v t=$2 -v n=$3 'BEGIN{v = s * s * t; printf "%.4g\t%.2g", v, v * sqrt(2 / (n - 1))}'; }
 for r in $ROWS; do
     t=$(get row$r steps | awk -v e=$(eq_steps) '{print ($1 - e) * 0.01}')
-    emit "torque_noise_row$r" "$(noise $(get . torque_row$r | cut -f2) $t $B)"
+    emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $B)
 done
 # the harder drive's linear response (reduced tier): the antisymmetric torque and the drag per sphere
 # per unit u at each u, their ratios between successive u (banded: 1.2 against 0.6), the torque's
 # noise at each u (does it grow with u?) and the fluid's temperature (heating by the drive)
 if [ "$TIER" = reduced ]; then
-    printf 'u\tdrag\tdrag_se\ttorque\ttorque_se\ttorque_theory\tnoise\ttemperature\ttemperature_se\n' > "$OUT/linear_response.tsv"
+    printf 'u\tdrag\tdrag_se\ttorque\ttorque_se\ttorque_theory\tnoise\tnoise_se\ttemperature\ttemperature_se\n' > "$OUT/linear_response.tsv"
     for u in $LR_U; do
         sphere_blocks lr_u$u $LR_B
         F=$(column_mean "$OUT/runs/lr_u$u/sphere_blocks.tsv" 2) T=$(column_mean "$OUT/runs/lr_u$u/sphere_blocks.tsv" 3)
@@ -120,8 +120,8 @@ if [ "$TIER" = reduced ]; then
         emit "lr_torque_u$u" $T
         emit "lr_torque_theory_u$u" "$Tth" 0
         noise=$(noise $(echo "$T" | cut -f2) $(awk -v n=$(lr_steps $u) 'BEGIN{print n * 0.01}') $LR_B)
-        emit "lr_torque_noise_u$u" "$noise"
-        emit "lr_temperature_u$u" "$(get lr_u$u temperature)"
+        emit "lr_torque_noise_u$u" $noise
+        emit "lr_temperature_u$u" $(get lr_u$u temperature)
         printf '%s\t%s\t%s\t%s\t%s\t%s\n' $u "$F" "$T" "$Tth" "$noise" "$(get lr_u$u temperature)" >> "$OUT/linear_response.tsv"
     done
     # per_u_ratio Q U1 U2 -> "ratio<TAB>stderr" of (Q(U2) / U2) / (Q(U1) / U1), relative errors in quadrature
@@ -130,7 +130,7 @@ if [ "$TIER" = reduced ]; then
             printf "%.10g\t%.4g", x, (x < 0 ? -x : x) * sqrt(($2 / $1)^2 + ($4 / $3)^2)}'
     }
     for q in torque drag; do
-        emit "lr_${q}_per_u_1.2_vs_0.6" "$(per_u_ratio $q 0.6 1.2)"
-        emit "lr_${q}_per_u_2.4_vs_1.2" "$(per_u_ratio $q 1.2 2.4)"
+        emit "lr_${q}_per_u_1.2_vs_0.6" $(per_u_ratio $q 0.6 1.2)
+        emit "lr_${q}_per_u_2.4_vs_1.2" $(per_u_ratio $q 1.2 2.4)
     done
 fi
