@@ -61,7 +61,7 @@ for r in $ROWS; do
     emit "curl2_row$r" $c2
     T=$(for n in $(row_runs $r); do get $n torque_on_colloid_y; done | mean_runs)
     # each run's own torque, for the replicas' agreement (README)
-    [ "$(row_runs $r)" = row$r ] || for n in $(row_runs $r); do emit "torque_$n" $(get $n torque_on_colloid_y); done
+    [ "$(row_runs $r)" = row$r ] || for n in $(row_runs $r); do emit "torque_run_$n" $(get $n torque_on_colloid_y); done
     emit "torque_row$r" $T
     the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
     emit "theory_row$r" "$the" 0
