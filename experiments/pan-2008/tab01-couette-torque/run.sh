@@ -69,6 +69,19 @@ for r in $ROWS; do
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done
+# linear response (issue 23 item 5; reported, no band: computed after the rows were seen): the torque
+# per unit drive (curl/2 - Omega, measured curl/2) of the harder-driven row over the softer one's, at
+# Omega = 0 (row 2 over row 1: the drive doubled) and at Omega = -0.2 (row 4 over row 3: x 1.5);
+# relative errors of the torques in quadrature (the curl/2 errors are 0.1-0.2 %)
+if [ "$TIER" != quick ]; then
+    for p in 1:2 3:4; do
+        a=${p%:*} b=${p#*:}
+        paste <(get . torque_row$a) <(get . curl2_row$a) <(get . torque_row$b) <(get . curl2_row$b) |
+            awk -F'\t' -v wa=$(row_omega $a) -v wb=$(row_omega $b) -v n=torque_per_drive_row${b}_vs_row$a '{
+                x = ($5 / ($7 - wb)) / ($1 / ($3 - wa))
+                printf "%s\t%.10g\t%.4g\n", n, x, x * sqrt(($2 / $1)^2 + ($6 / $5)^2)}' >> "$OUT/summary.tsv"
+    done
+fi
 # the control-variate diagnostic: one "D R" line per run, sphere and component; the intensities
 # (variance of a run mean x its 10 time units) of D, R and D + R, their correlation rho, and the
 # variance factor 1 - rho^2 of the best D + c R (stderrs: a variance's sqrt(2 / (n - 1)), and
