@@ -134,3 +134,24 @@ if [ "$TIER" = reduced ]; then
         emit "lr_${q}_per_u_2.4_vs_1.2" $(per_u_ratio $q 1.2 2.4)
     done
 fi
+# Projection (README "The torque rows"; the rule fixed before the ladder ran): the drive of each row's
+# projection is u = 1.2 for l = 1 and 0.6 for l = 2 and 1.5 if lr_torque_per_u_1.2_vs_0.6 passes its
+# band and is resolved (|x - 1| <= 0.10 + 2 stderr, 2 stderr <= 0.20), else the paper's 0.3. Time for a
+# torque stderr of 10 % of eq. 23 at that u: noise / (0.1 T_eq23(u))^2, with the row's own 30^3 noise;
+# CPU-hours at the row's measured 30^3 cost per time unit; the remaining hours count the 600 time
+# units run at u = 0.3 as 600 (0.3 / u)^2 at u. Their stderr: the noise's.
+if [ "$TIER" = reduced ]; then
+    lin=$(get . lr_torque_per_u_1.2_vs_0.6 | awk -F'\t' '{d = $1 - 1; d = d < 0 ? -d : d; print (d <= 0.10 + 2 * $2 && 2 * $2 <= 0.20) ? 1 : 0}')
+    emit projection_linear_response "$lin" 0
+    for r in $ROWS; do
+        up=$U; [ "$lin" = 1 ] && { [ $r = 3 ] && up=1.2 || up=0.6; }
+        paste <(get . torque_noise_row$r) <(get . torque_theory_row$r) <(get row$r cpu_seconds) <(get row$r steps) |
+            awk -F'\t' -v u=$up -v u0=$U -v r=$r '{T = $3 * u / u0; t = $1 / (0.1 * T)^2; c = $5 / ($7 * 0.01)
+                f = $2 / $1; h = t * c / 3600; rem = (t - 600 * (u0 / u)^2) * c / 3600
+                printf "projection_u_row%s\t%s\t0\n", r, u
+                printf "projection_time_row%s\t%.4g\t%.2g\n", r, t, t * f
+                printf "projection_cpu_hours_row%s\t%.4g\t%.2g\n", r, h, h * f
+                printf "projection_cpu_hours_remaining_row%s\t%.4g\t%.2g\n", r, rem, rem * f
+                t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
+    done
+fi
