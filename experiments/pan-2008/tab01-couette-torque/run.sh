@@ -21,23 +21,47 @@ row_steps() { case $TIER in quick) ;;
 row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
 row_curl()  { case $1 in 1|3) echo 0.2;; 2|4) echo 0.4;; esac; }
 paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) echo 1.0659;; esac; }
-# the simulations: one per row
+# Replicas (issue 23 item 5): the reduced tier's row 1 (stderr 0.0802 of eq. 21 in 2500 time units,
+# UNRESOLVED: 2 stderr just above the band width 0.16) gets one independent replica of the same length
+# (seed 9011), decided before it ran: row 1 is the equal-weight mean of the two runs, its expected
+# stderr 0.080 / sqrt 2 = 0.057. The torque's noise is thermal and the same in every row (README), so
+# a harder drive is the paper's row 2 (curl/2 = 0.4), the linear-response check beside it.
+row_runs() { case $TIER:$1 in reduced:1) echo "row1 row1r2";; *) echo "row$1";; esac; }
+run_seed() { case $1 in row1r2) echo 9011;; *) echo $((9000 + ${1#row}));; esac; }
+# the simulations: one per row (row 1 of the reduced tier: two)
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
     len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
-    dpd_run row$r couette-sphere.cfg "${tier[@]}" "${len[@]}" --set "types.[1].velocity=[-$V,0.0,0.0]" \
-        --set "types.[2].velocity=[$V,0.0,0.0]" --set "types.[3].spin=[0.0,$W,0.0]" --set "seed=$((9000 + r))"
+    for n in $(row_runs $r); do
+        dpd_run $n couette-sphere.cfg "${tier[@]}" "${len[@]}" --set "types.[1].velocity=[-$V,0.0,0.0]" \
+            --set "types.[2].velocity=[$V,0.0,0.0]" --set "types.[3].spin=[0.0,$W,0.0]" --set "seed=$(run_seed $n)"
+    done
 done
+# Control-variate diagnostic (reduced tier; issue 23 item 5, README "Where the torque's variance comes
+# from"): the torque is reported without its random part R, which has zero mean exactly; the rest, D,
+# fluctuates because the neighbours' thermal velocities do. R is a control variate for D only if
+# their run means are correlated (D + c R keeps D's mean for any c; variance factor 1 - rho^2 at the
+# best c). Measured on seven frozen spheres at rest (random-part-cv.cfg, sampled every step), 24
+# independent runs of 3 + 10 time units: the per-run means of D and R of every sphere and component.
+CV_RUNS=24
+if [ "$TIER" = reduced ]; then
+    for i in $(seq 1 $CV_RUNS); do dpd_run "cv$(printf %02d $i)" random-part-cv.cfg --set "seed=$((9100 + i))"; done
+fi
+# mean_runs: the equal-weight mean of "value<TAB>stderr" lines (replicas of equal length), stderr
+# sqrt(sum se^2) / n
+mean_runs() { num_awk -F'\t' '{n++; x[n] = $1; e[n] = $2} END{num_set(o, num_mean(x, n), num_quad(e, n) / n); printf "%s", num_pair(o)}'; }
 # the analysis
 printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     # undisturbed vorticity: slope of the plane-averaged v_x(z) over the central 4 rc, fitted per
     # block (the bins of one profile share the flow's fluctuations: not independent)
-    c2=$(block_slope row$r 3.0:7.0 | num_awk -F'\t' '{ num_div($1, $2, 2, o); printf "%s", num_pair(o) }')
+    c2=$(for n in $(row_runs $r); do block_slope $n 3.0:7.0; done | mean_runs | num_awk -F'\t' '{ num_div($1, $2, 2, o); printf "%s", num_pair(o) }')
     emit "curl2_row$r" $c2
-    T=$(get row$r torque_on_colloid_y)
+    T=$(for n in $(row_runs $r); do get $n torque_on_colloid_y; done | mean_runs)
+    # each run's own torque, for the replicas' agreement (README)
+    [ "$(row_runs $r)" = row$r ] || for n in $(row_runs $r); do emit "torque_run_$n" $(get $n torque_on_colloid_y); done
     emit "torque_row$r" $T
     the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
     emit "theory_row$r" "$the" 0
@@ -45,3 +69,38 @@ for r in $ROWS; do
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done
+# linear response (issue 23 item 5; reported, no band: computed after the rows were seen): the torque
+# per unit drive (curl/2 - Omega, measured curl/2) of the harder-driven row over the softer one's, at
+# Omega = 0 (row 2 over row 1: the drive doubled) and at Omega = -0.2 (row 4 over row 3: x 1.5);
+# relative errors of the torques in quadrature (the curl/2 errors are 0.1-0.2 %)
+if [ "$TIER" != quick ]; then
+    for p in 1:2 3:4; do
+        a=${p%:*} b=${p#*:}
+        paste <(get . torque_row$a) <(get . curl2_row$a) <(get . torque_row$b) <(get . curl2_row$b) |
+            awk -F'\t' -v wa=$(row_omega $a) -v wb=$(row_omega $b) -v n=torque_per_drive_row${b}_vs_row$a '{
+                x = ($5 / ($7 - wb)) / ($1 / ($3 - wa))
+                printf "%s\t%.10g\t%.4g\n", n, x, x * sqrt(($2 / $1)^2 + ($6 / $5)^2)}' >> "$OUT/summary.tsv"
+    done
+fi
+# the control-variate diagnostic: one "D R" line per run, sphere and component; the intensities
+# (variance of a run mean x its 10 time units) of D, R and D + R, their correlation rho, and the
+# variance factor 1 - rho^2 of the best D + c R (stderrs: a variance's sqrt(2 / (n - 1)), and
+# (1 - rho^2) / sqrt(n - 3) for rho)
+if [ "$TIER" = reduced ]; then
+    for i in $(seq 1 $CV_RUNS); do
+        f=$OUT/runs/cv$(printf %02d $i)/summary.tsv
+        awk -F'\t' '$1 ~ /^torque_on_s[0-9]_[xyz]$/ {k = substr($1, 11); d[k] = $2}
+            $1 ~ /^torque_random_on_s[0-9]_[xyz]$/ {k = substr($1, 18); r[k] = $2}
+            END {for (k in d) print d[k] "\t" r[k]}' "$f"
+    done | LC_ALL=C sort > "$OUT/random_part_cv.tsv"
+    awk -F'\t' -v t=10 'function q(name, v, se) {printf "%s\t%.6g\t%.3g\n", name, v, se}
+        {n++; d += $1; r += $2; dd += $1 * $1; rr += $2 * $2; dr += $1 * $2}
+        END {md = d / n; mr = r / n; vd = (dd - n * md * md) / (n - 1); vr = (rr - n * mr * mr) / (n - 1)
+             c = (dr - n * md * mr) / (n - 1); vt = vd + vr + 2 * c; rho = c / sqrt(vd * vr); f = sqrt(2 / (n - 1))
+             q("cv_samples", n, 0)
+             q("cv_torque_mean", md, sqrt(vd / n)); q("cv_random_mean", mr, sqrt(vr / n))
+             q("cv_noise_D", vd * t, vd * t * f); q("cv_noise_R", vr * t, vr * t * f); q("cv_noise_total", vt * t, vt * t * f)
+             q("cv_rho", rho, (1 - rho * rho) / sqrt(n - 3)); q("cv_c_best", -c / vr, sqrt((1 - rho * rho) * vd / vr / (n - 3)))
+             q("cv_variance_factor_best", 1 - rho * rho, 2 * (rho < 0 ? -rho : rho) * (1 - rho * rho) / sqrt(n - 3))}' \
+        "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
+fi

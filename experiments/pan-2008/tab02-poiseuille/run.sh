@@ -53,3 +53,21 @@ for r in $ROWS; do
         printf "%s\t%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
                $1, re, $2, $3, pF, $4, $5, $8, $1, pT, $6, $7, $9, $1 }' >> "$OUT/table2.tsv"
 done
+# linear response (issue 23 item 5; reported, no band: computed after the rows were seen): the torque
+# and drag per unit g between successive rows (g doubles), relative errors in quadrature; and the
+# torque's noise, variance of the mean x production time (torque^2 x time), its stderr that of a
+# variance from 50 blocks
+if [ "$TIER" != quick ]; then
+    for p in 1:2 2:3; do
+        a=${p%:*} b=${p#*:}
+        for q in torque drag; do
+            paste <(get . ${q}_row$a) <(get . ${q}_row$b) | awk -F'\t' -v ga=$(row_g $a) -v gb=$(row_g $b) \
+                -v n=${q}_per_g_row${b}_vs_row$a '{x = ($3 / gb) / ($1 / ga)
+                printf "%s\t%.10g\t%.4g\n", n, x, (x < 0 ? -x : x) * sqrt(($2 / $1)^2 + ($4 / $3)^2)}' >> "$OUT/summary.tsv"
+        done
+    done
+    for r in $ROWS; do
+        get . torque_row$r | awk -F'\t' -v t=$(( $(row_steps $r) / 100 )) -v r=$r '{v = $2 * $2 * t
+            printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / 49)}' >> "$OUT/summary.tsv"
+    done
+fi

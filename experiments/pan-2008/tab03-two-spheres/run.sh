@@ -32,6 +32,27 @@ for r in $ROWS; do
         --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
         --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
 done
+# Linear response of a harder drive (reduced tier only; issue 23 item 5, README "Harder drive"): the
+# torque's signal grows with u while its thermal noise should not, so a stronger drive is the cheapest
+# variance reduction if the torque stays linear in u. Tested where it is cheapest, l = 1 (the largest
+# torque) in a 12^3 box (5184 fluid particles, 16 times cheaper per time unit than 30^3), u = 0.6,
+# 1.2 and 2.4 for 3000, 1500 and 500 time units (equal torque stderr relative to eq. 23 at 0.6 and
+# 1.2 give the most precise ratio for a fixed cost; about 9 % expected on T/u(1.2) / T/u(0.6)), 50
+# blocks each; lengths fixed before any of them ran.
+LR_L=12 LR_l=1.0 LR_B=50 LR_U="0.6 1.2 2.4"
+lr_steps() { case $1 in 0.6) echo 300000;; 1.2) echo 150000;; 2.4) echo 50000;; esac; }
+if [ "$TIER" = reduced ]; then
+    nf=$(awk -v L=$LR_L 'BEGIN{printf "%d", 3*L^3}') c=$(awk -v L=$LR_L 'BEGIN{printf "%.4f", L/2}')
+    ya=$(awk -v c=$c -v l=$LR_l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$LR_l 'BEGIN{printf "%.4f", c + l/2}')
+    i=0
+    for u in $LR_U; do
+        i=$((i + 1))
+        dpd_run lr_u$u two-spheres.cfg --set equilibration=1000 --set "steps=$(lr_steps $u)" \
+            --set "box=[$LR_L.0,$LR_L.0,$LR_L.0]" --set "types.[0].count=$nf" \
+            --set "types.[0].hold_mean_velocity=[$u,0.0,0.0]" --set "measure.blocks=$LR_B" \
+            --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2310 + i))"
+    done
+fi
 # the analysis
 eq23() {  # l u -> F_the T_the (eq. 23)
     awk -v l=$1 -v u=$2 -v m=$MU -v R=$R 'BEGIN{pi = 3.141592653589793; q = R/l
@@ -39,18 +60,18 @@ eq23() {  # l u -> F_the T_the (eq. 23)
         T = 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024)
         printf "%.10g %.10g\n", F, T}'
 }
-# sphere_blocks NAME: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
-# the torque (T_a - T_b) / 2 about z (sphere a at lower y), B contiguous blocks of the
+# sphere_blocks NAME [BLOCKS]: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
+# the torque (T_a - T_b) / 2 about z (sphere a at lower y), B (or BLOCKS) contiguous blocks of the
 # samples in run.h5 (the first n mod B skipped, as src/blockavg.c), kept in
 # runs/NAME/sphere_blocks.tsv: the two spheres' noises are averaged sample by sample, so
 # their correlation is in the error
 sphere_blocks() {
-    local f=$OUT/runs/$1/sphere_blocks.tsv
+    local f=$OUT/runs/$1/sphere_blocks.tsv nb=${2:-$B}
     [ -f "$f" ] && return 0
     [ -f "$OUT/runs/$1/run.h5" ] || { echo "tab03: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
     paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
           <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        num_awk -F'\t' -v B=$B '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
+        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
             END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
                 for (b = 0; b < B; b++) {
                     for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
@@ -76,3 +97,60 @@ for r in $ROWS; do
         printf "%s\t%.2f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
                $1, $2, pF, $4, $5, $8, r, pT, $6, $7, $9, r }' >> "$OUT/table3.tsv"
 done
+# the torque's noise: variance of the mean x production time (torque^2 x time), the quantity that
+# sets every projected run length (README); equilibration 5000 steps (reduced), 1500 (quick scene)
+eq_steps() { case $TIER in reduced) echo 5000;; *) echo 1500;; esac; }
+# (its stderr: that of a variance from n blocks, sqrt(2 / (n - 1)))
+noise() { awk -v s=$1 -v t=$2 -v n=$3 'BEGIN{v = s * s * t; printf "%.4g\t%.2g", v, v * sqrt(2 / (n - 1))}'; }
+for r in $ROWS; do
+    t=$(get row$r steps | awk -v e=$(eq_steps) '{print ($1 - e) * 0.01}')
+    emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $B)
+done
+# the harder drive's linear response (reduced tier): the antisymmetric torque and the drag per sphere
+# per unit u at each u, their ratios between successive u (banded: 1.2 against 0.6), the torque's
+# noise at each u (does it grow with u?) and the fluid's temperature (heating by the drive)
+if [ "$TIER" = reduced ]; then
+    printf 'u\tdrag\tdrag_se\ttorque\ttorque_se\ttorque_theory\tnoise\tnoise_se\ttemperature\ttemperature_se\n' > "$OUT/linear_response.tsv"
+    for u in $LR_U; do
+        sphere_blocks lr_u$u $LR_B
+        F=$(column_mean "$OUT/runs/lr_u$u/sphere_blocks.tsv" 2) T=$(column_mean "$OUT/runs/lr_u$u/sphere_blocks.tsv" 3)
+        read -r Fth Tth < <(eq23 $LR_l $u)
+        emit "lr_drag_u$u" $F
+        emit "lr_torque_u$u" $T
+        emit "lr_torque_theory_u$u" "$Tth" 0
+        noise=$(noise $(echo "$T" | cut -f2) $(awk -v n=$(lr_steps $u) 'BEGIN{print n * 0.01}') $LR_B)
+        emit "lr_torque_noise_u$u" $noise
+        emit "lr_temperature_u$u" $(get lr_u$u temperature)
+        printf '%s\t%s\t%s\t%s\t%s\t%s\n' $u "$F" "$T" "$Tth" "$noise" "$(get lr_u$u temperature)" >> "$OUT/linear_response.tsv"
+    done
+    # per_u_ratio Q U1 U2 -> "ratio<TAB>stderr" of (Q(U2) / U2) / (Q(U1) / U1), relative errors in quadrature
+    per_u_ratio() {
+        paste <(get . "lr_$1_u$2") <(get . "lr_$1_u$3") | awk -F'\t' -v a=$2 -v b=$3 '{x = ($3 / b) / ($1 / a)
+            printf "%.10g\t%.4g", x, (x < 0 ? -x : x) * sqrt(($2 / $1)^2 + ($4 / $3)^2)}'
+    }
+    for q in torque drag; do
+        emit "lr_${q}_per_u_1.2_vs_0.6" $(per_u_ratio $q 0.6 1.2)
+        emit "lr_${q}_per_u_2.4_vs_1.2" $(per_u_ratio $q 1.2 2.4)
+    done
+fi
+# Projection (README "The torque rows"; the rule fixed before the ladder ran): the drive of each row's
+# projection is u = 1.2 for l = 1 and 0.6 for l = 2 and 1.5 if lr_torque_per_u_1.2_vs_0.6 passes its
+# band and is resolved (|x - 1| <= 0.10 + 2 stderr, 2 stderr <= 0.20), else the paper's 0.3. Time for a
+# torque stderr of 10 % of eq. 23 at that u: noise / (0.1 T_eq23(u))^2, with the row's own 30^3 noise;
+# CPU-hours at the row's measured 30^3 cost per time unit; the remaining hours count the 600 time
+# units run at u = 0.3 as 600 (0.3 / u)^2 at u. Their stderr: the noise's.
+if [ "$TIER" = reduced ]; then
+    lin=$(get . lr_torque_per_u_1.2_vs_0.6 | awk -F'\t' '{d = $1 - 1; d = d < 0 ? -d : d; print (d <= 0.10 + 2 * $2 && 2 * $2 <= 0.20) ? 1 : 0}')
+    emit projection_linear_response "$lin" 0
+    for r in $ROWS; do
+        up=$U; [ "$lin" = 1 ] && { [ $r = 3 ] && up=1.2 || up=0.6; }
+        paste <(get . torque_noise_row$r) <(get . torque_theory_row$r) <(get row$r cpu_seconds) <(get row$r steps) |
+            awk -F'\t' -v u=$up -v u0=$U -v r=$r '{T = $3 * u / u0; t = $1 / (0.1 * T)^2; c = $5 / ($7 * 0.01)
+                f = $2 / $1; h = t * c / 3600; rem = (t - 600 * (u0 / u)^2) * c / 3600
+                printf "projection_u_row%s\t%s\t0\n", r, u
+                printf "projection_time_row%s\t%.4g\t%.2g\n", r, t, t * f
+                printf "projection_cpu_hours_row%s\t%.4g\t%.2g\n", r, h, h * f
+                printf "projection_cpu_hours_remaining_row%s\t%.4g\t%.2g\n", r, rem, rem * f
+                t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
+    done
+fi
