@@ -130,7 +130,7 @@ for A in $AS; do
             'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
         rho=$(get $cr tcaf_mass_density | cut -f1)
         # total density: the particles' and the bodies' (each of mass 6 m, the p = 6 constituents',
-        # src/colloid.c default)
+        # src/bodies/colloid.c default)
         rho_tot=$(awk -v r="$rho" -v nc="$(get $cr colloids | cut -f1)" -v L="$L" 'BEGIN { printf "%.10g", r + 6 * nc / L^3 }')
         for m in two-mode integral; do fit $fr $m "$rho" "$L"; fit $cr $m "$rho" "$L"; done
         # the estimators' eta(k -> 0) (exp: the run's own fit, errors from blocks) and the suspension's

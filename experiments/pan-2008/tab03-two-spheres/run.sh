@@ -62,7 +62,7 @@ eq23() {  # l u -> F_the T_the (eq. 23)
 }
 # sphere_blocks NAME [BLOCKS]: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
 # the torque (T_a - T_b) / 2 about z (sphere a at lower y), B (or BLOCKS) contiguous blocks of the
-# samples in run.h5 (the first n mod B skipped, as src/blockavg.c), kept in
+# samples in run.h5 (the first n mod B skipped, as src/core/blockavg.c), kept in
 # runs/NAME/sphere_blocks.tsv: the two spheres' noises are averaged sample by sample, so
 # their correlation is in the error
 sphere_blocks() {
