@@ -46,7 +46,7 @@ printf 'L\tinv_L\tcolloids\tD\tD_se\tD_t_ratio_late_half\tD_t_ratio_late_half_se
 for Lb in $BOX_L; do
     nc=$(awk -v l=$Lb 'BEGIN{printf "%d", 0.027 * l^3 + 0.5}')
     d=$(get box_L$Lb D) r=$(get box_L$Lb D_t_ratio_late_half)
-    printf '%s\t%.10g\t%s\t%s\t%s\n' $Lb $(awk -v l=$Lb 'BEGIN{print 1/l}') $nc "$d" "$r" >> "$OUT/d-of-L.tsv"
+    printf '%s\t%.10g\t%s\t%s\t%s\n' $Lb $(awk -v l=$Lb 'BEGIN{printf "%.10g", 1/l}') $nc "$d" "$r" >> "$OUT/d-of-L.tsv"
     emit_from box_L$Lb D D_colloid_L$Lb
     emit_from box_L$Lb D_t_ratio_late_half D_t_ratio_late_half_L$Lb
 done
