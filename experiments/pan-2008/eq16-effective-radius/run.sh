@@ -65,7 +65,7 @@ eta=$(awk -F'\t' '$1=="mu_dt0.01"{print $2 "\t" $3}' "$visc/summary.tsv")
 awk -F'\t' -v e="$eta" -v s="$slope" -v di="$dinf" -v m=$MU 'BEGIN{split(e,E,"\t"); split(s,S,"\t"); split(di,DI,"\t"); pi=3.141592653589793
     cyh=2.837297/(6*pi*E[1]); cyse=cyh*E[2]/E[1]; c=-S[1]; cse=S[2]
     printf "yeh_hummer_coefficient\t%.10g\t%.4g\n", cyh, cyse
-    r=c/cyh; printf "finite_size_slope_over_yeh_hummer\t%.10g\t%.4g\n", r, r*sqrt((cse/c)^2+(cyse/cyh)^2)
+    r=c/cyh; printf "finite_size_slope_over_yeh_hummer\t%.10g\t%.4g\n", r, (r < 0 ? -r : r)*sqrt((cse/c)^2+(cyse/cyh)^2)
     D=DI[1]; Dse=DI[2]
     # eq. 16 (c = 6) from the extrapolated D: with the paper mu, as the paper computes R; and with
     # the measured eta (errors of D and eta in quadrature)
