@@ -88,7 +88,15 @@ static int solve_velocities(Run *r)
     const double t0 = wall_now(), c0 = cpu_now();
     if (od_assemble(&r->od, &r->s, &r->nl)) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     if (r->rc.bonds) bonds_rhs(r->rc.bonds, &r->s, &r->od);
-    return od_step_solve(&r->od, &r->s, &r->rc.od, &r->ods_stats, record, t0, c0) ? 3 : 0;
+    if (od_step_solve(&r->od, &r->s, &r->rc.od, &r->ods_stats, record, t0, c0) == 0) return 0;
+    /* a solve that diverged within the step (a blow-up the stability check has not seen yet: the
+     * velocities it left are what ran away) gets the blow-up's message and a smaller dt; otherwise
+     * the solver's failure is the reason on record */
+    if (run_stop_if_unstable(r)) return 3;
+    char why[160];
+    snprintf(why, sizeof why, "the m = 0 solve did not converge at step %llu\n", (unsigned long long)r->s.step);
+    write_file_atomic(r->opt->outdir, "INCOMPLETE", why, strlen(why));
+    return 3;
 }
 
 /* After a move: the walls, the check for a non-finite position (before it
