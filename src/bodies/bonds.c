@@ -118,7 +118,22 @@ static void spring_of(const Bonds *b, const System *s, int c, int p, int *ia, in
     bonds_spring(b->p.H, b->p.side, d, F);
 }
 
-void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
+/* One spring's virial r_ab F_ab (as the pairs', through the pair driver's
+ * pair_virial_add) and energy H (r - side)^2 / 2. */
+static void spring_virial(const Bonds *b, const System *s, PairVirial *pv, int ia, const double d[3], const double F[3])
+{
+    double t[9];
+    for (int a = 0; a < 3; a++)
+        for (int e = 0; e < 3; e++) t[3 * a + e] = d[a] * F[e];
+    pair_virial_add(pv, s, ia, PART_CONSERVATIVE, d, t);
+    const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
+    pv->epot += 0.5 * b->p.H * (r - b->p.side) * (r - b->p.side);
+}
+
+/* Every spring's force (eqs 50-51) added to its particle a and subtracted from
+ * b in out, 3 doubles per slot: slot[i] for particle i (the rows of the m = 0
+ * system) or i itself (slot NULL); pv != NULL: the virial too. */
+static void add_springs(Bonds *b, const System *s, double *out, const int *slot, PairVirial *pv)
 {
     refresh_index(b, s);
     for (int c = 0; c < b->p.ncol; c++)
@@ -126,12 +141,15 @@ void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
             int ia, ib;
             double d[3], F[3];
             spring_of(b, s, c, p, &ia, &ib, d, F);
-            const int ra = od->row_of[ia], rb = od->row_of[ib];
-            for (int a = 0; a < 2; a++) {          /* eq. 18 with eqs 50-51 */
-                od->f[3 * ra + a] += F[a];
-                od->f[3 * rb + a] -= F[a];
-            }
+            const int sa = slot ? slot[ia] : ia, sb = slot ? slot[ib] : ib;
+            for (int a = 0; a < 2; a++) { out[3 * sa + a] += F[a]; out[3 * sb + a] -= F[a]; }
+            if (pv) spring_virial(b, s, pv, ia, d, F);
         }
+}
+
+void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
+{
+    add_springs(b, s, od->f, od->row_of, NULL);   /* eq. 18 with eqs 50-51 */
     double n2 = 0.0;
     for (int k = 0; k < 3 * od->nm; k++) n2 += od->f[k] * od->f[k];
     od->fnorm = sqrt(n2);
@@ -139,24 +157,7 @@ void bonds_rhs(Bonds *b, const System *s, OdSystem *od)
 
 void bonds_forces(Bonds *b, System *s, PairVirial *pv)
 {
-    refresh_index(b, s);
-    for (int c = 0; c < b->p.ncol; c++)
-        for (int p = 0; p < 3; p++) {
-            int ia, ib;
-            double d[3], F[3];
-            spring_of(b, s, c, p, &ia, &ib, d, F);
-            for (int a = 0; a < 2; a++) { s->f[3 * ia + a] += F[a]; s->f[3 * ib + a] -= F[a]; }
-            if (!pv) continue;
-            double t[9];
-            for (int a = 0; a < 3; a++)
-                for (int e = 0; e < 3; e++) t[3 * a + e] = d[a] * F[e];   /* r_ab F_ab, as the pairs */
-            for (int k = 0; k < 9; k++) pv->W[PART_CONSERVATIVE][k / 3][k % 3] += t[k];
-            const double r = sqrt(d[0] * d[0] + d[1] * d[1]);
-            pv->epot += 0.5 * b->p.H * (r - b->p.side) * (r - b->p.side);
-            if (pv->nbins > 0)
-                ik_distribute(pv->Wbin + (size_t)PART_CONSERVATIVE * 9 * pv->nbins, pv->nbins, pv->bin_axis,
-                              s->box.L[pv->bin_axis], s->x[3 * ia + pv->bin_axis], d[pv->bin_axis], t);
-        }
+    add_springs(b, s, s->f, NULL, pv);
 }
 
 static int block_of(const Bonds *b, long long sample)
