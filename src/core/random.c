@@ -34,3 +34,253 @@ double rng_counter_normal(CounterRng *c)
     gsl_rng r = {&counter_type, c};
     return gsl_ran_gaussian_ziggurat(&r, 1.0);
 }
+
+/* ---- batches ------------------------------------------------------------ */
+#include <threads.h>
+#include "simd.h"
+
+/* Philox4x32-10 (Salmon et al. 2011), Random123's philox4x32 round for round:
+ * out = (hi(M1 c2) ^ c1 ^ k0, lo(M1 c2), hi(M0 c0) ^ c3 ^ k1, lo(M0 c0)), the
+ * key bumped by the Weyl constants between rounds. One lane per pair; the key
+ * and the step words are the same for every lane. The portable loop below is
+ * the reference; on x86-64 an AVX-512 or AVX2 version of the same rounds is
+ * chosen at run time (one binary for any x86-64), its 32 x 32 -> 64 bit
+ * products from the even and odd lanes (vpmuludq), which GCC's vectoriser
+ * does not find. tests/test_random.c checks every lane against philox4x32. */
+static void philox_portable(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
+                            const uint32_t *restrict c2, const uint32_t *restrict c3,
+                            uint32_t (*restrict w)[RNG_BATCH], int q0)
+{
+    for (int q = q0; q < m; q++) {
+        uint32_t x0 = c0, x1 = c1, x2 = c2[q], x3 = c3[q], a = k0, b = k1;
+        for (int r = 0; r < 10; r++) {
+            const uint64_t p0 = (uint64_t)PHILOX_M4x32_0 * x0, p1 = (uint64_t)PHILOX_M4x32_1 * x2;
+            x0 = (uint32_t)(p1 >> 32) ^ x1 ^ a;
+            x1 = (uint32_t)p1;
+            x2 = (uint32_t)(p0 >> 32) ^ x3 ^ b;
+            x3 = (uint32_t)p0;
+            a += PHILOX_W32_0; b += PHILOX_W32_1;
+        }
+        w[0][q] = x0; w[1][q] = x1; w[2][q] = x2; w[3][q] = x3;
+    }
+}
+
+#ifdef DPD_HAVE_X86_SIMD
+#include <immintrin.h>
+/* hi and lo words of x * M lane by lane (8 lanes): even lanes' products
+ * directly, odd lanes' after shifting them down */
+__attribute__((target("avx2"))) static inline void mulhilo_avx2(__m256i x, __m256i M, __m256i *hi, __m256i *lo)
+{
+    const __m256i e = _mm256_mul_epu32(x, M), o = _mm256_mul_epu32(_mm256_srli_epi64(x, 32), M);
+    *lo = _mm256_blend_epi32(e, _mm256_slli_epi64(o, 32), 0xAA);
+    *hi = _mm256_blend_epi32(_mm256_srli_epi64(e, 32), o, 0xAA);
+}
+__attribute__((target("avx2"))) static int philox_avx2(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
+                                                       const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])
+{
+    const __m256i M0 = _mm256_set1_epi32((int)PHILOX_M4x32_0), M1 = _mm256_set1_epi32((int)PHILOX_M4x32_1);
+    int q = 0;
+    for (; q + 8 <= m; q += 8) {
+        __m256i x0 = _mm256_set1_epi32((int)c0), x1 = _mm256_set1_epi32((int)c1);
+        __m256i x2 = _mm256_loadu_si256((const __m256i *)(c2 + q)), x3 = _mm256_loadu_si256((const __m256i *)(c3 + q));
+        uint32_t a = k0, b = k1;
+        for (int r = 0; r < 10; r++) {
+            __m256i h0, l0, h1, l1;
+            mulhilo_avx2(x0, M0, &h0, &l0);
+            mulhilo_avx2(x2, M1, &h1, &l1);
+            x0 = _mm256_xor_si256(_mm256_xor_si256(h1, x1), _mm256_set1_epi32((int)a));
+            x1 = l1;
+            x2 = _mm256_xor_si256(_mm256_xor_si256(h0, x3), _mm256_set1_epi32((int)b));
+            x3 = l0;
+            a += PHILOX_W32_0; b += PHILOX_W32_1;
+        }
+        _mm256_storeu_si256((__m256i *)(w[0] + q), x0); _mm256_storeu_si256((__m256i *)(w[1] + q), x1);
+        _mm256_storeu_si256((__m256i *)(w[2] + q), x2); _mm256_storeu_si256((__m256i *)(w[3] + q), x3);
+    }
+    return q;
+}
+__attribute__((target("avx512f"))) static inline void mulhilo_avx512(__m512i x, __m512i M, __m512i *hi, __m512i *lo)
+{
+    const __m512i e = _mm512_mul_epu32(x, M), o = _mm512_mul_epu32(_mm512_srli_epi64(x, 32), M);
+    *lo = _mm512_mask_blend_epi32(0xAAAA, e, _mm512_slli_epi64(o, 32));
+    *hi = _mm512_mask_blend_epi32(0xAAAA, _mm512_srli_epi64(e, 32), o);
+}
+__attribute__((target("avx512f"))) static int philox_avx512(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
+                                                            const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])
+{
+    const __m512i M0 = _mm512_set1_epi32((int)PHILOX_M4x32_0), M1 = _mm512_set1_epi32((int)PHILOX_M4x32_1);
+    int q = 0;
+    for (; q + 16 <= m; q += 16) {
+        __m512i x0 = _mm512_set1_epi32((int)c0), x1 = _mm512_set1_epi32((int)c1);
+        __m512i x2 = _mm512_loadu_si512(c2 + q), x3 = _mm512_loadu_si512(c3 + q);
+        uint32_t a = k0, b = k1;
+        for (int r = 0; r < 10; r++) {
+            __m512i h0, l0, h1, l1;
+            mulhilo_avx512(x0, M0, &h0, &l0);
+            mulhilo_avx512(x2, M1, &h1, &l1);
+            x0 = _mm512_xor_si512(_mm512_xor_si512(h1, x1), _mm512_set1_epi32((int)a));
+            x1 = l1;
+            x2 = _mm512_xor_si512(_mm512_xor_si512(h0, x3), _mm512_set1_epi32((int)b));
+            x3 = l0;
+            a += PHILOX_W32_0; b += PHILOX_W32_1;
+        }
+        _mm512_storeu_si512(w[0] + q, x0); _mm512_storeu_si512(w[1] + q, x1);
+        _mm512_storeu_si512(w[2] + q, x2); _mm512_storeu_si512(w[3] + q, x3);
+    }
+    return q;
+}
+#endif
+
+static void philox_lanes(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
+                         const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])
+{
+    int q0 = 0;
+#ifdef DPD_HAVE_X86_SIMD
+    const int isa = simd_level();
+    if (isa == SIMD_AVX512) q0 = philox_avx512(m, k0, k1, c0, c1, c2, c3, w);
+    else if (isa == SIMD_AVX2) q0 = philox_avx2(m, k0, k1, c0, c1, c2, c3, w);
+#endif
+    philox_portable(m, k0, k1, c0, c1, c2, c3, w, q0);
+}
+
+static once_flag batch_once = ONCE_FLAG_INIT;
+static void batch_init(void);
+
+void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                     uint32_t w[4][RNG_BATCH])
+{
+    call_once(&batch_once, batch_init);
+    uint32_t lo[RNG_BATCH], hi[RNG_BATCH];
+    for (int q = 0; q < m; q++) {
+        lo[q] = id_a[q] < id_b[q] ? id_a[q] : id_b[q];
+        hi[q] = id_a[q] < id_b[q] ? id_b[q] : id_a[q];
+    }
+    philox_lanes(m, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32), lo, hi, w);
+}
+
+/* GSL's strip tables, read out of GSL itself (no copy of its constants): per
+ * strip i, the word (j << 8 | 0x80 | i) is accepted at once iff j < zig_k[i],
+ * and then gives j * zig_w[i]. Probed with a generator that counts its calls:
+ * one call = accepted at once; later words (0x81: strip 1, j = 0) end any
+ * further attempt. */
+static uint32_t zig_k[128];
+static double zig_w[128];
+typedef struct { uint32_t first; int calls; } ZigProbe;
+static unsigned long probe_get(void *vs)
+{
+    ZigProbe *p = vs;
+    return p->calls++ == 0 ? p->first : 0x81u;
+}
+static double probe_get_double(void *vs) { return probe_get(vs) * (1.0 / 4294967296.0); }
+static void probe_set(void *vs, unsigned long seed) { (void)vs; (void)seed; }
+static const gsl_rng_type probe_type = {"ziggurat-probe", 0xffffffffUL, 0, sizeof(ZigProbe),
+                                        &probe_set, &probe_get, &probe_get_double};
+static int probe(uint32_t i, uint32_t j, double *x)
+{
+    ZigProbe p = {(j << 8) | 0x80u | i, 0};
+    gsl_rng r = {&probe_type, &p};
+    *x = gsl_ran_gaussian_ziggurat(&r, 1.0);
+    return p.calls == 1;
+}
+static void zig_init(void)
+{
+    for (uint32_t i = 0; i < 128; i++) {
+        uint32_t lo = 0, hi = 1u << 24;   /* accepted at once iff j < k: find k in [0, 2^24] */
+        while (lo < hi) {
+            const uint32_t mid = lo + (hi - lo) / 2;
+            double x;
+            if (probe(i, mid, &x)) lo = mid + 1; else hi = mid;
+        }
+        zig_k[i] = lo;
+        double x = 0.0;
+        if (lo > 1) probe(i, 1, &x);   /* j = 1: x = wtab[i] */
+        zig_w[i] = x;
+    }
+}
+
+static inline int zig_accept(uint32_t k, double *z)
+{
+    const uint32_t i = k & 0x7f, j = k >> 8;
+    const double x = j * zig_w[i];
+    *z = (k & 0x80) ? x : -x;   /* GSL: sign * sigma * x, sigma = 1 */
+    return j < zig_k[i];
+}
+
+/* once per process: the strip tables */
+static void batch_init(void)
+{
+    zig_init();
+}
+
+int rng_ziggurat_fast(uint32_t k, double *z)
+{
+    call_once(&batch_once, batch_init);
+    return zig_accept(k, z);
+}
+
+#ifdef DPD_HAVE_X86_SIMD
+/* The ziggurat's first step on 16 words at a time: the same product
+ * j * zig_w[i] and the same sign flip as zig_accept, so the same bits; ok[g]
+ * has bit l set if word 16 g + l was accepted at once. Returns the words done
+ * (a multiple of 16); the rest is left to the caller. */
+__attribute__((target("avx512f"))) static int zig_avx512(int m, const uint32_t *w, double *z, uint16_t *ok)
+{
+    const __m512i low7 = _mm512_set1_epi32(0x7f), bit7 = _mm512_set1_epi32(0x80);
+    const __m512i sign = _mm512_set1_epi64((long long)0x8000000000000000ULL);
+    int q = 0;
+    for (; q + 16 <= m; q += 16) {
+        const __m512i k = _mm512_loadu_si512(w + q);
+        const __m512i i = _mm512_and_si512(k, low7), j = _mm512_srli_epi32(k, 8);
+        ok[q / 16] = _mm512_cmplt_epu32_mask(j, _mm512_i32gather_epi32(i, (const int *)zig_k, 4));
+        const __mmask16 neg = _mm512_testn_epi32_mask(k, bit7);
+        for (int h = 0; h < 2; h++) {
+            const __m256i ih = h ? _mm512_extracti64x4_epi64(i, 1) : _mm512_castsi512_si256(i);
+            const __m256i jh = h ? _mm512_extracti64x4_epi64(j, 1) : _mm512_castsi512_si256(j);
+            const __m512d x = _mm512_mul_pd(_mm512_cvtepu32_pd(jh), _mm512_i32gather_pd(ih, zig_w, 8));
+            const __m512i xi = _mm512_castpd_si512(x);
+            _mm512_storeu_pd(z + q + 8 * h, _mm512_castsi512_pd(_mm512_mask_xor_epi64(xi, (__mmask8)(neg >> (8 * h)), xi, sign)));
+        }
+    }
+    return q;
+}
+#endif
+
+/* A pair the ziggurat does not accept at once: its whole sequence the GSL way. */
+static void pair_normals_gsl(uint32_t seed, uint64_t step, uint32_t a, uint32_t b, int nvar, double *z)
+{
+    CounterRng c;
+    rng_pair_start(&c, seed, step, a, b);
+    for (int v = 0; v < nvar; v++) z[v] = rng_counter_normal(&c);
+}
+
+void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                      int nvar, double *z)
+{
+    uint32_t w[4][RNG_BATCH];
+    rng_pair_blocks(seed, step, m, id_a, id_b, w);
+    int q0 = 0;
+#ifdef DPD_HAVE_X86_SIMD
+    if (simd_level() == SIMD_AVX512) {   /* 16 pairs at a time, variate by variate, then the pairs not accepted at once */
+        uint16_t ok[RNG_BATCH / 16], okv[RNG_BATCH / 16];
+        double zt[4][RNG_BATCH];
+        q0 = zig_avx512(m, w[0], nvar == 1 ? z : zt[0], ok);
+        for (int v = 1; v < nvar; v++) {
+            zig_avx512(m, w[v], zt[v], okv);
+            for (int g = 0; g < q0 / 16; g++) ok[g] &= okv[g];
+        }
+        if (nvar > 1)
+            for (int q = 0; q < q0; q++)
+                for (int v = 0; v < nvar; v++) z[nvar * q + v] = zt[v][q];
+        for (int g = 0; g < q0 / 16; g++)
+            for (unsigned bad = (uint16_t)~ok[g]; bad; bad &= bad - 1) {
+                const int q = 16 * g + __builtin_ctz(bad);
+                pair_normals_gsl(seed, step, id_a[q], id_b[q], nvar, z + nvar * q);
+            }
+    }
+#endif
+    for (int q = q0; q < m; q++) {
+        int fast = 1;
+        for (int v = 0; v < nvar; v++) fast &= zig_accept(w[v][q], &z[nvar * q + v]);
+        if (!fast) pair_normals_gsl(seed, step, id_a[q], id_b[q], nvar, z + nvar * q);
+    }
+}

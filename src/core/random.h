@@ -85,4 +85,24 @@ static inline __attribute__((always_inline)) double rng_pair_normal(uint32_t see
     return rng_counter_normal(&c);
 }
 
+/* Batches of pairs (the pair driver's PAIR_BATCH): the noise of up to
+ * RNG_BATCH pairs at one step, bit for bit what rng_pair_normal and
+ * rng_counter_normal give one pair at a time. The Philox blocks of the batch
+ * are computed together (vectorised, with the instruction set chosen at run
+ * time), and a variate whose word the ziggurat accepts at once (97.2 %) is read
+ * from GSL's own strip tables; the others, and every pair with such a variate,
+ * take GSL's path. */
+#define RNG_BATCH 256
+
+/* The first block of each pair's noise sequence: counter (step, lo id, hi id). */
+void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                     uint32_t w[4][RNG_BATCH]);
+/* nvar (1 ... 4) variates per pair, pair q's into z[nvar * q + v]: theta_ij,
+ * then xi_ij[0..2] as in rng_pair_start. */
+void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                      int nvar, double *z);
+/* The ziggurat's first step on one word (GSL's gsl_ran_gaussian_ziggurat for a
+ * 32-bit generator): 1 and the variate in *z if it accepts the word at once. */
+int rng_ziggurat_fast(uint32_t k, double *z);
+
 #endif

@@ -102,30 +102,72 @@ void forces_zero_virial(PairVirial *pv)
 
 enum { MODEL_DPD, MODEL_PAN2008 };
 
-/* The walk over the particles [i0, i1) of one chunk: each particle's list
- * entries a batch at a time, those inside the largest cutoff (pairs_in_range)
- * handed to the model's evaluator, then i's own sums added. The list holds
- * interacting type pairs only (neighbor.c keep_pair). model and le (Lees-Edwards
- * shear) are constants: the walk is compiled once per value (pair_chunk), so
- * that a scene without shear or rotation runs no test for them. */
+/* Particle i's pairs in range, handed to the model's evaluator with their
+ * noise (nvar variates per pair, drawn for all of them at once). */
+static inline __attribute__((always_inline))
+void pair_evaluate(const System *s, int i, int *near, double (*dd)[4], const double *noise, int m,
+                   PairAcc *acc, PairVirial *pv, const int model, const int le)
+{
+    if (model == MODEL_PAN2008) pan_pair_batch(s, i, near, dd, noise, m, acc, pv, le);
+    else dpd_pair_batch(s, i, near, dd, noise, m, acc, pv, le);
+}
+
+/* After particle i's last pair: its own sums into the chunk's buffers. */
+static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc, const int model)
+{
+    force_claim(acc->f, acc->tq, acc->touched, i, acc->n);
+    for (int a = 0; a < 3; a++) acc->f[3 * i + a] += acc->fi[a];
+    if (model == MODEL_PAN2008)
+        for (int a = 0; a < 3; a++) acc->tq[3 * i + a] += acc->ti[a];
+    for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
+}
+
+/* The walk over the particles [i0, i1) of one chunk. The list entries of
+ * consecutive particles are gathered up to PAIR_BATCH at a time; those inside
+ * the largest cutoff (pairs_in_range) get their noise in one call (Philox
+ * lanes: a particle alone has only a few pairs) and go to the model's
+ * evaluator particle by particle, in list order, so every sum is formed in the
+ * same order as one pair at a time. A particle with more than PAIR_BATCH
+ * entries is walked in batches of its own. The list holds interacting type
+ * pairs only (neighbor.c keep_pair). model and le (Lees-Edwards shear) are
+ * constants: the walk is compiled once per value (pair_chunk), so that a scene
+ * without shear or rotation runs no test for them. */
 static inline __attribute__((always_inline))
 void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc *acc,
                PairVirial *pv, const int model, const int le)
 {
-    int near[PAIR_BATCH];
-    double dd[PAIR_BATCH][4];
-    for (int i = i0; i < i1; i++) {
-        for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
-        for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
-            const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
-            const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
-            if (model == MODEL_PAN2008) pan_pair_batch(s, i, near, dd, m, acc, pv, le);
-            else dpd_pair_batch(s, i, near, dd, m, acc, pv, le);
+    const int nvar = model == MODEL_PAN2008 ? 4 : 1;
+    int near[PAIR_BATCH], count[PAIR_BATCH];
+    double dd[PAIR_BATCH][4], noise[4 * PAIR_BATCH];
+    uint32_t id_a[PAIR_BATCH], id_b[PAIR_BATCH];
+    for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
+    for (int i = i0; i < i1;) {
+        if (nl->start[i + 1] - nl->start[i] > PAIR_BATCH) {   /* a long list: batches of its own */
+            for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
+                const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
+                const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
+                for (int q = 0; q < m; q++) { id_a[q] = s->id[i]; id_b[q] = s->id[near[q]]; }
+                rng_pair_normals(s->seed, s->step, m, id_a, id_b, nvar, noise);
+                pair_evaluate(s, i, near, dd, noise, m, acc, pv, model, le);
+            }
+            pair_close(i, acc, model);
+            i++;
+            continue;
         }
-        force_claim(acc->f, acc->tq, acc->touched, i, acc->n);
-        for (int a = 0; a < 3; a++) acc->f[3 * i + a] += acc->fi[a];
-        if (model == MODEL_PAN2008)
-            for (int a = 0; a < 3; a++) acc->tq[3 * i + a] += acc->ti[a];
+        int np = 0, ie = i;
+        while (ie < i1 && ie - i < PAIR_BATCH && nl->start[ie + 1] - nl->start[ie] <= PAIR_BATCH - np) {
+            const int c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
+            for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
+            count[ie - i] = c;
+            np += c;
+            ie++;
+        }
+        rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+        for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+            pair_evaluate(s, p, near + off, dd + off, noise + nvar * off, count[p - i], acc, pv, model, le);
+            pair_close(p, acc, model);
+        }
+        i = ie;
     }
 }
 

@@ -102,7 +102,7 @@ static inline void force_claim(double *f, double *t, unsigned char *touched, int
  * lie inside the largest cutoff, with their minimum-image separation and r^2
  * (dd[q] = dx, dy, dz, r2). Returns their number. le: as box_min_image_le. */
 static inline __attribute__((always_inline)) int pairs_in_range(const System *s, const NeighborList *nl, int i, int k0, int k1,
-                                 int near[PAIR_BATCH], double dd[PAIR_BATCH][4], const int le)
+                                 int *near, double (*dd)[4], const int le)
 {
     const double *x = s->x;
     const double rc2_max = s->rc_max * s->rc_max;

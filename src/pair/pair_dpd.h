@@ -44,11 +44,12 @@ static __attribute__((noinline, noclone)) void dpd_pair_record(PairVirial *pv, c
     }
 }
 
-/* One batch of particle i's pairs (pairs_in_range): the force F_ij on i into
+/* One batch of particle i's pairs (pairs_in_range) with their theta_ij (eq. 4,
+ * drawn for the batch by the walk): the force F_ij on i into
  * acc->fi, -F_ij on j into the chunk's buffer; pv != NULL: the virial too.
  * le: the box has Lees-Edwards shear (a constant). */
 static inline __attribute__((always_inline))
-void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], int m,
+void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], const double *theta, int m,
                     PairAcc *acc, PairVirial *pv, const int le)
 {
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
@@ -67,9 +68,8 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], in
         const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
         const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
                          + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
-        const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
         double F[PAIR_PARTS];
-        dpd_pair_terms(p, r, edv, theta, inv_sqrt_dt, &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
+        dpd_pair_terms(p, r, edv, theta[q], inv_sqrt_dt, &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
         const double ft = F[0] + F[1] + F[2];
         const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
         fi[0] += fx; fi[1] += fy; fi[2] += fz;

@@ -116,16 +116,14 @@ static void pan_pair_record(PairVirial *pv, const System *s, int i, int j, const
  * not resolved). F_ij and the torque on i into acc->fi, acc->ti, their partners'
  * into the chunk's buffers; pv != NULL: the virial by part too. */
 static inline __attribute__((always_inline))
-void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], int m0,
+void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], const double *noise0, int m0,
                     PairAcc *acc, PairVirial *pv, const int le)
 {
     const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i];
-    const uint32_t id_i = s->id[i];
     double geo[PAIR_BATCH][8];     /* d[3], e[3], w_C, f */
     double noise[PAIR_BATCH][4];   /* theta, xi[3] */
-    CounterRng rng[PAIR_BATCH];
     int m = 0;
     for (int q = 0; q < m0; q++) {
         const int j = near[q];
@@ -133,20 +131,15 @@ void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], int m0,
         const double r2 = dd[q][3];
         if (!pair_interacts(p, r2)) continue;
         near[m] = j;
+        for (int a = 0; a < 4; a++) noise[m][a] = noise0[4 * q + a];
         double *g = geo[m++];
         g[0] = dd[q][0]; g[1] = dd[q][1]; g[2] = dd[q][2];
         pan_pair_geometry(p, g, sqrt(r2), g + 3, g + 6, g + 7);
     }
-    /* the pairs' Philox blocks, then from each theta (eq. 15 central) and xi
-     * (eq. 15 antisymmetric), one pair sequence */
-    for (int q = 0; q < m; q++) rng_pair_start(&rng[q], s->seed, s->step, id_i, s->id[near[q]]);
-    for (int q = 0; q < m; q++) {
-        noise[q][0] = rng_counter_normal(&rng[q]);
-        if (s->pair[ti][s->type[near[q]]].gamma_shear != 0.0)
-            for (int a = 1; a < 4; a++) noise[q][a] = rng_counter_normal(&rng[q]);
-        else
-            noise[q][1] = noise[q][2] = noise[q][3] = 0.0;
-    }
+    /* theta (eq. 15 central) and xi (eq. 15 antisymmetric) come from each
+     * pair's sequence, drawn for the batch by the walk; xi = 0 where gamma^S = 0 */
+    for (int q = 0; q < m; q++)
+        if (s->pair[ti][s->type[near[q]]].gamma_shear == 0.0) noise[q][1] = noise[q][2] = noise[q][3] = 0.0;
     for (int q = 0; q < m; q++) {
         const int j = near[q];
         const PairParams *p = &s->pair[ti][s->type[j]];

@@ -1,0 +1,22 @@
+/* simd.h - the instruction set of the vectorised kernels (the pair noise's
+ * Philox lanes and ziggurat step, the neighbour build's distance test),
+ * chosen once per process from what the CPU has: one binary runs on any
+ * x86-64. Every vectorised kernel has a portable twin that gives the same
+ * bits; the tests run each level the CPU has against it. */
+#ifndef DPD_SIMD_H
+#define DPD_SIMD_H
+
+enum { SIMD_PORTABLE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(DPD_PORTABLE_SIMD)
+#define DPD_HAVE_X86_SIMD 1
+#endif
+
+/* The level in use: the best the CPU has, at most the environment's DPD_SIMD
+ * (0, 1 or 2) if set. */
+int simd_level(void);
+/* Lower the level to at most cap (cap >= 0; a cap above what the CPU has
+ * gives the CPU's best), for tests and benchmarks; returns the level in use. */
+int simd_cap(int cap);
+
+#endif
