@@ -155,56 +155,129 @@ void tcaf_free(Tcaf *t)
  * complex products per particle. The particles are cut into TCAF_CHUNKS
  * fixed ranges summed apart and added in chunk order, so J does not depend
  * on the thread count (as the forces, forces.h). */
+/* The wave vectors come in runs of consecutive l at fixed (i, j) (the order
+ * of wave_vectors): the phase factor e^{i(k_x x + k_y y)} of a run is formed
+ * once, then multiplied by e^{i k_z z} along the run, which the tables hold in
+ * consecutive entries. The products are the ones the vector-by-vector loop
+ * formed ((a b) c, the same operations), so the same bits. */
+typedef struct { int q0, len, i, j, l0, p0; } TcafRun;   /* l0: table index of the first l; p0: its slot in the padded sums */
+/* Each run's sums padded to a multiple of TCAF_PAD slots: the vectorised loop
+ * then has no remainder (the padding slots sum products of zero table entries
+ * and are never read). */
+#define TCAF_PAD 4
+
+static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
+{
+    int nr = 0;
+    for (int q = 0; q < t->nvec; q++) {
+        const int *c = t->vec + 3 * q;
+        TcafRun *r = &run[nr > 0 ? nr - 1 : 0];
+        if (nr > 0 && c[0] == r->i && c[1] == r->j && off + c[2] == r->l0 + r->len) { r->len++; continue; }
+        run[nr++] = (TcafRun){.q0 = q, .len = 1, .i = c[0], .j = c[1], .l0 = off + c[2]};
+    }
+    int p = 0;
+    for (int r = 0; r < nr; r++) { run[r].p0 = p; p += (run[r].len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD; }
+    *npad = p;
+    return nr;
+}
+
+/* A particle's phase tables e^{i m k_d x_d} (index off + m, m = -M ... M;
+ * zero beyond, where the padded slots read) and its velocity. */
+typedef struct {
+    double er[3][2 * TCAF_NMAX + 1 + TCAF_PAD], ei[3][2 * TCAF_NMAX + 1 + TCAF_PAD];
+    double v[3];
+} TcafPhase;
+
+/* A particle's v e^{i k.r} added to the current of every wave vector, run by
+ * run: e^{i(k_x x + k_y y)} once per run, times e^{i k_z z} along it (the same
+ * products, (a b) c, as vector by vector), so each J component is the same sum
+ * over the particles in their order. J: 6 arrays of np padded slots (Re, Im of
+ * x, y, z). Two particles per pass over J were tried: slower (GCC vectorises
+ * the inner particle loop poorly). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+static void accumulate_particle(int np, int nrun, const TcafRun *restrict run, int off,
+                                const TcafPhase *restrict ph, double *restrict J)
+{
+    const double v0 = ph->v[0], v1 = ph->v[1], v2 = ph->v[2];
+    double *restrict J0 = J, *restrict J1 = J + np, *restrict J2 = J + 2 * (size_t)np;
+    double *restrict J3 = J + 3 * (size_t)np, *restrict J4 = J + 4 * (size_t)np, *restrict J5 = J + 5 * (size_t)np;
+    for (int r = 0; r < nrun; r++) {
+        const double ar = ph->er[0][off + run[r].i], ai = ph->ei[0][off + run[r].i];
+        const double br = ph->er[1][off + run[r].j], bi = ph->ei[1][off + run[r].j];
+        const double abr = ar * br - ai * bi, abi = ar * bi + ai * br;
+        const double *restrict cr = ph->er[2] + run[r].l0, *restrict ci = ph->ei[2] + run[r].l0;
+        const int q0 = run[r].p0, len = (run[r].len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD;
+        #pragma omp simd
+        for (int k = 0; k < len; k++) {
+            const double pr = abr * cr[k] - abi * ci[k], pi = abr * ci[k] + abi * cr[k];
+            J0[q0 + k] += v0 * pr; J1[q0 + k] += v0 * pi;
+            J2[q0 + k] += v1 * pr; J3[q0 + k] += v1 * pi;
+            J4[q0 + k] += v2 * pr; J5[q0 + k] += v2 * pi;
+        }
+    }
+}
+
+/* Particle i's phase tables and velocity. */
+static void phase_tables(TcafPhase *ph, const System *s, int i, const int M[3], int off)
+{
+    for (int d = 0; d < 3; d++) {
+        const double a = M[d] > 0 ? 2.0 * M_PI * s->x[3 * i + d] / s->box.L[d] : 0.0;
+        const double br = cos(a), bi = sin(a);
+        double *er = ph->er[d], *ei = ph->ei[d];
+        er[off] = 1.0; ei[off] = 0.0;
+        for (int m = 1; m <= M[d]; m++) {
+            er[off + m] = er[off + m - 1] * br - ei[off + m - 1] * bi;
+            ei[off + m] = er[off + m - 1] * bi + ei[off + m - 1] * br;
+            er[off - m] = er[off + m];
+            ei[off - m] = -ei[off + m];
+        }
+        ph->v[d] = s->v[3 * i + d];
+    }
+}
+
 void tcaf_current(Tcaf *t, const System *s)
 {
     const int nv = t->nvec, n = s->n;
     const int M[3] = {t->nmax[0], t->nmax[1], t->nmax[2]};
     const int W = 2 * (M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2])) + 1;
-    double complex *part = calloc((size_t)TCAF_CHUNKS * nv * 3 + 1, sizeof(double complex));
-    if (!part) { memset(t->J, 0, (size_t)nv * 3 * sizeof(double complex)); return; }
+    const int off = (W - 1) / 2;
+    /* the runs; per chunk 6 x (padded) partial sums */
+    TcafRun *run = malloc((size_t)nv * sizeof *run + 1);
+    int np = 0;
+    const int nrun = run ? tcaf_runs(t, off, run, &np) : 0;
+    double *part = run ? calloc((size_t)TCAF_CHUNKS * np * 6 + 1, sizeof(double)) : NULL;
+    if (!part || !run) { free(part); free(run); memset(t->J, 0, (size_t)nv * 3 * sizeof(double complex)); return; }
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
-        double complex *Jp = part + (size_t)chunk * nv * 3;
+        double *Jp = part + (size_t)chunk * np * 6;
         /* phase tables as (re, im) pairs: plain real arithmetic (complex
          * products in C11 without -ffast-math go through a NaN-safe libcall) */
-        double er[3][2 * TCAF_NMAX + 1], ei[3][2 * TCAF_NMAX + 1];
-        const int off = (W - 1) / 2;
+        TcafPhase ph;
+        memset(&ph, 0, sizeof ph);
         const int i0 = (int)((long long)n * chunk / TCAF_CHUNKS), i1 = (int)((long long)n * (chunk + 1) / TCAF_CHUNKS);
         for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
-            for (int d = 0; d < 3; d++) {
-                const double ph = M[d] > 0 ? 2.0 * M_PI * s->x[3 * i + d] / s->box.L[d] : 0.0;
-                const double br = cos(ph), bi = sin(ph);
-                er[d][off] = 1.0; ei[d][off] = 0.0;
-                for (int m = 1; m <= M[d]; m++) {
-                    er[d][off + m] = er[d][off + m - 1] * br - ei[d][off + m - 1] * bi;
-                    ei[d][off + m] = er[d][off + m - 1] * bi + ei[d][off + m - 1] * br;
-                    er[d][off - m] = er[d][off + m];
-                    ei[d][off - m] = -ei[d][off + m];
-                }
-            }
-            const double *v = s->v + 3 * i;
-            double *Jr = (double *)Jp;   /* complex = (re, im) array, C11 6.2.5 */
-            for (int q = 0; q < nv; q++) {
-                const int *c = t->vec + 3 * q;
-                const double ar = er[0][off + c[0]], ai = ei[0][off + c[0]];
-                const double br = er[1][off + c[1]], bi = ei[1][off + c[1]];
-                const double cr = er[2][off + c[2]], ci = ei[2][off + c[2]];
-                const double abr = ar * br - ai * bi, abi = ar * bi + ai * br;
-                const double pr = abr * cr - abi * ci, pi = abr * ci + abi * cr;
-                double *o = Jr + 6 * q;
-                o[0] += v[0] * pr; o[1] += v[0] * pi;
-                o[2] += v[1] * pr; o[3] += v[1] * pi;
-                o[4] += v[2] * pr; o[5] += v[2] * pi;
-            }
+            phase_tables(&ph, s, i, M, off);
+            accumulate_particle(np, nrun, run, off, &ph, Jp);
         }
     }
-    for (int q = 0; q < 3 * nv; q++) {
-        double complex sum = 0.0;
-        for (int h = 0; h < TCAF_CHUNKS; h++) sum += part[(size_t)h * nv * 3 + q];
-        t->J[q] = sum;
-    }
+    /* the chunks' sums in chunk order (as complex sums: component by component) */
+    for (int r = 0; r < nrun; r++)
+        for (int k = 0; k < run[r].len; k++)
+            for (int d = 0; d < 3; d++) {
+                const size_t slot = (size_t)run[r].p0 + (size_t)k;
+                double re = 0.0, im = 0.0;
+                for (int h = 0; h < TCAF_CHUNKS; h++) {
+                    const double *Jp = part + (size_t)h * np * 6;
+                    re += Jp[(size_t)(2 * d) * np + slot];
+                    im += Jp[(size_t)(2 * d + 1) * np + slot];
+                }
+                t->J[3 * (run[r].q0 + k) + d] = CMPLX(re, im);
+            }
     free(part);
+    free(run);
     /* momentum of rigid bodies (spring-model colloids), if asked for */
     for (int b = 0; b < t->nbody; b++)
         for (int q = 0; q < nv; q++) {
