@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Time the LAMMPS peer on the standard DPD benchmark (bench/peer/in.dpd).
 # Usage: bench/peer/run-lammps.sh L N THREADS
+# env IN: the input in bench/peer (default in.dpd; in.dpd-ext: the mai-duy-2019 solvent)
 #   L        box side (N_particles = round(3 L^3); L=20 -> 24000)
 #   N        timed steps (after EQ equilibration steps, env EQ, default 1000)
 #   THREADS  OpenMP threads; >1 uses the OPENMP package (-sf omp -pk omp T),
@@ -25,13 +26,14 @@ fi
 LOGDIR="$ROOT/build/peer/logs"
 mkdir -p "$LOGDIR"
 
-ARGS=(-in "$HERE/in.dpd" -log none -nocite
+IN="${IN:-in.dpd}"
+ARGS=(-in "$HERE/$IN" -log none -nocite
       -var L "$L" -var N "$N" -var EQ "$EQ")
 if [ "$T" -gt 1 ] || [ "${LMP_SUFFIX:-}" = omp ]; then
     ARGS+=(-sf omp -pk omp "$T")
-    OUT="$LOGDIR/dpd-L${L}-N${N}-T${T}-omp.out"
+    OUT="$LOGDIR/${IN#in.}-L${L}-N${N}-T${T}-omp.out"
 else
-    OUT="$LOGDIR/dpd-L${L}-N${N}-T${T}-plain.out"
+    OUT="$LOGDIR/${IN#in.}-L${L}-N${N}-T${T}-plain.out"
 fi
 
 OMP_NUM_THREADS="$T" OMP_PROC_BIND="${OMP_PROC_BIND:-false}" \

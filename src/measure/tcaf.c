@@ -11,6 +11,7 @@
 #endif
 #include "tcaf.h"
 #include "blockavg.h"
+#include "simd.h"
 
 static int selected(const Tcaf *t, const System *s, int i)
 {
@@ -194,11 +195,9 @@ typedef struct {
  * over the particles in their order. J: 6 arrays of np padded slots (Re, Im of
  * x, y, z). Two particles per pass over J were tried: slower (GCC vectorises
  * the inner particle loop poorly). */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
-static void accumulate_particle(int np, int nrun, const TcafRun *restrict run, int off,
-                                const TcafPhase *restrict ph, double *restrict J)
+static inline __attribute__((always_inline))
+void accumulate_particle(int np, int nrun, const TcafRun *restrict run, int off,
+                         const TcafPhase *restrict ph, double *restrict J)
 {
     const double v0 = ph->v[0], v1 = ph->v[1], v2 = ph->v[2];
     double *restrict J0 = J, *restrict J1 = J + np, *restrict J2 = J + 2 * (size_t)np;
@@ -217,6 +216,27 @@ static void accumulate_particle(int np, int nrun, const TcafRun *restrict run, i
             J4[q0 + k] += v2 * pr; J5[q0 + k] += v2 * pi;
         }
     }
+}
+
+/* The loop compiled for AVX-512, AVX2 and baseline x86-64 (the same operations,
+ * no contraction, so the same bits), chosen by simd_level() (core/simd.c). */
+typedef void (*AccumulateFn)(int, int, const TcafRun *, int, const TcafPhase *, double *);
+static void accumulate_portable(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
+{ accumulate_particle(np, nrun, run, off, ph, J); }
+#ifdef DPD_HAVE_X86_SIMD
+__attribute__((target("avx2"))) static void accumulate_avx2(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
+{ accumulate_particle(np, nrun, run, off, ph, J); }
+__attribute__((target("avx512f"))) static void accumulate_avx512(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
+{ accumulate_particle(np, nrun, run, off, ph, J); }
+#endif
+static AccumulateFn accumulate_for_cpu(void)
+{
+#ifdef DPD_HAVE_X86_SIMD
+    const int isa = simd_level();
+    if (isa == SIMD_AVX512) return accumulate_avx512;
+    if (isa == SIMD_AVX2) return accumulate_avx2;
+#endif
+    return accumulate_portable;
 }
 
 /* Particle i's phase tables and velocity. */
@@ -249,6 +269,7 @@ void tcaf_current(Tcaf *t, const System *s)
     const int nrun = run ? tcaf_runs(t, off, run, &np) : 0;
     double *part = run ? calloc((size_t)TCAF_CHUNKS * np * 6 + 1, sizeof(double)) : NULL;
     if (!part || !run) { free(part); free(run); memset(t->J, 0, (size_t)nv * 3 * sizeof(double complex)); return; }
+    const AccumulateFn accumulate = accumulate_for_cpu();
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
         double *Jp = part + (size_t)chunk * np * 6;
@@ -260,7 +281,7 @@ void tcaf_current(Tcaf *t, const System *s)
         for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
             phase_tables(&ph, s, i, M, off);
-            accumulate_particle(np, nrun, run, off, &ph, Jp);
+            accumulate(np, nrun, run, off, &ph, Jp);
         }
     }
     /* the chunks' sums in chunk order (as complex sums: component by component) */
