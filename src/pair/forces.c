@@ -278,7 +278,7 @@ void forces_compute(System *s, const NeighborList *nl, ForceWork *w, PairVirial 
         /* chunk 0 accumulates straight into f (and the torques): one buffer less to clear and read */
         PairAcc acc = {.f = c == 0 ? s->f : w->buf + (size_t)(c - 1) * stride,
                        .tq = !rot ? NULL : c == 0 ? s->torque : w->tbuf + (size_t)(c - 1) * stride,
-                       .touched = forces_chunk_mask(w, c), .n = n};
+                       .touched = forces_chunk_mask(w, c), .n = n, .inv_sqrt_dt = 1.0 / sqrt(s->dt)};
         const int i0 = forces_chunk_start(nl, n, c), i1 = forces_chunk_start(nl, n, c + 1);
         PairVirial *cv = NULL;
         if (pv) { cv = &w->chunk[c]; cv->bin_axis = pv->bin_axis; cv->nbins = pv->nbins; forces_zero_virial(cv); }

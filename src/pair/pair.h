@@ -82,6 +82,7 @@ typedef struct {
     double *f, *tq;           /* tq: rotation scenes only */
     unsigned char *touched;
     int n;
+    double inv_sqrt_dt;       /* 1 / sqrt(dt): the noise is theta / sqrt(dt) (eq. 4) */
     double fi[3], ti[3];
 } PairAcc;
 

@@ -52,7 +52,7 @@ static inline __attribute__((always_inline))
 void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], const double *theta, int m,
                     PairAcc *acc, PairVirial *pv, const int le)
 {
-    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
+    const double inv_sqrt_dt = acc->inv_sqrt_dt;
     const double *v = s->v_pred;
     const int ti = s->type[i];
     double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]};   /* in registers across the batch */

@@ -119,7 +119,7 @@ static inline __attribute__((always_inline))
 void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], const double *noise0, int m0,
                     PairAcc *acc, PairVirial *pv, const int le)
 {
-    const double inv_sqrt_dt = 1.0 / sqrt(s->dt);
+    const double inv_sqrt_dt = acc->inv_sqrt_dt;
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i];
     double geo[PAIR_BATCH][8];     /* d[3], e[3], w_C, f */
