@@ -1,6 +1,7 @@
 # reliability.mk - `make fuzz` and `make valgrind` (included by the top Makefile).
 # make fuzz: libFuzzer (clang) on
-# the scene parser and validator, tests/fuzz/fuzz_scene.c, under ASan+UBSan.
+# the scene parser and validator, tests/fuzz/fuzz_scene.c, under ASan+UBSan
+# (linked with every source but main.c: the set-up reaches into most modules).
 # Seeds: tests/fuzz/corpus (kept in the repository), every scene of
 # tests/ and experiments/; new inputs go to build/fuzz/corpus and are merged
 # (minimised) back into tests/fuzz/corpus at the end. FUZZ_SECONDS (default
@@ -8,8 +9,8 @@
 # Needs clang: `tools/deps fuzz`.
 FUZZ_SECONDS ?= 900
 FUZZ_DIR := build/fuzz
-FUZZ_SRC := src/io/scene.c src/io/setup.c src/core/system.c src/core/box.c src/core/random.c
-FUZZ_FLAGS := -std=c11 -Wall -Wextra -Werror -D_DEFAULT_SOURCE -g -O1 -fno-omit-frame-pointer \
+FUZZ_SRC = $(SRC)
+FUZZ_FLAGS := -std=c11 -Wall -Wextra -Werror -D_DEFAULT_SOURCE -DDPD_GIT='"fuzz"' -DDPD_CFLAGS='"fuzz"' -g -O1 -fno-omit-frame-pointer \
               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
 
 $(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(HDRS)

@@ -295,7 +295,8 @@ void tcaf_current(Tcaf *t, const System *s)
                     re += Jp[(size_t)(2 * d) * np + slot];
                     im += Jp[(size_t)(2 * d + 1) * np + slot];
                 }
-                t->J[3 * (run[r].q0 + k) + d] = CMPLX(re, im);
+                double *z = (double *)&t->J[3 * (run[r].q0 + k) + d];   /* (re, im), C11 6.2.5 */
+                z[0] = re; z[1] = im;
             }
     free(part);
     free(run);

@@ -22,7 +22,12 @@ static inline void dpd_pair_terms(const PairParams *p, double r, double e_dot_v,
 /* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
  * energy and the force on frozen particles. Only on measurement steps, so kept
  * out of line (the pair loop then compiles alike with and without -DDPD_BARE). */
-static __attribute__((noinline, noclone)) void dpd_pair_record(PairVirial *pv, const System *s, int i, int j,
+#ifdef __clang__
+#define PAIR_NOCLONE   /* clang has no noclone (the fuzzer's build) */
+#else
+#define PAIR_NOCLONE __attribute__((noclone))
+#endif
+static __attribute__((noinline)) PAIR_NOCLONE void dpd_pair_record(PairVirial *pv, const System *s, int i, int j,
         const double d[3], double r, const double F[PAIR_PARTS], double fx, double fy, double fz)
 {
     const double inv_r = 1.0 / r;
