@@ -329,7 +329,7 @@ fi
 # (cachegrind, the difference of a long and a short run, deterministic) and CPU time per particle-step
 # (the two binaries alternating, median of REPEAT pairs' ratios). Written to bench/refactor.tsv.
 # Without BASE the section is skipped.
-if [ -n "${BASE:-}" ]; then
+if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
     [ -x "$BASE" ] || { echo "bench: BASE=$BASE is not an executable"; exit 1; }
     kernel_args() {  # KERNEL -> scene and settings of 3000 particles (standard, pan) or its own size (m = 0)
         case $1 in
@@ -374,4 +374,42 @@ if [ -n "${BASE:-}" ]; then
     echo
     echo "this build against BASE=$BASE (bench/refactor.tsv):"
     column -t -s $'\t' bench/refactor.tsv
+fi
+# ---- the cost classes against BASE (SPEEDUP=1 with BASE set; bench/speedup.tsv): CPU time per
+# production particle-step of this build over BASE's, the median of REPEAT alternating pairs, for
+# each class of scene tools/cost tells apart (tools/cost table scales the committed runs' rates by
+# it, so the paper tier's projection follows a faster simulator without rerunning it). BASE should be
+# the binary (or one as fast) that made the committed runs.
+if [ -n "${BASE:-}" ] && [ "${SPEEDUP:-0}" = 1 ]; then
+    class_args() {  # CLASS -> scene and settings
+        case $1 in
+            standard) echo "bench/standard.cfg --set box=[15.0,15.0,15.0] --set steps=400 --set equilibration=100" ;;
+            pow) echo "bench/mai-duy-solvent.cfg --set steps=200 --set equilibration=50" ;;
+            tcaf) echo "experiments/mai-duy-2019/fig01-viscosity-wavenumber/solvent-tcaf.cfg --set steps=600 --set equilibration=40 --set measure.blocks=2" ;;
+            rotation) echo "bench/pan-fluid.cfg --set steps=600 --set equilibration=100" ;;
+            m0) echo "experiments/phan-thien-2016/fig03-couette-profile/couette.cfg --set steps=60 --set equilibration=20" ;;
+        esac
+    }
+    class_rate() {  # BIN CLASS -> production particle-steps per CPU second
+        # shellcheck disable=SC2046
+        OMP_NUM_THREADS=1 "$1" run $(class_args "$2") --out "$out/speedup-run" --threads 1 --quiet >/dev/null \
+            && val "$out/speedup-run" production_particle_steps_per_second_cpu
+    }
+    {
+        printf 'class\tcpu_time_new_over_base\trange\tscene\n'
+        for c in standard pow tcaf rotation m0; do
+            r=""
+            for j in $(seq "$REPEAT"); do
+                a=$(class_rate "$BASE" $c); b=$(class_rate "$DPD" $c)
+                r+="$(awk -v a="$a" -v b="$b" 'BEGIN{print a/b}') "
+            done
+            printf '%s\t%.3f\t%s\t%s\n' "$c" "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)" "$(class_args $c | cut -d' ' -f1)"
+        done
+        printf 'date, commits\t%s\t%s\tbase %s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" \
+            "$("$BASE" --version 2>/dev/null | head -1 || echo unknown)"
+    } > "$out/speedup.tsv"
+    cp "$out/speedup.tsv" bench/speedup.tsv
+    echo
+    echo "CPU time per particle-step, this build / BASE, by cost class (bench/speedup.tsv; tools/cost uses it):"
+    column -t -s $'\t' bench/speedup.tsv
 fi

@@ -67,7 +67,7 @@ paper: $(BIN)
 
 # paper.md's cost table of the paper tier (tools/cost): remade when a plan, a scene or a committed
 # result's cost changes
-build/cost.tsv: $(BIN) tools/cost tools/plan $(wildcard experiments/*/*/run.sh experiments/*/*/*.cfg) \
+build/cost.tsv: $(BIN) tools/cost tools/plan $(wildcard bench/speedup.tsv experiments/*/*/run.sh experiments/*/*/*.cfg) \
                 $(wildcard results/*/*/paper/provenance.tsv results/*/*/reduced/provenance.tsv)
 	@mkdir -p build && tools/cost table paper > $@.part && mv $@.part $@
 
