@@ -207,8 +207,9 @@ fi
 # ln dt) through its dt_max over the window; over the seeds, p = mean, stat = sd / sqrt(n). The
 # model error is the size of the correction the corrected form removes, |p_corrected - p_pure| (the
 # next order is smaller than the leading one it follows; bounding it by the leading one is the
-# conservative choice); the banded error is sqrt(stat^2 + model^2). Rows: <name> (banded),
-# <name>_stat, <name>_pure and <name>_model (unbanded).
+# conservative choice). Rows: <name> (the two in quadrature, sqrt(stat^2 + model^2)), <name>_stat
+# (error = stat: the banded row since 2026-12-03, a band takes a measured statistical error only),
+# <name>_pure and <name>_model (unbanded).
 paired() {   # paired FAMILY FROM TO Q NAME
     num_awk -F'\t' -v f=$1 -v lo=$2 -v hi=$3 -v q=$4 -v name=$5 'NR > 1 && $1==f && $3+0>=lo && $3+0<=hi && !num_isnan($5) {
             if (!($4 in ns)) seed[++nseed]=$4; k=++ns[$4]; X1[$4, k]=log($3); Y[$4, k]=log($5)
