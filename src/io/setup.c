@@ -179,7 +179,8 @@ static int read_pairs(Scene *sc, System *s)
                                                   s->types[t2[0]].name, s->types[t2[1]].name);
         seen[t2[0]][t2[1]] = seen[t2[1]][t2[0]] = 1;
         PairParams p = {.active = 1};
-        if (scene_double(sc, g, "a", &p.a, 0.0, 0.0, 1e5, 1) < 0) return -1;
+        /* a up to 1e7: the stability map bisects dt_max ~ 0.58 / sqrt(a) out to there */
+        if (scene_double(sc, g, "a", &p.a, 0.0, 0.0, 1e7, 1) < 0) return -1;
         if (scene_double(sc, g, "gamma", &p.gamma, 0.0, 0.0, 1e6, 1) < 0) return -1;
         if (scene_double(sc, g, "s", &p.s, 2.0, 1e-3, 10.0, 0) < 0) return -1;
         if (scene_double(sc, g, "gamma_shear", &p.gamma_shear, 0.0, 0.0, 1e6, 0) < 0) return -1;

@@ -14,7 +14,8 @@ case $TIER in
     # ITER_A: the repulsion family's halvings (paper: 14 over 1e-4 ... 1, 0.056 %, for the fit with
     # the correction to scaling, whose exponent is ~ 5 x less precise than a pure power law's; 12
     # (0.22 %) before the rule of 2026-12-03; README)
-    # SEEDS: the paper tier's seeds are 16 ... 20 since the paired rule (README "The paired exponents");
+    # SEEDS: the paper tier's seeds are 21 ... 25 since the far-window rule (README "The far windows"),
+    # 16 ... 20 from the paired rule (README "The paired exponents") to it;
     # 11 ... 15 from the gamma rule (README "The gamma exponents") to the paired rule:
     # 1 ... 5 made every paper run before the corrected-exponent rule, 6 ... 10 the run that showed the
     # gamma s = 2 row failing, on which the gamma rule was designed, so it is judged on others
@@ -22,12 +23,15 @@ case $TIER in
     # corrected fit over gamma = 450 ... 15000 (7 values; 3 before, an exactly determined fit)
     # HS (paper): 3e4 and 3e5 added by the paired rule, so that H's corrected fit over 1e4 ... 1e6
     # has 5 values (an over-determined fit per seed)
-    quick) ITER=8 ITER_MASS=8 ITER_A=8 MASS_LO=1e-6 NSTEPS=200 NSTEPS_M0=100 SEEDS="1 2"
+    # A_LO, GAS_LO, ITER_GAS (paper): the far windows of the rule of 2026-12-03, evening (README
+    # "The far windows"): a to 1e7 (dt_max ~ 1.8e-4 there: lower end 1e-5, 14 halvings, 0.07 %), the
+    # gas to gamma = 1e6 (dt_max ~ 3e-7 at s = 0.5: lower end 1e-8, 13 halvings, 0.22 %)
+    quick) ITER=8 ITER_MASS=8 ITER_A=8 ITER_GAS=8 MASS_LO=1e-6 A_LO=1e-4 GAS_LO=1e-6 NSTEPS=200 NSTEPS_M0=100 SEEDS="1 2"
            GAMMAS_S2="4.5 450 4500" GAMMAS_S05="" GAS_GAMMAS="450 4500" AS="25 100 500"
            MASSES="1 0.1 0.01" HS="1000 10000 100000" ;;
-    paper) ITER=9 ITER_MASS=12 ITER_A=14 MASS_LO=1e-7 NSTEPS=1000 NSTEPS_M0=500 SEEDS="16 17 18 19 20"
-           GAMMAS_S2="1 4.5 15 45 150 450 1500 4500" GAMMAS_S05="1 4.5 15 45 150 450 1500 4500" GAS_GAMMAS="150 450 800 1500 2500 4500 8000 15000"
-           AS="10 25 50 100 200 500 1000 2000 5000 10000 20000 30000 50000 70000 100000"
+    paper) ITER=9 ITER_MASS=12 ITER_A=14 ITER_GAS=13 MASS_LO=1e-7 A_LO=1e-5 GAS_LO=1e-8 NSTEPS=1000 NSTEPS_M0=500 SEEDS="21 22 23 24 25"
+           GAMMAS_S2="1 4.5 15 45 150 450 1500 4500" GAMMAS_S05="1 4.5 15 45 150 450 1500 4500" GAS_GAMMAS="150 450 800 1500 2500 4500 8000 15000 30000 100000 300000 1000000"
+           AS="10 25 50 100 200 500 1000 2000 5000 10000 20000 30000 50000 70000 100000 200000 500000 1000000 2000000 5000000 10000000"
            MASSES="1 0.3 0.1 0.03 0.01 0.003 0.001 0.0003 0.0001 0.00003 0.00001" HS="100 1000 10000 30000 100000 300000 1000000" ;;
 esac
 printf 'family\tparameter\tvalue\tseed\tdt\tstable\tsteps\tmessage_ok\n' > "$OUT/trials.tsv"
@@ -108,10 +112,10 @@ for g in $GAMMAS_S05; do [ -n "$g" ] || continue; bisect gamma_s0.5 gamma $g flu
 # dissipative limit alone, where theory gives dt_max ~ 1/gamma (the fluid's trials above start
 # from a lattice that melts within a trial, so they sample closer contacts the longer they run)
 for g in $GAS_GAMMAS; do
-    for sw in 2 0.5; do bisect gas_s$sw gamma $g gas3d.cfg 1e-6 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=$sw"; done
+    for sw in 2 0.5; do iter=$ITER_GAS bisect gas_s$sw gamma $g gas3d.cfg $GAS_LO 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=$sw"; done
 done
 # 2. the repulsion a (gamma = 4.5, s = 2)
-for a in $AS; do iter=$ITER_A bisect a_gamma4.5 a $a fluid3d.cfg 1e-4 1 $NSTEPS --set "pairs.[0].a=$a"; done
+for a in $AS; do iter=$ITER_A bisect a_gamma4.5 a $a fluid3d.cfg $A_LO 1 $NSTEPS --set "pairs.[0].a=$a"; done
 # 3. the mass, inertial integrator, against the m = 0 solver (2D Phan-Thien fluid)
 for m in $MASSES; do iter=$ITER_MASS bisect mass m $m fluid2d.cfg $MASS_LO 1 $NSTEPS --set "types.[0].mass=$m"; done
 bisect mass_m0 m 0 fluid2d-m0.cfg 1e-3 10 $NSTEPS_M0
@@ -204,15 +208,20 @@ fi
 # parameter value of a family, so its offset is common to the seed's whole curve and does not move the
 # exponent. Per seed, the corrected form ln dt_max = ln C + p ln x + beta x^q and the pure power law
 # ln dt_max = ln C + p ln x are fitted by unweighted least squares (a seed's brackets have one width in
-# ln dt) through its dt_max over the window; over the seeds, p = mean, stat = sd / sqrt(n). The
-# model error is the size of the correction the corrected form removes, |p_corrected - p_pure| (the
-# next order is smaller than the leading one it follows; bounding it by the leading one is the
-# conservative choice). Rows: <name> (the two in quadrature, sqrt(stat^2 + model^2)), <name>_stat
-# (error = stat: the banded row since 2026-12-03, a band takes a measured statistical error only),
-# <name>_pure and <name>_model (unbanded).
+# ln dt) through its dt_max over the window; over the seeds, p = mean, sd = their spread. The
+# model error is the size of the correction the corrected form removes, |p_corrected - p_pure|.
+# Since the far-window rule (2026-12-03, evening, before the run on seeds 21 ... 25; README "The far
+# windows") the statistical error is stat = sqrt(sd^2 / n + res^2): res is the bisection's resolution
+# carried through the seed's fit (p = sum_i c_i ln dt_max_i, each point uniform within its bracket,
+# res^2 = sum_i c_i^2 ln(hi_i / lo_i)^2 / 12), averaged over the seeds and not divided by sqrt n,
+# because seeds may end in one and the same bracket (the shared-bracket rule of bisect above); without
+# it, seeds that share every bracket would give stat = 0.
+# Rows: <name> (stat and model in quadrature), <name>_stat (error = stat: the banded row, a band takes
+# a measured statistical error only), <name>_pure (its error sqrt(sd_pure^2 / n + res_pure^2)),
+# <name>_model and <name>_resolution (unbanded).
 paired() {   # paired FAMILY FROM TO Q NAME
     num_awk -F'\t' -v f=$1 -v lo=$2 -v hi=$3 -v q=$4 -v name=$5 'NR > 1 && $1==f && $3+0>=lo && $3+0<=hi && !num_isnan($5) {
-            if (!($4 in ns)) seed[++nseed]=$4; k=++ns[$4]; X1[$4, k]=log($3); Y[$4, k]=log($5)
+            if (!($4 in ns)) seed[++nseed]=$4; k=++ns[$4]; X1[$4, k]=log($3); Y[$4, k]=log($5); V[$4, k]=num_sq(log($7/$6))/12
             X2[$4, k]=(q == 0.5 ? sqrt($3) : q == -0.5 ? 1/sqrt($3) : q == -1 ? 1/$3 : exp(q*log($3))) }
         END { if (nseed < 2) { printf "%s\tnan\tnan\n", name; exit }
             for (j = 1; j <= nseed; j++) { s=seed[j]; n=ns[s]
@@ -220,20 +229,36 @@ paired() {   # paired FAMILY FROM TO Q NAME
                 S00=S01=S02=S11=S12=S22=b0=b1=b2=0
                 for (i = 1; i <= n; i++) { x1=X1[s, i]; x2=X2[s, i]; y=Y[s, i]
                     S00++; S01+=x1; S02+=x2; S11+=x1*x1; S12+=x1*x2; S22+=x2*x2; b0+=y; b1+=x1*y; b2+=x2*y }
-                pc[j]=num_det3(S00,b0,S02, S01,b1,S12, S02,b2,S22)/num_det3(S00,S01,S02, S01,S11,S12, S02,S12,S22)
-                pp[j]=(S00*b1-S01*b0)/(S00*S11-S01*S01) }
+                D=num_det3(S00,S01,S02, S01,S11,S12, S02,S12,S22); D2=S00*S11-S01*S01
+                pc[j]=num_det3(S00,b0,S02, S01,b1,S12, S02,b2,S22)/D
+                pp[j]=(S00*b1-S01*b0)/D2
+                # resolution: p is linear in the ln dt_max_i, with weights c_i (Cramer with y = e_i)
+                vc=vp=0
+                for (i = 1; i <= n; i++) { x1=X1[s, i]; x2=X2[s, i]
+                    vc+=num_sq(num_det3(S00,1,S02, S01,x1,S12, S02,x2,S22)/D)*V[s, i]
+                    vp+=num_sq((S00*x1-S01)/D2)*V[s, i] }
+                rc+=sqrt(vc)/nseed; rp+=sqrt(vp)/nseed }
             num_mean_se(pc, nseed, c); num_mean_se(pp, nseed, p)
-            e[1]=c["se"]; e[2]=num_abs(c["v"]-p["v"])
-            printf "%s\t%.5g\t%.3g\n%s_stat\t%.5g\t%.3g\n%s_pure\t%.5g\t%.3g\n%s_model\t%.3g\t0\n", name, c["v"], num_quad(e, 2), name, c["v"], c["se"], name, p["v"], p["se"], name, e[2] }' "$OUT/dt-max-seeds.tsv" >> "$OUT/summary.tsv"
+            sc[1]=c["se"]; sc[2]=rc; stc=num_quad(sc, 2); sp[1]=p["se"]; sp[2]=rp
+            e[1]=stc; e[2]=num_abs(c["v"]-p["v"])
+            printf "%s\t%.5g\t%.3g\n%s_stat\t%.5g\t%.3g\n%s_pure\t%.5g\t%.3g\n%s_model\t%.3g\t0\n%s_resolution\t%.3g\t0\n", name, c["v"], num_quad(e, 2), name, c["v"], stc, name, p["v"], num_quad(sp, 2), name, e[2], name, rc }' "$OUT/dt-max-seeds.tsv" >> "$OUT/summary.tsv"
 }
 if [ "$TIER" = paper ]; then
-    paired a_gamma4.5 2e4 1e5 -0.5 dt_max_exponent_a_paired
+    # the far windows (rule of 2026-12-03, evening; README "The far windows"), banded: a = 1e5 ... 1e7,
+    # where no second neighbour of the lattice reaches the cutoff within a trial (gap 0.019 > 5.6
+    # relative thermal sigma, sqrt(2 kBT / (3 a)), for a > 6e4), the gas gamma = 1.5e4 ... 1e6, where the
+    # drift over a trial, ~ 62 / gamma at s = 2, is < 0.5 % of rc
+    paired a_gamma4.5 1e5 1e7 -0.5 dt_max_exponent_a_paired
     paired mass 1e-5 1e-3 0.5 dt_max_exponent_m_paired
-    paired gas_s2 450 15000 -1 dt_max_exponent_gamma_s2_paired
-    paired gas_s0.5 450 15000 -1 dt_max_exponent_gamma_s0.5_paired
+    paired gas_s2 15000 1e6 -1 dt_max_exponent_gamma_s2_paired
+    paired gas_s0.5 15000 1e6 -1 dt_max_exponent_gamma_s0.5_paired
     # H at m = 0: dt_max = 2 zeta / H where the spring limits, with the fluid's own m = 0 limit in
     # series, 1 / dt_max = H / (2 zeta) + c, so the leading correction is q = -1
     paired spring_m0 1e4 1e6 -1 dt_max_exponent_H_paired
+    # the paired rule's windows, unbanded since the far-window rule
+    paired a_gamma4.5 2e4 1e5 -0.5 dt_max_exponent_a_paired_near
+    paired gas_s2 450 15000 -1 dt_max_exponent_gamma_s2_paired_near
+    paired gas_s0.5 450 15000 -1 dt_max_exponent_gamma_s0.5_paired_near
 fi
 # s: in the dissipative limit dt gamma sum_j w_D(r_ij) ~ const: the ratio of dt_max at s = 2
 # and s = 0.5 (ideal gas, largest gamma) against the ratio of the mean sum_j w_D of an ideal
