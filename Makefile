@@ -49,6 +49,10 @@ $(BUILD)/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@echo "CC $<"
 	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL)"' -c $< -o $@
 
+# the pair driver without errno from sqrt (an argument never negative there), so that the
+# lane-wise pair loops vectorise (pair_pan2008.h); the same IEEE results
+$(BUILD)/forces.o $(BUILD)/bare/forces.o: CFLAGS_ALL += -fno-math-errno
+
 # the objects that print the version are rebuilt when it changes, not only when their source does
 # (an edit compiled before its commit would otherwise keep the older commit's name)
 VERSION_FILE := $(BUILD)/version

@@ -206,8 +206,8 @@ static void batch_isa(int cap)
                 rng_pair_start(&c, SEED, step, b[q], a[q]);
                 for (int v = 0; v < nvar; v++) {
                     const double one = rng_counter_normal(&c);
-                    CHECK_TRUE(memcmp(&one, &z[nvar * q + v], sizeof one) == 0,
-                               "batch variate %d of pair %d (%d per pair) %.17g != %.17g one at a time", v, q, nvar, z[nvar * q + v], one);
+                    CHECK_TRUE(memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) == 0,
+                               "batch variate %d of pair %d (%d per pair) %.17g != %.17g one at a time", v, q, nvar, z[v * RNG_BATCH + q], one);
                 }
             }
         }

@@ -8,6 +8,7 @@
  * rotation scene with gamma^S = 0 moves exactly like the standard one. */
 #include "runutil.h"
 #include "rotation.h"
+#include "simd.h"
 #include "forces.h"
 #include "neighbor.h"
 #include "random.h"
@@ -204,6 +205,76 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
     system_free(&s);
 }
 
+/* The force loop of steps without the virial (forces.c pan_walk_batch: the
+ * pairs lane by lane, vectorised at each instruction set) gives the same
+ * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force),
+ * forces and torques, at every weight exponent case (s = 0.5, 1, 2 and pow),
+ * with and without gamma^S, with and without Lees-Edwards shear. */
+static void lanes_same_bits_as_pair_by_pair(void **state)
+{
+    (void)state;
+    const int best = simd_cap(-1);
+    for (int le = 0; le <= 1; le++) {
+        System s;
+        memset(&s, 0, sizeof s);
+        const double L[3] = {5.0, 5.5, 6.0};
+        box_init(&s.box, 3, L, le ? 0.4 : 0.0);
+        s.box.le_offset = le ? 1.3 : 0.0;
+        s.kBT = 1.0; s.dt = 0.01; s.lambda = 0.5; s.seed = 17; s.step = 3;
+        s.ntypes = 2;
+        for (int t = 0; t < 2; t++) {
+            snprintf(s.types[t].name, sizeof s.types[t].name, "t%d", t);
+            s.types[t].mass = 1.0; s.types[t].inertia = 0.1; s.types[t].body_force_flip_axis = -1;
+        }
+        system_set_pair(&s, 0, 0, (PairParams){.active = 1, .a = 25.0, .gamma = 4.5, .gamma_shear = 4.5, .s = 0.5, .rc = 1.0});
+        system_set_pair(&s, 0, 1, (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .gamma_shear = 0.0, .s = 1.0, .rc = 0.9});
+        system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 0.42, .rc = 1.0});
+        assert_int_equal(system_alloc(&s, 500), 0);
+        uint64_t st = 33;
+        for (int i = 0; i < s.n; i++) {
+            s.id[i] = (uint32_t)(7 * i + 1);
+            s.type[i] = i % 3 == 0;
+            for (int a = 0; a < 3; a++) {
+                s.x[3 * i + a] = L[a] * tu_uniform(&st);
+                s.v_pred[3 * i + a] = s.v[3 * i + a] = 2.0 * tu_uniform(&st) - 1.0;
+            }
+        }
+        assert_int_equal(rotation_alloc(&s), 0);
+        for (int k = 0; k < 3 * s.n; k++) s.omega_pred[k] = s.omega[k] = 4.0 * tu_uniform(&st) - 2.0;
+        /* pass 1 turns the (1, 1) pairs to s = 2, the fourth case of random_weight */
+        NeighborList nl;
+        ForceWork fw;
+        assert_int_equal(neighbor_init(&nl, &s, 0.3), 0);
+        assert_int_equal(neighbor_build(&nl, &s), 0);
+        assert_int_equal(forces_init(&fw, &s, 0), 0);
+        double *f0 = malloc(6 * (size_t)s.n * sizeof(double));
+        assert_non_null(f0);
+        for (int pass = 0; pass < 2; pass++) {
+            if (pass == 1) system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
+            PairVirial pv = {.bin_axis = -1};
+            forces_compute(&s, &nl, &fw, &pv);   /* pair by pair */
+            memcpy(f0, s.f, 3 * (size_t)s.n * sizeof(double));
+            memcpy(f0 + 3 * s.n, s.torque, 3 * (size_t)s.n * sizeof(double));
+            double fmaxv = 0.0, tmaxv = 0.0;
+            for (int k = 0; k < 3 * s.n; k++) { fmaxv = fmax(fmaxv, fabs(s.f[k])); tmaxv = fmax(tmaxv, fabs(s.torque[k])); }
+            CHECK_TRUE(fmaxv > 1.0 && tmaxv > 0.1, "no forces or torques (max %g, %g)", fmaxv, tmaxv);
+            for (int level = 0; level <= 2; level++) {
+                if (simd_cap(level) != level) continue;
+                forces_compute(&s, &nl, &fw, NULL);   /* lane by lane */
+                const int same = memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0
+                              && memcmp(f0 + 3 * s.n, s.torque, 3 * (size_t)s.n * sizeof(double)) == 0;
+                CHECK_TRUE(same, "lane-wise forces and torques differ from the pair-by-pair bits (level %d, shear %d, pass %d)",
+                           level, le, pass);
+            }
+            simd_cap(best);
+        }
+        free(f0);
+        forces_free(&fw);
+        neighbor_free(&nl);
+        system_free(&s);
+    }
+}
+
 static const char *SCENE_ROT =
     "dimension = 3;\n"
     "box = [5.0, 5.0, 5.0];\n"
@@ -389,6 +460,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(pair_conserves_momentum_and_angular_momentum),
         cmocka_unit_test(torque_is_eq1),
+        cmocka_unit_test(lanes_same_bits_as_pair_by_pair),
         cmocka_unit_test(zero_shear_is_standard_dpd),
         cmocka_unit_test(random_covariance_matches_dissipation),
         cmocka_unit_test(cluster_forces_and_torques_sum_to_zero),

@@ -8,7 +8,8 @@ static unsigned long counter_get(void *vs)
     CounterRng *c = vs;
     if (c->used == 4) {
         c->ctr.v[1] += 1u << 24;   /* next block of the same pair and step */
-        c->out = philox4x32(c->ctr, c->key);
+        c->out = c->have_next ? c->next : philox4x32(c->ctr, c->key);
+        c->have_next = 0;
         c->used = 0;
     }
     return c->out.v[c->used++];
@@ -245,12 +246,44 @@ __attribute__((target("avx512f"))) static int zig_avx512(int m, const uint32_t *
 }
 #endif
 
-/* A pair the ziggurat does not accept at once: its whole sequence the GSL way. */
-static void pair_normals_gsl(uint32_t seed, uint64_t step, uint32_t a, uint32_t b, int nvar, double *z)
+/* One normal from c's stream, as gsl_ran_gaussian_ziggurat draws it: its
+ * first step inline (zig_accept is that step); if the word is not accepted
+ * at once, it is put back (used >= 1 after a get, also across blocks) and
+ * GSL draws from it on, so the sequence is GSL's word for word. */
+static double counter_normal_first_step(CounterRng *c)
 {
-    CounterRng c;
-    rng_pair_start(&c, seed, step, a, b);
-    for (int v = 0; v < nvar; v++) z[v] = rng_counter_normal(&c);
+    double z;
+    if (zig_accept((uint32_t)counter_get(c), &z)) return z;
+    c->used--;
+    return rng_counter_normal(c);
+}
+
+/* The pairs of a batch whose variate v0[k] the ziggurat did not accept at
+ * once (bad[k]: their index in the batch): variates 0 ... v0 - 1 took the first
+ * v0 words of the pair's first block and are kept; the sequence resumes at
+ * word v0 (after a rejection GSL draws further words, so the later variates'
+ * words are not the batch's). The first block is the batch's and the second,
+ * which most of them reach, is drawn for all of them at once. */
+static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id_a, const uint32_t *id_b,
+                                const uint32_t (*w)[RNG_BATCH], int nbad, const int *bad, const int *v0,
+                                int nvar, double *z)
+{
+    uint32_t lo[RNG_BATCH], hi[RNG_BATCH], w1[4][RNG_BATCH];
+    for (int k = 0; k < nbad; k++) {
+        const uint32_t a = id_a[bad[k]], b = id_b[bad[k]];
+        lo[k] = a < b ? a : b; hi[k] = a < b ? b : a;
+    }
+    philox_lanes(nbad, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32) + (1u << 24), lo, hi, w1);
+    for (int k = 0; k < nbad; k++) {
+        const int q = bad[k];
+        CounterRng c;   /* rng_pair_start's counter and key */
+        c.ctr.v[0] = (uint32_t)step; c.ctr.v[1] = (uint32_t)(step >> 32); c.ctr.v[2] = lo[k]; c.ctr.v[3] = hi[k];
+        c.key.v[0] = seed; c.key.v[1] = STREAM_PAIR_NOISE;
+        for (int u = 0; u < 4; u++) { c.out.v[u] = w[u][q]; c.next.v[u] = w1[u][k]; }
+        c.have_next = 1;
+        c.used = v0[k];
+        for (int v = v0[k]; v < nvar; v++) z[v * RNG_BATCH + q] = counter_normal_first_step(&c);
+    }
 }
 
 void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
@@ -258,29 +291,27 @@ void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a,
 {
     uint32_t w[4][RNG_BATCH];
     rng_pair_blocks(seed, step, m, id_a, id_b, w);
-    int q0 = 0;
+    int q0 = 0, nbad = 0, bad[RNG_BATCH], v0[RNG_BATCH];
 #ifdef DPD_HAVE_X86_SIMD
     if (simd_level() == SIMD_AVX512) {   /* 16 pairs at a time, variate by variate, then the pairs not accepted at once */
-        uint16_t ok[RNG_BATCH / 16], okv[RNG_BATCH / 16];
-        double zt[4][RNG_BATCH];
-        q0 = zig_avx512(m, w[0], nvar == 1 ? z : zt[0], ok);
-        for (int v = 1; v < nvar; v++) {
-            zig_avx512(m, w[v], zt[v], okv);
-            for (int g = 0; g < q0 / 16; g++) ok[g] &= okv[g];
-        }
-        if (nvar > 1)
-            for (int q = 0; q < q0; q++)
-                for (int v = 0; v < nvar; v++) z[nvar * q + v] = zt[v][q];
-        for (int g = 0; g < q0 / 16; g++)
-            for (unsigned bad = (uint16_t)~ok[g]; bad; bad &= bad - 1) {
-                const int q = 16 * g + __builtin_ctz(bad);
-                pair_normals_gsl(seed, step, id_a[q], id_b[q], nvar, z + nvar * q);
+        uint16_t ok[4][RNG_BATCH / 16];
+        for (int v = 0; v < nvar; v++) q0 = zig_avx512(m, w[v], z + v * RNG_BATCH, ok[v]);
+        for (int g = 0; g < q0 / 16; g++) {
+            unsigned all = ok[0][g];
+            for (int v = 1; v < nvar; v++) all &= ok[v][g];
+            for (unsigned b = (uint16_t)~all; b; b &= b - 1) {
+                const int l = __builtin_ctz(b);
+                int v = 0;
+                while (ok[v][g] >> l & 1u) v++;   /* the first variate not accepted */
+                bad[nbad] = 16 * g + l; v0[nbad++] = v;
             }
+        }
     }
 #endif
     for (int q = q0; q < m; q++) {
-        int fast = 1;
-        for (int v = 0; v < nvar; v++) fast &= zig_accept(w[v][q], &z[nvar * q + v]);
-        if (!fast) pair_normals_gsl(seed, step, id_a[q], id_b[q], nvar, z + nvar * q);
+        int v = 0;
+        while (v < nvar && zig_accept(w[v][q], &z[v * RNG_BATCH + q])) v++;
+        if (v < nvar) { bad[nbad] = q; v0[nbad++] = v; }
     }
+    if (nbad > 0) pair_normals_resume(seed, step, id_a, id_b, (const uint32_t (*)[RNG_BATCH])w, nbad, bad, v0, nvar, z);
 }

@@ -54,6 +54,8 @@ typedef struct {
     philox4x32_ctr_t ctr, out;
     philox4x32_key_t key;
     int used;
+    int have_next;            /* next: the following block, already computed (rng_pair_normals) */
+    philox4x32_ctr_t next;
 } CounterRng;
 
 double rng_counter_normal(CounterRng *c);
@@ -65,6 +67,7 @@ static inline __attribute__((always_inline)) void rng_counter_start(CounterRng *
     c->key.v[0] = seed; c->key.v[1] = stream;
     c->out = philox4x32(c->ctr, c->key);
     c->used = 0;
+    c->have_next = 0;
 }
 
 /* The noise sequence of the pair (i, j) at a step, the same for (j, i): its
@@ -90,15 +93,16 @@ static inline __attribute__((always_inline)) double rng_pair_normal(uint32_t see
  * rng_counter_normal give one pair at a time. The Philox blocks of the batch
  * are computed together (vectorised, with the instruction set chosen at run
  * time), and a variate whose word the ziggurat accepts at once (97.2 %) is read
- * from GSL's own strip tables; the others, and every pair with such a variate,
- * take GSL's path. */
+ * from GSL's own strip tables; from the first variate that is not, a pair
+ * takes GSL's path (its first block reused, its second drawn for all such
+ * pairs of the batch at once). */
 #define RNG_BATCH 256
 
 /* The first block of each pair's noise sequence: counter (step, lo id, hi id). */
 void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
                      uint32_t w[4][RNG_BATCH]);
-/* nvar (1 ... 4) variates per pair, pair q's into z[nvar * q + v]: theta_ij,
- * then xi_ij[0..2] as in rng_pair_start. */
+/* nvar (1 ... 4) variates per pair, variate v of pair q into z[v * RNG_BATCH + q]
+ * (one plane per variate): theta_ij, then xi_ij[0..2] as in rng_pair_start. */
 void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
                       int nvar, double *z);
 /* The ziggurat's first step on one word (GSL's gsl_ran_gaussian_ziggurat for a

@@ -113,6 +113,8 @@ static int buffers(Tcaf *t, const System *s)
     return 0;
 }
 
+static int work_arrays(Tcaf *t);
+
 int tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long long prod_steps)
 {
     memset(t, 0, sizeof *t);
@@ -126,7 +128,7 @@ int tcaf_init(Tcaf *t, const TcafParams *p, const System *s, int nblocks, long l
     const int nm = t->p.axis_nmax > ns2 ? t->p.axis_nmax : ns2;
     if (nm > TCAF_NMAX) return -1;   /* phase tables of tcaf_current */
     for (int d = 0; d < 3; d++) t->nmax[d] = d < s->box.dim ? nm : 0;
-    return wave_vectors(t, &s->box) || shells(t) || buffers(t, s) ? -1 : 0;
+    return wave_vectors(t, &s->box) || shells(t) || buffers(t, s) || work_arrays(t) ? -1 : 0;
 }
 
 void tcaf_io(Io *io, Tcaf *t)
@@ -146,6 +148,7 @@ void tcaf_free(Tcaf *t)
     free(t->vec); free(t->kvec); free(t->shell_of); free(t->shell_k); free(t->shell_n2);
     free(t->shell_nvec); free(t->J); free(t->origin); free(t->origin_step); free(t->origin_index);
     free(t->curve); free(t->acc); free(t->acc_n);
+    free(t->run); free(t->part); free(t->tabs);
     memset(t, 0, sizeof *t);
 }
 
@@ -161,11 +164,14 @@ void tcaf_free(Tcaf *t)
  * once, then multiplied by e^{i k_z z} along the run, which the tables hold in
  * consecutive entries. The products are the ones the vector-by-vector loop
  * formed ((a b) c, the same operations), so the same bits. */
-typedef struct { int q0, len, i, j, l0, p0; } TcafRun;   /* l0: table index of the first l; p0: its slot in the padded sums */
+typedef struct TcafRun { int q0, len, i, j, l0, p0; } TcafRun;   /* l0: table index of the first l; p0: its slot in the padded sums */
 /* Each run's sums padded to a multiple of TCAF_PAD slots: the vectorised loop
  * then has no remainder (the padding slots sum products of zero table entries
  * and are never read). */
 #define TCAF_PAD 4
+#define TCAF_BLOCK 64   /* particles whose phase tables are added run by run (48 KB at n2max = 25) */
+
+static int run_padded(const TcafRun *r) { return (r->len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD; }
 
 static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
 {
@@ -176,58 +182,110 @@ static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
         if (nr > 0 && c[0] == r->i && c[1] == r->j && off + c[2] == r->l0 + r->len) { r->len++; continue; }
         run[nr++] = (TcafRun){.q0 = q, .len = 1, .i = c[0], .j = c[1], .l0 = off + c[2]};
     }
+    /* grouped by padded length (stable): the loop below then meets one trip
+     * count many times in a row, which its branches predict; the order of the
+     * runs does not enter any sum (each slot sums the particles in order) */
+    for (int r = 1; r < nr; r++) {
+        const TcafRun x = run[r];
+        int u = r;
+        for (; u > 0 && run_padded(&run[u - 1]) > run_padded(&x); u--) run[u] = run[u - 1];
+        run[u] = x;
+    }
     int p = 0;
-    for (int r = 0; r < nr; r++) { run[r].p0 = p; p += (run[r].len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD; }
+    for (int r = 0; r < nr; r++) { run[r].p0 = p; p += run_padded(&run[r]); }
     *npad = p;
     return nr;
 }
 
-/* A particle's phase tables e^{i m k_d x_d} (index off + m, m = -M ... M;
- * zero beyond, where the padded slots read) and its velocity. */
-typedef struct {
-    double er[3][2 * TCAF_NMAX + 1 + TCAF_PAD], ei[3][2 * TCAF_NMAX + 1 + TCAF_PAD];
-    double v[3];
-} TcafPhase;
+/* Phase tables of a block of particles, compact: particle b's rows start at
+ * tab + b * stride; row 2d holds Re e^{i m k_d x_d}, row 2d + 1 its Im, at
+ * index off + m (m = -M ... M; zero beyond, where the padded slots read),
+ * each row wp = W + TCAF_PAD long; then the velocity (3). */
+typedef struct { int off, wp, stride; } TcafLayout;
 
-/* A particle's v e^{i k.r} added to the current of every wave vector, run by
- * run: e^{i(k_x x + k_y y)} once per run, times e^{i k_z z} along it (the same
- * products, (a b) c, as vector by vector), so each J component is the same sum
- * over the particles in their order. J: 6 arrays of np padded slots (Re, Im of
- * x, y, z). Two particles per pass over J were tried: slower (GCC vectorises
- * the inner particle loop poorly). */
-static inline __attribute__((always_inline))
-void accumulate_particle(int np, int nrun, const TcafRun *restrict run, int off,
-                         const TcafPhase *restrict ph, double *restrict J)
+static TcafLayout tcaf_layout(const Tcaf *t)
 {
-    const double v0 = ph->v[0], v1 = ph->v[1], v2 = ph->v[2];
-    double *restrict J0 = J, *restrict J1 = J + np, *restrict J2 = J + 2 * (size_t)np;
-    double *restrict J3 = J + 3 * (size_t)np, *restrict J4 = J + 4 * (size_t)np, *restrict J5 = J + 5 * (size_t)np;
-    for (int r = 0; r < nrun; r++) {
-        const double ar = ph->er[0][off + run[r].i], ai = ph->ei[0][off + run[r].i];
-        const double br = ph->er[1][off + run[r].j], bi = ph->ei[1][off + run[r].j];
-        const double abr = ar * br - ai * bi, abi = ar * bi + ai * br;
-        const double *restrict cr = ph->er[2] + run[r].l0, *restrict ci = ph->ei[2] + run[r].l0;
-        const int q0 = run[r].p0, len = (run[r].len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD;
-        #pragma omp simd
-        for (int k = 0; k < len; k++) {
-            const double pr = abr * cr[k] - abi * ci[k], pi = abr * ci[k] + abi * cr[k];
-            J0[q0 + k] += v0 * pr; J1[q0 + k] += v0 * pi;
-            J2[q0 + k] += v1 * pr; J3[q0 + k] += v1 * pi;
-            J4[q0 + k] += v2 * pr; J5[q0 + k] += v2 * pi;
-        }
-    }
+    const int *M = t->nmax;
+    const int W = 2 * (M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2])) + 1;
+    return (TcafLayout){.off = (W - 1) / 2, .wp = W + TCAF_PAD, .stride = 6 * (W + TCAF_PAD) + 3};
 }
 
-/* The loop compiled for AVX-512, AVX2 and baseline x86-64 (the same operations,
+/* The runs, per chunk 6 x (padded) partial sums and a block of phase tables
+ * (zero where never written: the padded slots read zeros). */
+static int work_arrays(Tcaf *t)
+{
+    const TcafLayout lay = tcaf_layout(t);
+    t->run = malloc((size_t)t->nvec * sizeof *t->run + 1);
+    if (!t->run) return -1;
+    t->nrun = tcaf_runs(t, lay.off, t->run, &t->npad);
+    t->part = calloc((size_t)TCAF_CHUNKS * t->npad * 6 + 1, sizeof(double));
+    t->tabs = calloc((size_t)TCAF_CHUNKS * TCAF_BLOCK * lay.stride, sizeof(double));
+    return t->part && t->tabs ? 0 : -1;
+}
+
+/* A block of particles' v e^{i k.r} added to the current of one run (or a
+ * piece of it, L slots from slot k0): e^{i(k_x x + k_y y)} once per particle,
+ * times e^{i k_z z} along the run (the products (a b) c, as vector by vector).
+ * The 6 x L sums are held in locals (registers) while the block's particles
+ * are added in particle order, so each J component is the same sum, in the
+ * same order, as particle by particle. J: 6 arrays of np padded slots (Re,
+ * Im of x, y, z). */
+static inline __attribute__((always_inline))
+void run_block(int L, const TcafRun *restrict rr, int k0, TcafLayout lay, const double *restrict tab, int nb,
+               int np, double *restrict J)
+{
+    enum { LMAX = 16 };
+    double s0[LMAX], s1[LMAX], s2[LMAX], s3[LMAX], s4[LMAX], s5[LMAX];
+    const int q = rr->p0 + k0, wp = lay.wp;
+    double *restrict J0 = J + q, *restrict J1 = J + np + q, *restrict J2 = J + 2 * (size_t)np + q;
+    double *restrict J3 = J + 3 * (size_t)np + q, *restrict J4 = J + 4 * (size_t)np + q, *restrict J5 = J + 5 * (size_t)np + q;
+    for (int k = 0; k < L; k++) { s0[k] = J0[k]; s1[k] = J1[k]; s2[k] = J2[k]; s3[k] = J3[k]; s4[k] = J4[k]; s5[k] = J5[k]; }
+    for (int b = 0; b < nb; b++) {
+        const double *restrict p = tab + (size_t)b * lay.stride;
+        const double ar = p[lay.off + rr->i], ai = p[wp + lay.off + rr->i];
+        const double br = p[2 * wp + lay.off + rr->j], bi = p[3 * wp + lay.off + rr->j];
+        const double abr = ar * br - ai * bi, abi = ar * bi + ai * br;
+        const double *restrict cr = p + 4 * wp + rr->l0 + k0, *restrict ci = p + 5 * wp + rr->l0 + k0;
+        const double v0 = p[6 * wp], v1 = p[6 * wp + 1], v2 = p[6 * wp + 2];
+        #pragma omp simd
+        for (int k = 0; k < L; k++) {
+            const double pr = abr * cr[k] - abi * ci[k], pi = abr * ci[k] + abi * cr[k];
+            s0[k] += v0 * pr; s1[k] += v0 * pi;
+            s2[k] += v1 * pr; s3[k] += v1 * pi;
+            s4[k] += v2 * pr; s5[k] += v2 * pi;
+        }
+    }
+    for (int k = 0; k < L; k++) { J0[k] = s0[k]; J1[k] = s1[k]; J2[k] = s2[k]; J3[k] = s3[k]; J4[k] = s4[k]; J5[k] = s5[k]; }
+}
+
+/* Every run, in pieces of at most PIECE slots (the sums of a piece should fit
+ * the registers: 6 x 16 doubles in AVX-512's 32, 6 x 8 in AVX2's 16; the
+ * baseline's 8 spill a little but measured faster than 4); the common
+ * lengths with a constant trip count (unrolled, no remainder). */
+static inline __attribute__((always_inline))
+void accumulate_block(int PIECE, int np, int nrun, const TcafRun *restrict run, TcafLayout lay,
+                      const double *restrict tab, int nb, double *restrict J)
+{
+    for (int r = 0; r < nrun; r++)
+        for (int k0 = 0, len = run_padded(&run[r]); k0 < len; k0 += PIECE)
+            switch (len - k0 < PIECE ? len - k0 : PIECE) {
+            case 4: run_block(4, &run[r], k0, lay, tab, nb, np, J); break;
+            case 8: run_block(8, &run[r], k0, lay, tab, nb, np, J); break;
+            case 12: run_block(12, &run[r], k0, lay, tab, nb, np, J); break;
+            case 16: run_block(16, &run[r], k0, lay, tab, nb, np, J); break;
+            }
+}
+
+/* The loops compiled for AVX-512, AVX2 and baseline x86-64 (the same operations,
  * no contraction, so the same bits), chosen by simd_level() (core/simd.c). */
-typedef void (*AccumulateFn)(int, int, const TcafRun *, int, const TcafPhase *, double *);
-static void accumulate_portable(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
-{ accumulate_particle(np, nrun, run, off, ph, J); }
+typedef void (*AccumulateFn)(int, int, const TcafRun *, TcafLayout, const double *, int, double *);
+static void accumulate_portable(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
+{ accumulate_block(8, np, nrun, run, lay, tab, nb, J); }
 #ifdef DPD_HAVE_X86_SIMD
-__attribute__((target("avx2"))) static void accumulate_avx2(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
-{ accumulate_particle(np, nrun, run, off, ph, J); }
-__attribute__((target("avx512f"))) static void accumulate_avx512(int np, int nrun, const TcafRun *run, int off, const TcafPhase *ph, double *J)
-{ accumulate_particle(np, nrun, run, off, ph, J); }
+__attribute__((target("avx2"))) static void accumulate_avx2(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
+{ accumulate_block(8, np, nrun, run, lay, tab, nb, J); }
+__attribute__((target("avx512f"))) static void accumulate_avx512(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
+{ accumulate_block(16, np, nrun, run, lay, tab, nb, J); }
 #endif
 static AccumulateFn accumulate_for_cpu(void)
 {
@@ -239,50 +297,52 @@ static AccumulateFn accumulate_for_cpu(void)
     return accumulate_portable;
 }
 
-/* Particle i's phase tables and velocity. */
-static void phase_tables(TcafPhase *ph, const System *s, int i, const int M[3], int off)
+/* Particle i's phase tables and velocity into p (layout above). The three
+ * recurrences run side by side (each is a chain of dependent products). */
+static void phase_tables(double *p, TcafLayout lay, const System *s, int i, const int M[3])
 {
+    const int off = lay.off, mmax = lay.off;
+    double br[3], bi[3], *er[3], *ei[3];
     for (int d = 0; d < 3; d++) {
         const double a = M[d] > 0 ? 2.0 * M_PI * s->x[3 * i + d] / s->box.L[d] : 0.0;
-        const double br = cos(a), bi = sin(a);
-        double *er = ph->er[d], *ei = ph->ei[d];
-        er[off] = 1.0; ei[off] = 0.0;
-        for (int m = 1; m <= M[d]; m++) {
-            er[off + m] = er[off + m - 1] * br - ei[off + m - 1] * bi;
-            ei[off + m] = er[off + m - 1] * bi + ei[off + m - 1] * br;
-            er[off - m] = er[off + m];
-            ei[off - m] = -ei[off + m];
-        }
-        ph->v[d] = s->v[3 * i + d];
+        br[d] = cos(a); bi[d] = sin(a);
+        er[d] = p + 2 * d * lay.wp; ei[d] = er[d] + lay.wp;
+        er[d][off] = 1.0; ei[d][off] = 0.0;
+        p[6 * lay.wp + d] = s->v[3 * i + d];
     }
+    for (int m = 1; m <= mmax; m++)
+        for (int d = 0; d < 3; d++) {
+            if (m > M[d]) continue;
+            er[d][off + m] = er[d][off + m - 1] * br[d] - ei[d][off + m - 1] * bi[d];
+            ei[d][off + m] = er[d][off + m - 1] * bi[d] + ei[d][off + m - 1] * br[d];
+            er[d][off - m] = er[d][off + m];
+            ei[d][off - m] = -ei[d][off + m];
+        }
 }
 
 void tcaf_current(Tcaf *t, const System *s)
 {
-    const int nv = t->nvec, n = s->n;
+    const int nv = t->nvec, n = s->n, nrun = t->nrun, np = t->npad;
     const int M[3] = {t->nmax[0], t->nmax[1], t->nmax[2]};
-    const int W = 2 * (M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2])) + 1;
-    const int off = (W - 1) / 2;
-    /* the runs; per chunk 6 x (padded) partial sums */
-    TcafRun *run = malloc((size_t)nv * sizeof *run + 1);
-    int np = 0;
-    const int nrun = run ? tcaf_runs(t, off, run, &np) : 0;
-    double *part = run ? calloc((size_t)TCAF_CHUNKS * np * 6 + 1, sizeof(double)) : NULL;
-    if (!part || !run) { free(part); free(run); memset(t->J, 0, (size_t)nv * 3 * sizeof(double complex)); return; }
+    const TcafLayout lay = tcaf_layout(t);
+    const TcafRun *run = t->run;
+    double *part = t->part, *tabs = t->tabs;
+    memset(part, 0, (size_t)TCAF_CHUNKS * np * 6 * sizeof(double));
     const AccumulateFn accumulate = accumulate_for_cpu();
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
         double *Jp = part + (size_t)chunk * np * 6;
-        /* phase tables as (re, im) pairs: plain real arithmetic (complex
+        /* phase tables as (re, im) rows: plain real arithmetic (complex
          * products in C11 without -ffast-math go through a NaN-safe libcall) */
-        TcafPhase ph;
-        memset(&ph, 0, sizeof ph);
+        double *tab = tabs + (size_t)chunk * TCAF_BLOCK * lay.stride;
         const int i0 = (int)((long long)n * chunk / TCAF_CHUNKS), i1 = (int)((long long)n * (chunk + 1) / TCAF_CHUNKS);
+        int nb = 0;
         for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
-            phase_tables(&ph, s, i, M, off);
-            accumulate(np, nrun, run, off, &ph, Jp);
+            phase_tables(tab + (size_t)nb++ * lay.stride, lay, s, i, M);
+            if (nb == TCAF_BLOCK) { accumulate(np, nrun, run, lay, tab, nb, Jp); nb = 0; }
         }
+        if (nb > 0) accumulate(np, nrun, run, lay, tab, nb, Jp);
     }
     /* the chunks' sums in chunk order (as complex sums: component by component) */
     for (int r = 0; r < nrun; r++)
@@ -298,8 +358,6 @@ void tcaf_current(Tcaf *t, const System *s)
                 double *z = (double *)&t->J[3 * (run[r].q0 + k) + d];   /* (re, im), C11 6.2.5 */
                 z[0] = re; z[1] = im;
             }
-    free(part);
-    free(run);
     /* momentum of rigid bodies (spring-model colloids), if asked for */
     for (int b = 0; b < t->nbody; b++)
         for (int q = 0; q < nv; q++) {

@@ -60,6 +60,11 @@ typedef struct {
     double *acc;              /* nblocks x nshell x nlags */
     long long *acc_n;         /* nblocks: complete origins */
     long long nstarted, ndone;
+    /* tcaf_current's work arrays, made by tcaf_init: the wave vectors as runs
+     * of consecutive l, the chunks' padded partial sums, the phase tables */
+    struct TcafRun *run;
+    int nrun, npad;
+    double *part, *tabs;
     /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
     int nbody;
     const double *body_R, *body_V;

@@ -10,6 +10,7 @@
 #include "forces.h"
 #include "pair_dpd.h"
 #include "pair_pan2008.h"
+#include "simd.h"
 
 int forces_init(ForceWork *w, const System *s, int nbins)
 {
@@ -102,6 +103,33 @@ void forces_zero_virial(PairVirial *pv)
 
 enum { MODEL_DPD, MODEL_PAN2008 };
 
+/* pan_lanes_force compiled for AVX-512, AVX2 and baseline x86-64 (the same
+ * operations without contraction, so the same bits), chosen by simd_level(). */
+typedef void (*PanLanesFn)(PanLanes *, int, double);
+/* no-tree-sink: GCC would otherwise move each square root into the branch of
+ * the select that uses it, and a square root under a condition keeps the loop
+ * from vectorising without masks (it "could trap"); the bits are the same.
+ * AVX-512 has the masks, and is faster without it (measured). */
+#define PAN_LANES_OPT optimize("no-tree-sink")
+__attribute__((PAN_LANES_OPT)) static void pan_lanes_portable(PanLanes *L, int m, double inv_sqrt_dt)
+{ pan_lanes_force(L, m, inv_sqrt_dt); }
+#ifdef DPD_HAVE_X86_SIMD
+__attribute__((target("avx2"), PAN_LANES_OPT)) static void pan_lanes_avx2(PanLanes *L, int m, double inv_sqrt_dt)
+{ pan_lanes_force(L, m, inv_sqrt_dt); }
+__attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int m, double inv_sqrt_dt)
+{ pan_lanes_force(L, m, inv_sqrt_dt); }
+#endif
+static PanLanesFn pan_lanes_for_cpu(void)
+{
+#ifdef DPD_HAVE_X86_SIMD
+    const int isa = simd_level();
+    if (isa == SIMD_AVX512) return pan_lanes_avx512;
+    if (isa == SIMD_AVX2) return pan_lanes_avx2;
+#endif
+    return pan_lanes_portable;
+}
+
+
 /* Particle i's pairs in range, handed to the model's evaluator with their
  * noise (nvar variates per pair, drawn for all of them at once). */
 static inline __attribute__((always_inline))
@@ -122,6 +150,23 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
 }
 
+/* The Pan 2008 pairs of particles [i, ie) of a walk batch (count[p - i]
+ * entries each, from entry 0 of near, dd and the noise planes), lane by lane
+ * (pair_pan2008.h), each particle closed after its pairs as pair_walk does. */
+static void pan_walk_batch(const System *s, int i, int ie, const int *near, double (*dd)[4], const double *noise,
+                           const int *count, PairAcc *acc, const int le, const int close_last)
+{
+    PanLanes L;
+    int m = 0, c[PAIR_BATCH];
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++)
+        c[p - i] = pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le);
+    pan_lanes_for_cpu()(&L, m, acc->inv_sqrt_dt);
+    for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
+        pan_lanes_apply(&L, k, c[p - i], acc);
+        if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_PAN2008);
+    }
+}
+
 /* The walk over the particles [i0, i1) of one chunk. The list entries of
  * consecutive particles are gathered up to PAIR_BATCH at a time; those inside
  * the largest cutoff (pairs_in_range) get their noise in one call (Philox
@@ -137,8 +182,9 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
                PairVirial *pv, const int model, const int le)
 {
     const int nvar = model == MODEL_PAN2008 ? 4 : 1;
+    _Static_assert(PAIR_BATCH <= RNG_BATCH, "a batch's noise fits rng_pair_normals' planes");
     int near[PAIR_BATCH], count[PAIR_BATCH];
-    double dd[PAIR_BATCH][4], noise[4 * PAIR_BATCH];
+    double dd[PAIR_BATCH][4], noise[4 * RNG_BATCH];   /* variate v of entry q at noise[v * RNG_BATCH + q] */
     uint32_t id_a[PAIR_BATCH], id_b[PAIR_BATCH];
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
@@ -148,7 +194,8 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
                 const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
                 for (int q = 0; q < m; q++) { id_a[q] = s->id[i]; id_b[q] = s->id[near[q]]; }
                 rng_pair_normals(s->seed, s->step, m, id_a, id_b, nvar, noise);
-                pair_evaluate(s, i, near, dd, noise, m, acc, pv, model, le);
+                if (model == MODEL_PAN2008 && !pv) pan_walk_batch(s, i, i + 1, near, dd, noise, &m, acc, le, 0);
+                else pair_evaluate(s, i, near, dd, noise, m, acc, pv, model, le);
             }
             pair_close(i, acc, model);
             i++;
@@ -163,8 +210,9 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             ie++;
         }
         rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+        if (model == MODEL_PAN2008 && !pv) { pan_walk_batch(s, i, ie, near, dd, noise, count, acc, le, 1); i = ie; continue; }
         for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-            pair_evaluate(s, p, near + off, dd + off, noise + nvar * off, count[p - i], acc, pv, model, le);
+            pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le);
             pair_close(p, acc, model);
         }
         i = ie;

@@ -131,7 +131,7 @@ void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], const do
         const double r2 = dd[q][3];
         if (!pair_interacts(p, r2)) continue;
         near[m] = j;
-        for (int a = 0; a < 4; a++) noise[m][a] = noise0[4 * q + a];
+        for (int a = 0; a < 4; a++) noise[m][a] = noise0[a * RNG_BATCH + q];   /* rng_pair_normals' planes */
         double *g = geo[m++];
         g[0] = dd[q][0]; g[1] = dd[q][1]; g[2] = dd[q][2];
         pan_pair_geometry(p, g, sqrt(r2), g + 3, g + 6, g + 7);
@@ -161,6 +161,120 @@ void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], const do
             acc->f[3 * j + a] -= Ft[a];
             acc->ti[a] += tau[a];
             acc->tq[3 * j + a] += tau[a];
+        }
+    }
+}
+
+/* ---- the same forces lane by lane (steps without the virial) -------------
+ * A walk batch's interacting pairs in structure-of-arrays form: pass 1 gathers
+ * each pair's geometry, velocities, noise and parameters (scalar: gathers and
+ * square roots), pass 2 (pan_lanes_force) forms F_ij and the torque of every
+ * pair with independent iterations, which vectorise, and pass 3 adds them to
+ * i and scatters them to j in the walk's order. Pass 2 performs
+ * pan_pair_force's operations in its order (C11 without contraction), so the
+ * forces are the same bits. */
+typedef struct {
+    double d[3][PAIR_BATCH], r2[PAIR_BATCH], rc[PAIR_BATCH], f_pow[PAIR_BATCH];
+    int wmode[PAIR_BATCH];   /* random_weight's case: 0 s = 2, 1 s = 1, 2 s = 0.5, 3 pow (f_pow, from pass 1) */
+    double dv[3][PAIR_BATCH], ws[3][PAIR_BATCH], theta[PAIR_BATCH], xi[3][PAIR_BATCH];
+    double a[PAIR_BATCH], gamma[PAIR_BATCH], sigma[PAIR_BATCH], gshear[PAIR_BATCH], sshear[PAIR_BATCH];
+    double F[3][PAIR_BATCH], tau[3][PAIR_BATCH];
+    int j[PAIR_BATCH];
+} PanLanes;
+
+/* Pass 2: eqs 13-15 and eq. 1 as pan_pair_force (F == NULL), every pair at once;
+ * where gamma^S = 0 the shear terms are computed and not used (a select).
+ * forces.c is compiled with -fno-math-errno (Makefile): sqrt then never calls
+ * libm to set errno (its argument is never negative here), which is what
+ * lets this loop vectorise; IEEE sqrt gives the same bits either way. */
+static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt)
+{
+    #pragma omp simd
+    for (int q = 0; q < m; q++) {
+        /* pan_pair_geometry: e = r_ij / r, w_C = 1 - r/rc, f = random_weight(w_C, s) */
+        const double r = sqrt(L->r2[q]), inv_r = 1.0 / r;
+        const double e0 = L->d[0][q] * inv_r, e1 = L->d[1][q] * inv_r, e2 = L->d[2][q] * inv_r;
+        const double wc = 1.0 - r / L->rc[q];
+        const double sq = sqrt(wc), sq2 = sqrt(sq), fp = L->f_pow[q];   /* all formed: no branch in the loop */
+        const int mode = L->wmode[q];
+        const double f = mode == 0 ? wc : mode == 1 ? sq : mode == 2 ? sq2 : fp;
+        const double v0 = L->dv[0][q], v1 = L->dv[1][q], v2 = L->dv[2][q];
+        const double edv = e0 * v0 + e1 * v1 + e2 * v2;
+        const double fc = L->a[q] * wc;                                         /* eq. 7 */
+        const double fdc = -L->gamma[q] * f * f * edv;                          /* eq. 13, central */
+        const double frc = L->sigma[q] * f * L->theta[q] * inv_sqrt_dt;         /* eq. 15, central */
+        const double ft = fc + fdc + frc;
+        const double h0 = 0.5 * L->d[0][q], h1 = 0.5 * L->d[1][q], h2 = 0.5 * L->d[2][q];
+        const double w0 = L->ws[0][q], w1 = L->ws[1][q], w2 = L->ws[2][q];
+        const double r0 = h1 * w2 - h2 * w1, r1 = h2 * w0 - h0 * w2, r2 = h0 * w1 - h1 * w0;   /* (r_ij / 2) x (Omega_i + Omega_j) */
+        const double gs = L->gshear[q] * (f * f);
+        const double x0 = L->xi[0][q], x1 = L->xi[1][q], x2 = L->xi[2][q];
+        const double xe0 = x1 * e2 - x2 * e1, xe1 = x2 * e0 - x0 * e2, xe2 = x0 * e1 - x1 * e0;   /* xi x e */
+        const double frs = L->sshear[q] * f * inv_sqrt_dt;
+        const double s0 = -gs * (v0 - edv * e0 + r0) + frs * xe0;               /* eqs 13-14 and 15, non-central */
+        const double s1 = -gs * (v1 - edv * e1 + r1) + frs * xe1;
+        const double s2 = -gs * (v2 - edv * e2 + r2) + frs * xe2;
+        const double c0 = h1 * s2 - h2 * s1, c1 = h2 * s0 - h0 * s2, c2 = h0 * s1 - h1 * s0;   /* eq. 1 */
+        /* both forms computed, then selected (no arithmetic under a condition) */
+        const double fc0 = ft * e0, fc1 = ft * e1, fc2 = ft * e2;
+        const double fs0 = fc0 + s0, fs1 = fc1 + s1, fs2 = fc2 + s2;
+        const int shear = L->gshear[q] != 0.0;
+        L->F[0][q] = shear ? fs0 : fc0;
+        L->F[1][q] = shear ? fs1 : fc1;
+        L->F[2][q] = shear ? fs2 : fc2;
+        L->tau[0][q] = shear ? -c0 : 0.0;
+        L->tau[1][q] = shear ? -c1 : 0.0;
+        L->tau[2][q] = shear ? -c2 : 0.0;
+    }
+}
+
+/* Pass 1 for particle i's entries [0, m0) (near, dd; noise: rng_pair_normals'
+ * planes from entry 0), appended to L at *m. Returns the pairs added. */
+static inline __attribute__((always_inline))
+int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
+                   PanLanes *restrict L, int *m, const int le)
+{
+    const double *v = s->v_pred, *w = s->omega_pred;
+    const int ti = s->type[i], k0 = *m;
+    for (int q = 0; q < m0; q++) {
+        const int j = near[q];
+        const PairParams *p = &s->pair[ti][s->type[j]];
+        const double r2 = dd[q][3];
+        if (!pair_interacts(p, r2)) continue;
+        const int k = (*m)++;
+        /* the geometry in pass 2, but for a weight exponent other than 2, 1, 0.5 (pow) */
+        const int mode = p->s == 2.0 ? 0 : p->s == 1.0 ? 1 : p->s == 0.5 ? 2 : 3;
+        L->wmode[k] = mode;
+        L->f_pow[k] = mode == 3 ? random_weight(1.0 - sqrt(r2) / p->rc, p->s) : 0.0;
+        L->r2[k] = r2; L->rc[k] = p->rc;
+        double dvx = v[3 * i] - v[3 * j];
+        if (le) dvx -= pair_image_vx(s, i, j, le);   /* relative to j's Lees-Edwards image */
+        L->dv[0][k] = dvx; L->dv[1][k] = v[3 * i + 1] - v[3 * j + 1]; L->dv[2][k] = v[3 * i + 2] - v[3 * j + 2];
+        for (int a = 0; a < 3; a++) {
+            L->d[a][k] = dd[q][a];
+            L->ws[a][k] = w[3 * i + a] + w[3 * j + a];
+            L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
+        }
+        L->theta[k] = noise[q];
+        L->a[k] = p->a; L->gamma[k] = p->gamma; L->sigma[k] = p->sigma;
+        L->gshear[k] = p->gamma_shear; L->sshear[k] = p->sigma_shear;
+        L->j[k] = j;
+    }
+    return *m - k0;
+}
+
+/* Pass 3 for particle i's pairs [k0, k0 + c) of L: as pan_pair_batch adds them. */
+static inline __attribute__((always_inline))
+void pan_lanes_apply(const PanLanes *restrict L, int k0, int c, PairAcc *acc)
+{
+    for (int k = k0; k < k0 + c; k++) {
+        const int j = L->j[k];
+        force_claim(acc->f, acc->tq, acc->touched, j, acc->n);
+        for (int a = 0; a < 3; a++) {
+            acc->fi[a] += L->F[a][k];
+            acc->f[3 * j + a] -= L->F[a][k];
+            acc->ti[a] += L->tau[a][k];
+            acc->tq[3 * j + a] += L->tau[a][k];
         }
     }
 }
