@@ -263,7 +263,7 @@ static double counter_normal_first_step(CounterRng *c)
  * v0 words of the pair's first block and are kept; the sequence resumes at
  * word v0 (after a rejection GSL draws further words, so the later variates'
  * words are not the batch's). The first block is the batch's and the second,
- * which most of them reach, is drawn for all of them at once. */
+ * which most pairs of several variates reach, is drawn for all of them at once. */
 static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id_a, const uint32_t *id_b,
                                 const uint32_t (*w)[RNG_BATCH], int nbad, const int *bad, const int *v0,
                                 int nvar, double *z)
@@ -273,14 +273,16 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
         const uint32_t a = id_a[bad[k]], b = id_b[bad[k]];
         lo[k] = a < b ? a : b; hi[k] = a < b ? b : a;
     }
-    philox_lanes(nbad, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32) + (1u << 24), lo, hi, w1);
+    /* one variate rarely reaches the second block (its first has four words) */
+    const int next = nvar > 1;
+    if (next) philox_lanes(nbad, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32) + (1u << 24), lo, hi, w1);
     for (int k = 0; k < nbad; k++) {
         const int q = bad[k];
         CounterRng c;   /* rng_pair_start's counter and key */
         c.ctr.v[0] = (uint32_t)step; c.ctr.v[1] = (uint32_t)(step >> 32); c.ctr.v[2] = lo[k]; c.ctr.v[3] = hi[k];
         c.key.v[0] = seed; c.key.v[1] = STREAM_PAIR_NOISE;
-        for (int u = 0; u < 4; u++) { c.out.v[u] = w[u][q]; c.next.v[u] = w1[u][k]; }
-        c.have_next = 1;
+        for (int u = 0; u < 4; u++) { c.out.v[u] = w[u][q]; c.next.v[u] = next ? w1[u][k] : 0; }
+        c.have_next = next;
         c.used = v0[k];
         for (int v = v0[k]; v < nvar; v++) z[v * RNG_BATCH + q] = counter_normal_first_step(&c);
     }
