@@ -19,4 +19,14 @@ int simd_level(void);
  * gives the CPU's best), for tests and benchmarks; returns the level in use. */
 int simd_cap(int cap);
 
+/* The variant of a kernel for the level in use: SIMD_PICK(portable, avx2,
+ * avx512), the last two compiled with target("avx2") and target("avx512f")
+ * (x86-64 builds only; elsewhere the portable one). */
+#ifdef DPD_HAVE_X86_SIMD
+#define SIMD_PICK(portable, avx2, avx512) \
+    (simd_level() == SIMD_AVX512 ? (avx512) : simd_level() == SIMD_AVX2 ? (avx2) : (portable))
+#else
+#define SIMD_PICK(portable, avx2, avx512) (portable)
+#endif
+
 #endif

@@ -287,15 +287,6 @@ __attribute__((target("avx2"))) static void accumulate_avx2(int np, int nrun, co
 __attribute__((target("avx512f"))) static void accumulate_avx512(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
 { accumulate_block(16, np, nrun, run, lay, tab, nb, J); }
 #endif
-static AccumulateFn accumulate_for_cpu(void)
-{
-#ifdef DPD_HAVE_X86_SIMD
-    const int isa = simd_level();
-    if (isa == SIMD_AVX512) return accumulate_avx512;
-    if (isa == SIMD_AVX2) return accumulate_avx2;
-#endif
-    return accumulate_portable;
-}
 
 /* Particle i's phase tables and velocity into p (layout above). The three
  * recurrences run side by side (each is a chain of dependent products). */
@@ -328,7 +319,7 @@ void tcaf_current(Tcaf *t, const System *s)
     const TcafRun *run = t->run;
     double *part = t->part, *tabs = t->tabs;
     memset(part, 0, (size_t)TCAF_CHUNKS * np * 6 * sizeof(double));
-    const AccumulateFn accumulate = accumulate_for_cpu();
+    const AccumulateFn accumulate = SIMD_PICK(accumulate_portable, accumulate_avx2, accumulate_avx512);
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
         double *Jp = part + (size_t)chunk * np * 6;

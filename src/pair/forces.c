@@ -119,15 +119,6 @@ __attribute__((target("avx2"), PAN_LANES_OPT)) static void pan_lanes_avx2(PanLan
 __attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int m, double inv_sqrt_dt)
 { pan_lanes_force(L, m, inv_sqrt_dt); }
 #endif
-static PanLanesFn pan_lanes_for_cpu(void)
-{
-#ifdef DPD_HAVE_X86_SIMD
-    const int isa = simd_level();
-    if (isa == SIMD_AVX512) return pan_lanes_avx512;
-    if (isa == SIMD_AVX2) return pan_lanes_avx2;
-#endif
-    return pan_lanes_portable;
-}
 
 
 /* Particle i's pairs in range, handed to the model's evaluator with their
@@ -160,7 +151,8 @@ static void pan_walk_batch(const System *s, int i, int ie, const int *near, doub
     int m = 0, c[PAIR_BATCH];
     for (int p = i, off = 0; p < ie; off += count[p - i], p++)
         c[p - i] = pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le);
-    pan_lanes_for_cpu()(&L, m, acc->inv_sqrt_dt);
+    const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
+    lanes(&L, m, acc->inv_sqrt_dt);
     for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
         pan_lanes_apply(&L, k, c[p - i], acc);
         if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_PAN2008);
