@@ -68,68 +68,63 @@ static void philox_portable(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32
 
 #ifdef DPD_HAVE_X86_SIMD
 #include <immintrin.h>
-/* hi and lo words of x * M lane by lane (8 lanes): even lanes' products
- * directly, odd lanes' after shifting them down */
-__attribute__((target("avx2"))) static inline void mulhilo_avx2(__m256i x, __m256i M, __m256i *hi, __m256i *lo)
+/* The lanes' primitives per instruction set: hi and lo words of x * M
+ * lane by lane, even lanes' products directly, odd lanes' after shifting
+ * them down; broadcast, xor, unaligned load and store. */
+#define AVX2 __attribute__((target("avx2"))) static inline
+AVX2 void mulhilo_avx2(__m256i x, __m256i M, __m256i *hi, __m256i *lo)
 {
     const __m256i e = _mm256_mul_epu32(x, M), o = _mm256_mul_epu32(_mm256_srli_epi64(x, 32), M);
     *lo = _mm256_blend_epi32(e, _mm256_slli_epi64(o, 32), 0xAA);
     *hi = _mm256_blend_epi32(_mm256_srli_epi64(e, 32), o, 0xAA);
 }
-__attribute__((target("avx2"))) static int philox_avx2(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
-                                                       const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])
-{
-    const __m256i M0 = _mm256_set1_epi32((int)PHILOX_M4x32_0), M1 = _mm256_set1_epi32((int)PHILOX_M4x32_1);
-    int q = 0;
-    for (; q + 8 <= m; q += 8) {
-        __m256i x0 = _mm256_set1_epi32((int)c0), x1 = _mm256_set1_epi32((int)c1);
-        __m256i x2 = _mm256_loadu_si256((const __m256i *)(c2 + q)), x3 = _mm256_loadu_si256((const __m256i *)(c3 + q));
-        uint32_t a = k0, b = k1;
-        for (int r = 0; r < 10; r++) {
-            __m256i h0, l0, h1, l1;
-            mulhilo_avx2(x0, M0, &h0, &l0);
-            mulhilo_avx2(x2, M1, &h1, &l1);
-            x0 = _mm256_xor_si256(_mm256_xor_si256(h1, x1), _mm256_set1_epi32((int)a));
-            x1 = l1;
-            x2 = _mm256_xor_si256(_mm256_xor_si256(h0, x3), _mm256_set1_epi32((int)b));
-            x3 = l0;
-            a += PHILOX_W32_0; b += PHILOX_W32_1;
-        }
-        _mm256_storeu_si256((__m256i *)(w[0] + q), x0); _mm256_storeu_si256((__m256i *)(w[1] + q), x1);
-        _mm256_storeu_si256((__m256i *)(w[2] + q), x2); _mm256_storeu_si256((__m256i *)(w[3] + q), x3);
-    }
-    return q;
-}
-__attribute__((target("avx512f"))) static inline void mulhilo_avx512(__m512i x, __m512i M, __m512i *hi, __m512i *lo)
+AVX2 __m256i set1_avx2(uint32_t v) { return _mm256_set1_epi32((int)v); }
+AVX2 __m256i xor_avx2(__m256i a, __m256i b) { return _mm256_xor_si256(a, b); }
+AVX2 __m256i load_avx2(const uint32_t *p) { return _mm256_loadu_si256((const __m256i *)p); }
+AVX2 void store_avx2(uint32_t *p, __m256i v) { _mm256_storeu_si256((__m256i *)p, v); }
+#undef AVX2
+#define AVX512 __attribute__((target("avx512f"))) static inline
+AVX512 void mulhilo_avx512(__m512i x, __m512i M, __m512i *hi, __m512i *lo)
 {
     const __m512i e = _mm512_mul_epu32(x, M), o = _mm512_mul_epu32(_mm512_srli_epi64(x, 32), M);
     *lo = _mm512_mask_blend_epi32(0xAAAA, e, _mm512_slli_epi64(o, 32));
     *hi = _mm512_mask_blend_epi32(0xAAAA, _mm512_srli_epi64(e, 32), o);
 }
-__attribute__((target("avx512f"))) static int philox_avx512(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
-                                                            const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])
-{
-    const __m512i M0 = _mm512_set1_epi32((int)PHILOX_M4x32_0), M1 = _mm512_set1_epi32((int)PHILOX_M4x32_1);
-    int q = 0;
-    for (; q + 16 <= m; q += 16) {
-        __m512i x0 = _mm512_set1_epi32((int)c0), x1 = _mm512_set1_epi32((int)c1);
-        __m512i x2 = _mm512_loadu_si512(c2 + q), x3 = _mm512_loadu_si512(c3 + q);
-        uint32_t a = k0, b = k1;
-        for (int r = 0; r < 10; r++) {
-            __m512i h0, l0, h1, l1;
-            mulhilo_avx512(x0, M0, &h0, &l0);
-            mulhilo_avx512(x2, M1, &h1, &l1);
-            x0 = _mm512_xor_si512(_mm512_xor_si512(h1, x1), _mm512_set1_epi32((int)a));
-            x1 = l1;
-            x2 = _mm512_xor_si512(_mm512_xor_si512(h0, x3), _mm512_set1_epi32((int)b));
-            x3 = l0;
-            a += PHILOX_W32_0; b += PHILOX_W32_1;
-        }
-        _mm512_storeu_si512(w[0] + q, x0); _mm512_storeu_si512(w[1] + q, x1);
-        _mm512_storeu_si512(w[2] + q, x2); _mm512_storeu_si512(w[3] + q, x3);
-    }
-    return q;
+AVX512 __m512i set1_avx512(uint32_t v) { return _mm512_set1_epi32((int)v); }
+AVX512 __m512i xor_avx512(__m512i a, __m512i b) { return _mm512_xor_si512(a, b); }
+AVX512 __m512i load_avx512(const uint32_t *p) { return _mm512_loadu_si512(p); }
+AVX512 void store_avx512(uint32_t *p, __m512i v) { _mm512_storeu_si512(p, v); }
+#undef AVX512
+
+/* philox_portable's rounds on LANES pairs at a time with the primitives of
+ * SUFFIX; returns the pairs done (a multiple of LANES), the rest is left. */
+#define PHILOX_LANES(SUFFIX, TARGET, VEC, LANES)                                                         \
+__attribute__((target(TARGET))) static int philox_##SUFFIX(int m, uint32_t k0, uint32_t k1, uint32_t c0, \
+        uint32_t c1, const uint32_t *c2, const uint32_t *c3, uint32_t (*w)[RNG_BATCH])                    \
+{                                                                                                         \
+    const VEC M0 = set1_##SUFFIX(PHILOX_M4x32_0), M1 = set1_##SUFFIX(PHILOX_M4x32_1);                     \
+    int q = 0;                                                                                            \
+    for (; q + LANES <= m; q += LANES) {                                                                  \
+        VEC x0 = set1_##SUFFIX(c0), x1 = set1_##SUFFIX(c1), x2 = load_##SUFFIX(c2 + q), x3 = load_##SUFFIX(c3 + q); \
+        uint32_t a = k0, b = k1;                                                                          \
+        for (int r = 0; r < 10; r++) {                                                                    \
+            VEC h0, l0, h1, l1;                                                                           \
+            mulhilo_##SUFFIX(x0, M0, &h0, &l0);                                                           \
+            mulhilo_##SUFFIX(x2, M1, &h1, &l1);                                                           \
+            x0 = xor_##SUFFIX(xor_##SUFFIX(h1, x1), set1_##SUFFIX(a));                                    \
+            x1 = l1;                                                                                      \
+            x2 = xor_##SUFFIX(xor_##SUFFIX(h0, x3), set1_##SUFFIX(b));                                    \
+            x3 = l0;                                                                                      \
+            a += PHILOX_W32_0; b += PHILOX_W32_1;                                                         \
+        }                                                                                                 \
+        store_##SUFFIX(w[0] + q, x0); store_##SUFFIX(w[1] + q, x1);                                       \
+        store_##SUFFIX(w[2] + q, x2); store_##SUFFIX(w[3] + q, x3);                                       \
+    }                                                                                                     \
+    return q;                                                                                             \
 }
+PHILOX_LANES(avx2, "avx2", __m256i, 8)
+PHILOX_LANES(avx512, "avx512f", __m512i, 16)
+#undef PHILOX_LANES
 #endif
 
 static void philox_lanes(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t c1,
