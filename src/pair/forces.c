@@ -120,7 +120,6 @@ __attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int
 { pan_lanes_force(L, m, inv_sqrt_dt); }
 #endif
 
-
 /* Particle i's pairs in range, handed to the model's evaluator with their
  * noise (nvar variates per pair, drawn for all of them at once). */
 static inline __attribute__((always_inline))
@@ -141,21 +140,32 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
 }
 
-/* The Pan 2008 pairs of particles [i, ie) of a walk batch (count[p - i]
- * entries each, from entry 0 of near, dd and the noise planes), lane by lane
- * (pair_pan2008.h), each particle closed after its pairs as pair_walk does. */
-static void pan_walk_batch(const System *s, int i, int ie, const int *near, double (*dd)[4], const double *noise,
-                           const int *count, PairAcc *acc, const int le, const int close_last)
+/* The pairs of particles [i, ie) of a walk batch (count[p - i] entries each,
+ * from entry 0 of near, dd and the noise planes), each particle closed after
+ * its pairs (the last one only if close_last: a long list comes in several
+ * batches). Pan 2008 without the virial: lane by lane (pair_pan2008.h), the
+ * same bits as pair by pair. */
+static inline __attribute__((always_inline))
+void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)[4], const double *noise,
+                         const int *count, PairAcc *acc, PairVirial *pv, const int model, const int le,
+                         const int close_last)
 {
-    PanLanes L;
-    int m = 0, c[PAIR_BATCH];
-    for (int p = i, off = 0; p < ie; off += count[p - i], p++)
-        c[p - i] = pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le);
-    const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
-    lanes(&L, m, acc->inv_sqrt_dt);
-    for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
-        pan_lanes_apply(&L, k, c[p - i], acc);
-        if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_PAN2008);
+    if (model == MODEL_PAN2008 && !pv) {
+        PanLanes L;
+        int m = 0, c[PAIR_BATCH];
+        for (int p = i, off = 0; p < ie; off += count[p - i], p++)
+            c[p - i] = pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le);
+        const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
+        lanes(&L, m, acc->inv_sqrt_dt);
+        for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
+            pan_lanes_apply(&L, k, c[p - i], acc);
+            if (p + 1 < ie || close_last) pair_close(p, acc, model);
+        }
+        return;
+    }
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+        pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le);
+        if (p + 1 < ie || close_last) pair_close(p, acc, model);
     }
 }
 
@@ -186,8 +196,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
                 const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
                 for (int q = 0; q < m; q++) { id_a[q] = s->id[i]; id_b[q] = s->id[near[q]]; }
                 rng_pair_normals(s->seed, s->step, m, id_a, id_b, nvar, noise);
-                if (model == MODEL_PAN2008 && !pv) pan_walk_batch(s, i, i + 1, near, dd, noise, &m, acc, le, 0);
-                else pair_evaluate(s, i, near, dd, noise, m, acc, pv, model, le);
+                pair_evaluate_batch(s, i, i + 1, near, dd, noise, &m, acc, pv, model, le, 0);
             }
             pair_close(i, acc, model);
             i++;
@@ -202,11 +211,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             ie++;
         }
         rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
-        if (model == MODEL_PAN2008 && !pv) { pan_walk_batch(s, i, ie, near, dd, noise, count, acc, le, 1); i = ie; continue; }
-        for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-            pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le);
-            pair_close(p, acc, model);
-        }
+        pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1);
         i = ie;
     }
 }
