@@ -173,6 +173,13 @@ typedef struct TcafRun { int q0, len, i, j, l0, p0; } TcafRun;   /* l0: table in
 
 static int run_padded(const TcafRun *r) { return (r->len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD; }
 
+static int by_padded_length(const void *a, const void *b)
+{
+    const TcafRun *x = a, *y = b;
+    const int dx = run_padded(x), dy = run_padded(y);
+    return dx != dy ? (dx > dy) - (dx < dy) : (x->q0 > y->q0) - (x->q0 < y->q0);   /* then in vector order */
+}
+
 static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
 {
     int nr = 0;
@@ -182,15 +189,10 @@ static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
         if (nr > 0 && c[0] == r->i && c[1] == r->j && off + c[2] == r->l0 + r->len) { r->len++; continue; }
         run[nr++] = (TcafRun){.q0 = q, .len = 1, .i = c[0], .j = c[1], .l0 = off + c[2]};
     }
-    /* grouped by padded length (stable): the loop below then meets one trip
-     * count many times in a row, which its branches predict; the order of the
-     * runs does not enter any sum (each slot sums the particles in order) */
-    for (int r = 1; r < nr; r++) {
-        const TcafRun x = run[r];
-        int u = r;
-        for (; u > 0 && run_padded(&run[u - 1]) > run_padded(&x); u--) run[u] = run[u - 1];
-        run[u] = x;
-    }
+    /* grouped by padded length: the loop below then meets one trip count many
+     * times in a row, which its branches predict; the order of the runs does
+     * not enter any sum (each slot sums the particles in order) */
+    qsort(run, (size_t)nr, sizeof *run, by_padded_length);
     int p = 0;
     for (int r = 0; r < nr; r++) { run[r].p0 = p; p += run_padded(&run[r]); }
     *npad = p;
