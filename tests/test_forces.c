@@ -12,6 +12,7 @@
 #include "neighbor.h"
 #include "forces.h"
 #include "integrator.h"
+#include "simd.h"
 
 #define SKIN 0.3
 
@@ -615,6 +616,57 @@ static void ik_bins_sum_to_virial(void **state)
     system_free(&s);
 }
 
+/* ------------------------------------------------------ instruction sets */
+
+/* The candidate pass of the walk (forces.c range_avx512: separations, folds
+ * and r^2 eight at a time) gives the same forces, bit for bit, as the scalar
+ * pass at every level the CPU has: a box whose sides differ, so that every
+ * fold is exercised; particles on the faces; a coincident pair (no force); a
+ * dense cluster, whose lists are longer than a walk batch; and a second type
+ * pair with a shorter cutoff than the largest. */
+static void levels_same_forces(void **state)
+{
+    (void)state;
+    const int best = simd_cap(-1);
+    const double L[3] = {6.0, 6.5, 7.0};
+    System s;
+    make_system(&s, 3, 1500, L, 0.0, 25.0, 4.5, 2.0, 1.0, 91);
+    s.ntypes = 2;
+    snprintf(s.types[1].name, sizeof s.types[1].name, "u");
+    s.types[1].mass = 1.0; s.types[1].body_force_flip_axis = -1;
+    system_set_pair(&s, 0, 1, (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .s = 0.42, .rc = 0.8});
+    system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
+    uint64_t st = 7;
+    for (int i = 0; i < s.n; i++) s.type[i] = i % 4 == 0;
+    for (int i = 0; i < 300; i++)   /* the cluster: 300 particles in a ball of radius 0.4 at a corner */
+        for (int d = 0; d < 3; d++) s.x[3 * i + d] = fmod(L[d] - 0.2 + 0.4 * tu_uniform(&st), L[d]);
+    for (int d = 0; d < 3; d++) s.x[3 * 400 + d] = s.x[3 * 401 + d];   /* coincident */
+    s.x[3 * 402] = 0.0; s.x[3 * 403] = nextafter(L[0], 0.0);           /* on the faces */
+    s.x[3 * 404 + 1] = 0.0; s.x[3 * 405 + 2] = nextafter(L[2], 0.0);
+    NeighborList nl;
+    ForceWork fw;
+    first_forces(&s, &nl, &fw);
+    int longest = 0;
+    for (int i = 0; i < s.n; i++) longest = nl.start[i + 1] - nl.start[i] > longest ? nl.start[i + 1] - nl.start[i] : longest;
+    CHECK_TRUE(longest > 256, "no list longer than a walk batch (longest %d)", longest);
+    double *f0 = malloc(3 * (size_t)s.n * sizeof(double));
+    assert_non_null(f0);
+    simd_cap(0);
+    forces_compute(&s, &nl, &fw, NULL);
+    memcpy(f0, s.f, 3 * (size_t)s.n * sizeof(double));
+    for (int level = 1; level <= 2; level++) {
+        if (simd_cap(level) != level) { printf("level %d: not on this CPU\n", level); continue; }
+        forces_compute(&s, &nl, &fw, NULL);
+        CHECK_TRUE(memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0,
+                   "forces at level %d differ from the portable pass's bits", level);
+    }
+    simd_cap(best);
+    free(f0);
+    forces_free(&fw);
+    neighbor_free(&nl);
+    system_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -633,6 +685,7 @@ int main(void)
         cmocka_unit_test(neighbor_list_shear_dynamics),
         cmocka_unit_test(ik_distribute_hand),
         cmocka_unit_test(ik_bins_sum_to_virial),
+        cmocka_unit_test(levels_same_forces),
     };
     return cmocka_run_group_tests_name("forces", tests, NULL, NULL);
 }

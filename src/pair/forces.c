@@ -120,6 +120,76 @@ __attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int
 { pan_lanes_force(L, m, inv_sqrt_dt); }
 #endif
 
+/* pairs_in_range (pair.h) eight candidates at a time, for boxes without
+ * Lees-Edwards shear in 3 dimensions: the same subtractions, folds and r^2
+ * (no contraction: -std=c11 keeps it off), so the same bits and the same kept
+ * entries in the same order. The kept j, separations and r^2 are compressed
+ * into registers and stored whole (near and dd need RANGE_SLACK entries of
+ * room past the last one). */
+#define RANGE_SLACK 16
+#ifdef DPD_HAVE_X86_SIMD
+#include <immintrin.h>
+#define AVX512 __attribute__((target("avx512f")))
+/* box_min_image_le's fold along one axis, lane by lane: one period off each
+ * side, and twice when twice is true (x: the scalar code folds twice) */
+static inline AVX512 __m512d fold_avx512(__m512d d, __m512d half, __m512d L, const int twice)
+{
+    const __m512d nhalf = _mm512_sub_pd(_mm512_setzero_pd(), half);
+    const __mmask8 hi = _mm512_cmp_pd_mask(d, half, _CMP_GT_OQ), lo = _mm512_cmp_pd_mask(d, nhalf, _CMP_LT_OQ);
+    d = _mm512_mask_sub_pd(d, hi, d, L);
+    d = _mm512_mask_add_pd(d, lo, d, L);
+    if (twice) {
+        d = _mm512_mask_sub_pd(d, _mm512_mask_cmp_pd_mask(hi, d, half, _CMP_GT_OQ), d, L);
+        d = _mm512_mask_add_pd(d, _mm512_mask_cmp_pd_mask(lo, d, nhalf, _CMP_LT_OQ), d, L);
+    }
+    return d;
+}
+static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, int i, int k0, int k1,
+                               int *near, double (*dd)[4])
+{
+    const double *x = s->x;
+    const Box *b = &s->box;
+    const __m512d xi = _mm512_set1_pd(x[3 * i]), yi = _mm512_set1_pd(x[3 * i + 1]), zi = _mm512_set1_pd(x[3 * i + 2]);
+    const __m512d rc2 = _mm512_set1_pd(s->rc_max * s->rc_max);
+    /* the transpose of (dx, dy, dz, r2) x 8 into 8 quads: pairs of 128-bit halves */
+    const __m512i lo_halves = _mm512_set_epi64(11, 10, 3, 2, 9, 8, 1, 0);
+    const __m512i hi_halves = _mm512_set_epi64(15, 14, 7, 6, 13, 12, 5, 4);
+    const __m512i first = _mm512_set_epi64(11, 10, 9, 8, 3, 2, 1, 0);
+    const __m512i second = _mm512_set_epi64(15, 14, 13, 12, 7, 6, 5, 4);
+    int m = 0;
+    for (int k = k0; k < k1; k += 8) {
+        const __mmask8 live = k1 - k >= 8 ? 0xff : (__mmask8)((1u << (k1 - k)) - 1);
+        const __m512i j = _mm512_maskz_loadu_epi32((__mmask16)live, nl->nbr + k);
+        const __m256i j3 = _mm512_castsi512_si256(_mm512_add_epi32(j, _mm512_add_epi32(j, j)));
+        const __m512d z0 = _mm512_setzero_pd();
+        __m512d dx = _mm512_sub_pd(xi, _mm512_mask_i32gather_pd(z0, live, j3, x, 8));
+        __m512d dy = _mm512_sub_pd(yi, _mm512_mask_i32gather_pd(z0, live, j3, x + 1, 8));
+        __m512d dz = _mm512_sub_pd(zi, _mm512_mask_i32gather_pd(z0, live, j3, x + 2, 8));
+        dy = fold_avx512(dy, _mm512_set1_pd(b->half[1]), _mm512_set1_pd(b->L[1]), 0);
+        dx = fold_avx512(dx, _mm512_set1_pd(b->half[0]), _mm512_set1_pd(b->L[0]), 1);
+        dz = fold_avx512(dz, _mm512_set1_pd(b->half[2]), _mm512_set1_pd(b->L[2]), 0);
+        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+        const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
+        _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
+        const __m512d cx = _mm512_maskz_compress_pd(keep, dx), cy = _mm512_maskz_compress_pd(keep, dy);
+        const __m512d cz = _mm512_maskz_compress_pd(keep, dz), cr = _mm512_maskz_compress_pd(keep, r2);
+        const __m512d xy0 = _mm512_unpacklo_pd(cx, cy), xy1 = _mm512_unpackhi_pd(cx, cy);   /* x0 y0 x2 y2 .. | x1 y1 x3 y3 .. */
+        const __m512d zr0 = _mm512_unpacklo_pd(cz, cr), zr1 = _mm512_unpackhi_pd(cz, cr);
+        const __m512d e01 = _mm512_permutex2var_pd(xy0, lo_halves, zr0);   /* q0 q2 (even quads 0, 2) */
+        const __m512d e23 = _mm512_permutex2var_pd(xy0, hi_halves, zr0);   /* q4 q6 */
+        const __m512d o01 = _mm512_permutex2var_pd(xy1, lo_halves, zr1);   /* q1 q3 */
+        const __m512d o23 = _mm512_permutex2var_pd(xy1, hi_halves, zr1);   /* q5 q7 */
+        _mm512_storeu_pd(dd[m], _mm512_permutex2var_pd(e01, first, o01));
+        _mm512_storeu_pd(dd[m + 2], _mm512_permutex2var_pd(e01, second, o01));
+        _mm512_storeu_pd(dd[m + 4], _mm512_permutex2var_pd(e23, first, o23));
+        _mm512_storeu_pd(dd[m + 6], _mm512_permutex2var_pd(e23, second, o23));
+        m += __builtin_popcount(keep);
+    }
+    return m;
+}
+#undef AVX512
+#endif
+
 /* Particle i's pairs in range, handed to the model's evaluator with their
  * noise (nvar variates per pair, drawn for all of them at once). */
 static inline __attribute__((always_inline))
@@ -169,6 +239,39 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
     }
 }
 
+/* Pass 1 of a walk batch: from particle i on (before i1), the list entries
+ * of consecutive particles inside the largest cutoff, as long as the next
+ * particle's whole list fits in the PAIR_BATCH slots (the caller has taken a
+ * longer one alone): near, dd and the ids of each pair, count[p - i] entries
+ * of particle p. Returns the end particle ie; *np the entries. wide: the
+ * AVX-512 candidate pass (range_avx512), compiled in walk_gather_avx512. */
+static inline __attribute__((always_inline))
+int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *near, double (*dd)[4],
+                int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, const int le, const int wide)
+{
+    int np = 0, ie = i;
+    while (ie < i1 && ie - i < PAIR_BATCH && nl->start[ie + 1] - nl->start[ie] <= PAIR_BATCH - np) {
+        int c;
+#ifdef DPD_HAVE_X86_SIMD
+        if (wide) c = range_avx512(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np);
+        else
+#endif
+        c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
+        (void)wide;
+        for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
+        count[ie - i] = c;
+        np += c;
+        ie++;
+    }
+    *np_out = np;
+    return ie;
+}
+#ifdef DPD_HAVE_X86_SIMD
+__attribute__((target("avx512f"))) static int walk_gather_avx512(const System *s, const NeighborList *nl, int i, int i1,
+        int *near, double (*dd)[4], int *count, uint32_t *id_a, uint32_t *id_b, int *np_out)
+{ return walk_gather(s, nl, i, i1, near, dd, count, id_a, id_b, np_out, 0, 1); }
+#endif
+
 /* The walk over the particles [i0, i1) of one chunk. The list entries of
  * consecutive particles are gathered up to PAIR_BATCH at a time; those inside
  * the largest cutoff (pairs_in_range) get their noise in one call (Philox
@@ -185,9 +288,12 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
 {
     const int nvar = model == MODEL_PAN2008 ? 4 : 1;
     _Static_assert(PAIR_BATCH <= RNG_BATCH, "a batch's noise fits rng_pair_normals' planes");
-    int near[PAIR_BATCH], count[PAIR_BATCH];
-    double dd[PAIR_BATCH][4], noise[4 * RNG_BATCH];   /* variate v of entry q at noise[v * RNG_BATCH + q] */
+    int near[PAIR_BATCH + RANGE_SLACK], count[PAIR_BATCH];
+    double dd[PAIR_BATCH + RANGE_SLACK][4], noise[4 * RNG_BATCH];   /* variate v of entry q at noise[v * RNG_BATCH + q] */
     uint32_t id_a[PAIR_BATCH], id_b[PAIR_BATCH];
+#ifdef DPD_HAVE_X86_SIMD
+    const int wide = !le && s->box.dim == 3 && simd_level() == SIMD_AVX512;
+#endif
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
         if (nl->start[i + 1] - nl->start[i] > PAIR_BATCH) {   /* a long list: batches of its own */
@@ -202,14 +308,12 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             i++;
             continue;
         }
-        int np = 0, ie = i;
-        while (ie < i1 && ie - i < PAIR_BATCH && nl->start[ie + 1] - nl->start[ie] <= PAIR_BATCH - np) {
-            const int c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
-            for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
-            count[ie - i] = c;
-            np += c;
-            ie++;
-        }
+        int np, ie;
+#ifdef DPD_HAVE_X86_SIMD
+        if (wide) ie = walk_gather_avx512(s, nl, i, i1, near, dd, count, id_a, id_b, &np);
+        else
+#endif
+        ie = walk_gather(s, nl, i, i1, near, dd, count, id_a, id_b, &np, le, 0);
         rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
         pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1);
         i = ie;
