@@ -618,9 +618,10 @@ static void ik_bins_sum_to_virial(void **state)
 
 /* ------------------------------------------------------ instruction sets */
 
-/* The candidate pass of the walk (forces.c range_avx512: separations, folds
- * and r^2 eight at a time) gives the same forces, bit for bit, as the scalar
- * pass at every level the CPU has: a box whose sides differ, so that every
+/* The neighbour build's distance test (neighbor.c scan_segment_avx512) gives
+ * the same list, and the candidate pass of the walk (forces.c range_avx512:
+ * separations, folds and r^2 eight at a time) the same forces, bit for bit,
+ * as the scalar code at every level the CPU has: a box whose sides differ, so that every
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; and a second type
  * pair with a shorter cutoff than the largest. */
@@ -645,7 +646,18 @@ static void levels_same_forces(void **state)
     s.x[3 * 404 + 1] = 0.0; s.x[3 * 405 + 2] = nextafter(L[2], 0.0);
     NeighborList nl;
     ForceWork fw;
-    first_forces(&s, &nl, &fw);
+    simd_cap(0);
+    first_forces(&s, &nl, &fw);   /* the portable list, in the particles' cell order */
+    for (int level = 1; level <= 2; level++) {
+        if (simd_cap(level) != level) continue;
+        NeighborList nl2;
+        assert_int_equal(neighbor_init(&nl2, &s, SKIN), 0);
+        assert_int_equal(neighbor_build(&nl2, &s), 0);   /* the same order: sorted already */
+        const int same = memcmp(nl.start, nl2.start, ((size_t)s.n + 1) * sizeof(int)) == 0
+                      && memcmp(nl.nbr, nl2.nbr, (size_t)nl.start[s.n] * sizeof(int)) == 0;
+        CHECK_TRUE(same, "the neighbour list at level %d differs from the portable one", level);
+        neighbor_free(&nl2);
+    }
     int longest = 0;
     for (int i = 0; i < s.n; i++) longest = nl.start[i + 1] - nl.start[i] > longest ? nl.start[i + 1] - nl.start[i] : longest;
     CHECK_TRUE(longest > 256, "no list longer than a walk batch (longest %d)", longest);

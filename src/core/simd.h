@@ -1,5 +1,6 @@
 /* simd.h - the instruction set of the vectorised kernels (the pair noise's
- * Philox lanes and ziggurat step, the neighbour build's distance test),
+ * Philox lanes and ziggurat step, the neighbour build's distance test, the
+ * walk's candidate pass, the Pan 2008 lanes, the TCAF sums),
  * chosen once per process from what the CPU has: one binary runs on any
  * x86-64. Every vectorised kernel has a portable twin that gives the same
  * bits; the tests run each level the CPU has against it. */
