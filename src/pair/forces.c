@@ -194,10 +194,40 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
  * noise (nvar variates per pair, drawn for all of them at once). */
 static inline __attribute__((always_inline))
 void pair_evaluate(const System *s, int i, int *near, double (*dd)[4], const double *noise, int m,
-                   PairAcc *acc, PairVirial *pv, const int model, const int le)
+                   PairAcc *acc, PairVirial *pv, const int model, const int le, const double *wr)
 {
     if (model == MODEL_PAN2008) pan_pair_batch(s, i, near, dd, noise, m, acc, pv, le);
-    else dpd_pair_batch(s, i, near, dd, noise, m, acc, pv, le);
+    else dpd_pair_batch(s, i, near, dd, noise, m, acc, pv, le, wr);
+}
+
+/* Some type pair of the scene has a general weight exponent (weight_general) */
+static int scene_weights_general(const System *s)
+{
+    for (int a = 0; a < s->ntypes; a++)
+        for (int b = 0; b < s->ntypes; b++)
+            if (s->pair[a][b].active && weight_general(s->pair[a][b].s)) return 1;
+    return 0;
+}
+
+/* w_R (eq. 7) of every pair of a walk batch [i, ie) that interacts with a
+ * general exponent, all at once (weight_pow_batch); other entries get a
+ * placeholder. w_C = 1 - r/rc as the evaluator forms it, so the same bits. */
+static void batch_random_weights(const System *s, int i, int ie, double (*dd)[4], const int *near,
+                                 const int *count, double *wr)
+{
+    double w[PAIR_BATCH + 8], e[PAIR_BATCH + 8];
+    int k = 0;
+    for (int p = i; p < ie; p++) {
+        const int ti = s->type[p];
+        for (int q = 0; q < count[p - i]; q++, k++) {
+            const PairParams *pp = &s->pair[ti][s->type[near[k]]];
+            const int use = weight_general(pp->s) && pair_interacts(pp, dd[k][3]);
+            w[k] = use ? 1.0 - sqrt(dd[k][3]) / pp->rc : 1.0;
+            e[k] = use ? 0.5 * pp->s : 1.0;
+        }
+    }
+    for (int q = k; q < k + 8; q++) w[q] = e[q] = 1.0;
+    weight_pow_batch(w, e, wr, k);
 }
 
 /* After particle i's last pair: its own sums into the chunk's buffers. */
@@ -218,7 +248,7 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
 static inline __attribute__((always_inline))
 void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)[4], const double *noise,
                          const int *count, PairAcc *acc, PairVirial *pv, const int model, const int le,
-                         const int close_last)
+                         const int close_last, const int general)
 {
     if (model == MODEL_PAN2008 && !pv) {
         PanLanes L;
@@ -233,8 +263,14 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
         }
         return;
     }
+    /* w_R by batch on steps without the virial; one at a time on the others,
+     * the same bits (test_forces levels_same_forces holds the two together) */
+    double wr[PAIR_BATCH + 8];
+    const int by_batch = model == MODEL_DPD && general && !pv;
+    if (by_batch) batch_random_weights(s, i, ie, dd, near, count, wr);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-        pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le);
+        pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le,
+                      by_batch ? wr + off : NULL);
         if (p + 1 < ie || close_last) pair_close(p, acc, model);
     }
 }
@@ -294,6 +330,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
 #ifdef DPD_HAVE_X86_SIMD
     const int wide = !le && s->box.dim == 3 && simd_level() == SIMD_AVX512;
 #endif
+    const int general = model == MODEL_DPD && scene_weights_general(s);
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
         if (nl->start[i + 1] - nl->start[i] > PAIR_BATCH) {   /* a long list: batches of its own */
@@ -302,7 +339,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
                 const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
                 for (int q = 0; q < m; q++) { id_a[q] = s->id[i]; id_b[q] = s->id[near[q]]; }
                 rng_pair_normals(s->seed, s->step, m, id_a, id_b, nvar, noise);
-                pair_evaluate_batch(s, i, i + 1, near, dd, noise, &m, acc, pv, model, le, 0);
+                pair_evaluate_batch(s, i, i + 1, near, dd, noise, &m, acc, pv, model, le, 0, general);
             }
             pair_close(i, acc, model);
             i++;
@@ -315,7 +352,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
 #endif
         ie = walk_gather(s, nl, i, i1, near, dd, count, id_a, id_b, &np, le, 0);
         rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
-        pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1);
+        pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1, general);
         i = ie;
     }
 }

@@ -14,6 +14,7 @@
 #include <math.h>
 #include "system.h"
 #include "neighbor.h"
+#include "weight_pow.h"
 
 /* Pairs closer than this have no direction: they exert no force (LAMMPS'
  * EPSILON in pair_dpd.cpp). Springs use it too (bonds.c). */
@@ -26,14 +27,18 @@ static inline int pair_interacts(const PairParams *p, double r2)
     return !(r2 >= p->rc2 || r2 < PAIR_R_EPSILON * PAIR_R_EPSILON);
 }
 
+/* The exponent s of eqs 6-7 is none of 2, 1 and 0.5: w_R needs a power
+ * (weight_pow.h), which the walk takes for a batch at once. */
+static inline int weight_general(double s) { return !(s == 2.0 || s == 1.0 || s == 0.5); }
+
 /* w_R = (1 - r/rc)^(s/2) from w_C = 1 - r/rc (eqs 5, 7), so that
- * w_D = w_R^2 = (1 - r/rc)^s (eq. 6); the usual exponents without pow(). */
+ * w_D = w_R^2 = (1 - r/rc)^s (eq. 6); the usual exponents without a power. */
 static inline double random_weight(double wc, double s)
 {
     if (s == 2.0) return wc;
     if (s == 1.0) return sqrt(wc);
     if (s == 0.5) return sqrt(sqrt(wc));
-    return pow(wc, 0.5 * s);
+    return weight_pow(wc, 0.5 * s);
 }
 
 /* w_D = (1 - r/rc)^s (eq. 6) computed directly, for the m = 0 matrix, which
@@ -44,7 +49,7 @@ static inline double dissipative_weight(double wc, double s)
     if (s == 2.0) return wc * wc;
     if (s == 1.0) return wc;
     if (s == 0.5) return sqrt(wc);
-    return pow(wc, s);
+    return weight_pow(wc, s);
 }
 
 enum { PART_CONSERVATIVE = 0, PART_DISSIPATIVE = 1, PART_RANDOM = 2, PAIR_PARTS = 3 };

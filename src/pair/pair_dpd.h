@@ -7,16 +7,23 @@
 #include "pair.h"
 #include "random.h"
 
-/* The three force magnitudes along e_ij of one pair. theta ~ N(0,1); the
- * noise is discretised as theta / sqrt(dt). */
+/* The three force magnitudes along e_ij of one pair from its weights w_C and
+ * w_R. theta ~ N(0,1); the noise is discretised as theta / sqrt(dt). */
+static inline void dpd_pair_terms_w(const PairParams *p, double wc, double wr, double e_dot_v, double theta,
+                                    double inv_sqrt_dt, double *fc, double *fd, double *fr)
+{
+    *fc = p->a * wc;                                   /* conservative, eq. 2 */
+    *fd = -p->gamma * wr * wr * e_dot_v;               /* dissipative, eq. 3 */
+    *fr = p->sigma * wr * theta * inv_sqrt_dt;         /* random, eq. 4 */
+}
+
+/* The same from the distance r. */
 static inline void dpd_pair_terms(const PairParams *p, double r, double e_dot_v, double theta,
                                   double inv_sqrt_dt, double *fc, double *fd, double *fr)
 {
     const double wc = 1.0 - r / p->rc;                 /* w_C, eq. 5 */
     const double wr = random_weight(wc, p->s);         /* w_R = sqrt(w_D), eq. 7 */
-    *fc = p->a * wc;                                   /* conservative, eq. 2 */
-    *fd = -p->gamma * wr * wr * e_dot_v;               /* dissipative, eq. 3 */
-    *fr = p->sigma * wr * theta * inv_sqrt_dt;         /* random, eq. 4 */
+    dpd_pair_terms_w(p, wc, wr, e_dot_v, theta, inv_sqrt_dt, fc, fd, fr);
 }
 
 /* Virial of one pair by part, its Irving-Kirkwood split over slabs, the pair
@@ -52,10 +59,12 @@ static __attribute__((noinline)) PAIR_NOCLONE void dpd_pair_record(PairVirial *p
 /* One batch of particle i's pairs (pairs_in_range) with their theta_ij (eq. 4,
  * drawn for the batch by the walk): the force F_ij on i into
  * acc->fi, -F_ij on j into the chunk's buffer; pv != NULL: the virial too.
- * le: the box has Lees-Edwards shear (a constant). */
+ * wr: NULL, or w_R of each pair whose exponent is general (weight_general),
+ * formed for the walk's batch at once (forces.c). le: the box has
+ * Lees-Edwards shear (a constant). */
 static inline __attribute__((always_inline))
 void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], const double *theta, int m,
-                    PairAcc *acc, PairVirial *pv, const int le)
+                    PairAcc *acc, PairVirial *pv, const int le, const double *wr_batch)
 {
     const double inv_sqrt_dt = acc->inv_sqrt_dt;
     const double *v = s->v_pred;
@@ -73,8 +82,10 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], co
         const double e[3] = {d[0] * inv_r, d[1] * inv_r, d[2] * inv_r};
         const double edv = e[0] * dvx + e[1] * (v[3 * i + 1] - v[3 * j + 1])
                          + e[2] * (v[3 * i + 2] - v[3 * j + 2]);
+        const double wc = 1.0 - r / p->rc;                                    /* w_C, eq. 5 */
+        const double wr = wr_batch && weight_general(p->s) ? wr_batch[q] : random_weight(wc, p->s);   /* eq. 7 */
         double F[PAIR_PARTS];
-        dpd_pair_terms(p, r, edv, theta[q], inv_sqrt_dt, &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
+        dpd_pair_terms_w(p, wc, wr, edv, theta[q], inv_sqrt_dt, &F[PART_CONSERVATIVE], &F[PART_DISSIPATIVE], &F[PART_RANDOM]);
         const double ft = F[0] + F[1] + F[2];
         const double fx = ft * e[0], fy = ft * e[1], fz = ft * e[2];
         fi[0] += fx; fi[1] += fy; fi[2] += fz;
