@@ -110,7 +110,11 @@ typedef void (*PanLanesFn)(PanLanes *, int, double);
  * the select that uses it, and a square root under a condition keeps the loop
  * from vectorising without masks (it "could trap"); the bits are the same.
  * AVX-512 has the masks, and is faster without it (measured). */
+#ifdef __clang__
+#define PAN_LANES_OPT   /* clang has no optimize attribute (the fuzzer's build) */
+#else
 #define PAN_LANES_OPT optimize("no-tree-sink")
+#endif
 __attribute__((PAN_LANES_OPT)) static void pan_lanes_portable(PanLanes *L, int m, double inv_sqrt_dt)
 { pan_lanes_force(L, m, inv_sqrt_dt); }
 #ifdef DPD_HAVE_X86_SIMD
