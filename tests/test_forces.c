@@ -625,8 +625,7 @@ static void ik_bins_sum_to_virial(void **state)
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; a second type
  * pair with a shorter cutoff than the largest and a general exponent
- * (s = 0.42: w_R by batch, weight_pow_batch), against the pair-by-pair path
- * of measurement steps too. */
+ * (s = 0.42: w_R by batch, weight_pow_batch), with and without the virial. */
 static void levels_same_forces(void **state)
 {
     (void)state;
@@ -669,9 +668,9 @@ static void levels_same_forces(void **state)
     forces_compute(&s, &nl, &fw, NULL);
     memcpy(f0, s.f, 3 * (size_t)s.n * sizeof(double));
     PairVirial pv = {.bin_axis = -1};
-    forces_compute(&s, &nl, &fw, &pv);   /* pair by pair, w_R one at a time */
+    forces_compute(&s, &nl, &fw, &pv);   /* with the virial */
     CHECK_TRUE(memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0,
-               "forces of a measurement step differ from the batch's bits (w_R by batch against one at a time)");
+               "forces of a measurement step differ from those of a step without the virial");
     for (int level = 1; level <= 2; level++) {
         if (simd_cap(level) != level) { printf("level %d: not on this CPU\n", level); continue; }
         forces_compute(&s, &nl, &fw, NULL);

@@ -267,10 +267,11 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
         }
         return;
     }
-    /* w_R by batch on steps without the virial; one at a time on the others,
-     * the same bits (test_forces levels_same_forces holds the two together) */
+    /* w_R by batch on every step (weight_pow one at a time has the lanes'
+     * bits, test_forces weight_pow_same_bits_at_every_level, but the cost of
+     * eight: on the measurement steps of fig01's scene it was 10 % of the run) */
     double wr[PAIR_BATCH + 8];
-    const int by_batch = model == MODEL_DPD && general && !pv;
+    const int by_batch = model == MODEL_DPD && general;
     if (by_batch) batch_random_weights(s, i, ie, dd, near, count, wr);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le,
