@@ -239,6 +239,36 @@ __attribute__((target("avx512f"))) static int zig_avx512(int m, const uint32_t *
     }
     return q;
 }
+
+/* The same on AVX2, 8 words per half of a group of 16 (so ok[] is laid out as
+ * zig_avx512's): j and zig_k are below 2^24, so the signed compare and the
+ * signed conversion are the unsigned ones. */
+__attribute__((target("avx2"))) static int zig_avx2(int m, const uint32_t *w, double *z, uint16_t *ok)
+{
+    const __m256i low7 = _mm256_set1_epi32(0x7f), bit7 = _mm256_set1_epi32(0x80);
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    int q = 0;
+    for (; q + 16 <= m; q += 16) {
+        unsigned accepted = 0;
+        for (int h = 0; h < 2; h++) {
+            const __m256i k = _mm256_loadu_si256((const __m256i *)(w + q + 8 * h));
+            const __m256i i = _mm256_and_si256(k, low7), j = _mm256_srli_epi32(k, 8);
+            const __m256i below = _mm256_cmpgt_epi32(_mm256_i32gather_epi32((const int *)zig_k, i, 4), j);
+            accepted |= (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(below)) << (8 * h);
+            const __m256i neg = _mm256_cmpeq_epi32(_mm256_and_si256(k, bit7), _mm256_setzero_si256());
+            for (int g = 0; g < 2; g++) {
+                const __m128i i4 = g ? _mm256_extracti128_si256(i, 1) : _mm256_castsi256_si128(i);
+                const __m128i j4 = g ? _mm256_extracti128_si256(j, 1) : _mm256_castsi256_si128(j);
+                const __m128i n4 = g ? _mm256_extracti128_si256(neg, 1) : _mm256_castsi256_si128(neg);
+                const __m256d x = _mm256_mul_pd(_mm256_cvtepi32_pd(j4), _mm256_i32gather_pd(zig_w, i4, 8));
+                const __m256d flip = _mm256_and_pd(_mm256_castsi256_pd(_mm256_cvtepi32_epi64(n4)), sign);
+                _mm256_storeu_pd(z + q + 8 * h + 4 * g, _mm256_xor_pd(x, flip));
+            }
+        }
+        ok[q / 16] = (uint16_t)accepted;
+    }
+    return q;
+}
 #endif
 
 /* One normal from c's stream, as gsl_ran_gaussian_ziggurat draws it: its
@@ -290,9 +320,11 @@ void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a,
     rng_pair_blocks(seed, step, m, id_a, id_b, w);
     int q0 = 0, nbad = 0, bad[RNG_BATCH], v0[RNG_BATCH];
 #ifdef DPD_HAVE_X86_SIMD
-    if (simd_level() == SIMD_AVX512) {   /* 16 pairs at a time, variate by variate, then the pairs not accepted at once */
+    const int isa = simd_level();
+    if (isa != SIMD_PORTABLE) {   /* 16 pairs at a time, variate by variate, then the pairs not accepted at once */
         uint16_t ok[4][RNG_BATCH / 16];
-        for (int v = 0; v < nvar; v++) q0 = zig_avx512(m, w[v], z + v * RNG_BATCH, ok[v]);
+        for (int v = 0; v < nvar; v++)
+            q0 = isa == SIMD_AVX512 ? zig_avx512(m, w[v], z + v * RNG_BATCH, ok[v]) : zig_avx2(m, w[v], z + v * RNG_BATCH, ok[v]);
         for (int g = 0; g < q0 / 16; g++) {
             unsigned all = ok[0][g];
             for (int v = 1; v < nvar; v++) all &= ok[v][g];
