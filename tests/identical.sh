@@ -12,6 +12,10 @@
 # than 2, 1 and 0.5 (checkpoint-colloids3d, suspension-shear): w_R = w_C^(s/2)
 # is no longer libm's pow (within 1 ulp of it, test_forces). With libm's pow
 # put back into weight_pow.c the 24 comparisons passed, so nothing else moved.
+# A REF from before the TCAF sums went eight particles side by side (tcaf.c,
+# 2026-12-03, after ba5bcb63) differs on purpose in the TCAF results of
+# checkpoint-tcaf (its tcaf_* rows, in the 10th digit): J(k) is summed in
+# another order; the trajectory and every other row are the same bits.
 # Prints "N passed, M failed"; the exit status is the verdict.
 set -u
 cd "$(dirname "$0")/.."

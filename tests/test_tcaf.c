@@ -381,9 +381,9 @@ static void analyse_synthetic_blocks(void **state)
     system_free(&s);
 }
 
-/* The current J(k) = sum_i v_i e^{i k.r_i} (eq. 24) of tcaf_current, formed run
- * by run in padded lanes, is the same bits at every instruction-set level the
- * CPU has, and agrees with the plain sum of v e^{i k.r} from cexp() over the
+/* The current J(k) = sum_i v_i e^{i k.r_i} (eq. 24) of tcaf_current, eight
+ * particles side by side (each lane its own sums, +-l of a run from shared
+ * products), is the same bits at every instruction-set level the CPU has, and agrees with the plain sum of v e^{i k.r} from cexp() over the
  * particles for each wave vector, to rounding (1e-11 for 512 terms of order 1). Particles
  * at random positions, velocities and wave vectors up to n^2 = 25 plus axes to
  * 7, so runs of every length 1 ... 11 occur. */

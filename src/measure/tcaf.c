@@ -148,209 +148,224 @@ void tcaf_free(Tcaf *t)
     free(t->vec); free(t->kvec); free(t->shell_of); free(t->shell_k); free(t->shell_n2);
     free(t->shell_nvec); free(t->J); free(t->origin); free(t->origin_step); free(t->origin_index);
     free(t->curve); free(t->acc); free(t->acc_n);
-    free(t->run); free(t->part); free(t->tabs);
+    free(t->run); free(t->item); free(t->lane_sum); free(t->tabs); free(t->abuf);
     memset(t, 0, sizeof *t);
 }
 
 #define TCAF_CHUNKS 4   /* fixed partial sums of J(k): independent of the thread count */
 
-/* J(k) = sum_j v_j exp(i k.r_j) (eq. 23). The phases come from per-particle
- * tables exp(i 2 pi m x_d / L_d), m = -nmax..nmax, so each vector costs two
- * complex products per particle. The particles are cut into TCAF_CHUNKS
- * fixed ranges summed apart and added in chunk order, so J does not depend
- * on the thread count (as the forces, forces.h). */
-/* The wave vectors come in runs of consecutive l at fixed (i, j) (the order
- * of wave_vectors): the phase factor e^{i(k_x x + k_y y)} of a run is formed
- * once, then multiplied by e^{i k_z z} along the run, which the tables hold in
- * consecutive entries. The products are the ones the vector-by-vector loop
- * formed ((a b) c, the same operations), so the same bits. */
-typedef struct TcafRun { int q0, len, i, j, l0, p0; } TcafRun;   /* l0: table index of the first l; p0: its slot in the padded sums */
-/* Each run's sums padded to a multiple of TCAF_PAD slots: the vectorised loop
- * then has no remainder (the padding slots sum products of zero table entries
- * and are never read). */
-#define TCAF_PAD 4
-#define TCAF_BLOCK 64   /* particles whose phase tables are added run by run (48 KB at n2max = 25) */
+/* J(k) = sum_j v_j exp(i k.r_j) (eq. 23), eight particles side by side.
+ *
+ * Phases: per particle the tables e^{i m k_d x_d}, m = 0 ... nmax[d], from one
+ * sine and cosine and a recurrence; e^{-i m k_d x_d} is their conjugate. The
+ * wave vectors come in runs of fixed (i, j) and consecutive l (the order of
+ * wave_vectors): e^{i(k_x x + k_y y)} is formed once per run, then times
+ * e^{+-i l k_z z}. The vectors l and -l of a run share the four products
+ * ab_r c_r, ab_i c_i, ab_r c_i, ab_i c_r, and each still gets the bits of its
+ * own complex product (ab)(c) or (ab)(conj c).
+ *
+ * Sums: lane k of a tile of TCAF_LANES particles keeps its own running sums
+ * (nvec x 6 x TCAF_LANES), added over the lanes in lane order at the end, and
+ * the TCAF_CHUNKS fixed particle ranges in chunk order: J does not depend on
+ * the thread count, nor on the instruction set (the same IEEE operations in
+ * every lane, no contraction). Particles side by side, not wave vectors: the
+ * runs are 1 to 11 vectors long, which lanes of wave vectors had to pad. */
+#define TCAF_LANES 8
+#define TCAF_TILES 32   /* tiles of TCAF_LANES particles per block (80 KB of tables at n2max = 25; 8, 16, 32, 64: 0.98, 0.88, 0.86, 0.85 s per 600 steps of fig01's scene) */
 
-static int run_padded(const TcafRun *r) { return (r->len + TCAF_PAD - 1) / TCAF_PAD * TCAF_PAD; }
+/* A run: fixed (i, |j|) (jneg: j < 0, the conjugate of the y table), its
+ * items it0 ... it1 - 1. An item: l >= 0, the vector of +l and that of -l
+ * (-1: not in the run). The half space of wave_vectors has +l wherever it
+ * has -l. */
+typedef struct TcafRun { int i, j, jneg, it0, it1; } TcafRun;
+typedef struct TcafItem { int l, qp, qm; } TcafItem;
 
-static int by_padded_length(const void *a, const void *b)
-{
-    const TcafRun *x = a, *y = b;
-    const int dx = run_padded(x), dy = run_padded(y);
-    return dx != dy ? (dx > dy) - (dx < dy) : (x->q0 > y->q0) - (x->q0 < y->q0);   /* then in vector order */
-}
-
-static int tcaf_runs(const Tcaf *t, int off, TcafRun *run, int *npad)
-{
-    int nr = 0;
-    for (int q = 0; q < t->nvec; q++) {
-        const int *c = t->vec + 3 * q;
-        TcafRun *r = &run[nr > 0 ? nr - 1 : 0];
-        if (nr > 0 && c[0] == r->i && c[1] == r->j && off + c[2] == r->l0 + r->len) { r->len++; continue; }
-        run[nr++] = (TcafRun){.q0 = q, .len = 1, .i = c[0], .j = c[1], .l0 = off + c[2]};
-    }
-    /* grouped by padded length: the loop below then meets one trip count many
-     * times in a row, which its branches predict; the order of the runs does
-     * not enter any sum (each slot sums the particles in order) */
-    qsort(run, (size_t)nr, sizeof *run, by_padded_length);
-    int p = 0;
-    for (int r = 0; r < nr; r++) { run[r].p0 = p; p += run_padded(&run[r]); }
-    *npad = p;
-    return nr;
-}
-
-/* Phase tables of a block of particles, compact: particle b's rows start at
- * tab + b * stride; row 2d holds Re e^{i m k_d x_d}, row 2d + 1 its Im, at
- * index off + m (m = -M ... M; zero beyond, where the padded slots read),
- * each row wp = W + TCAF_PAD long; then the velocity (3). */
-typedef struct { int off, wp, stride; } TcafLayout;
+/* A tile's tables in rows of TCAF_LANES doubles (one per particle): from row
+ * a, Re and Im of e^{i m k_x x} for m = 0 ... nmax[0] (rows a + 2m, a + 2m + 1);
+ * then the same for y (from b) and z (from c); then the velocity (rows v ... v + 2). */
+typedef struct { int a, b, c, v, stride; } TcafLayout;
 
 static TcafLayout tcaf_layout(const Tcaf *t)
 {
     const int *M = t->nmax;
-    const int W = 2 * (M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2])) + 1;
-    return (TcafLayout){.off = (W - 1) / 2, .wp = W + TCAF_PAD, .stride = 6 * (W + TCAF_PAD) + 3};
+    const int b = 2 * (M[0] + 1), c = b + 2 * (M[1] + 1), v = c + 2 * (M[2] + 1);
+    return (TcafLayout){.a = 0, .b = b, .c = c, .v = v, .stride = v + 3};
 }
 
-/* The runs, per chunk 6 x (padded) partial sums and a block of phase tables
- * (zero where never written: the padded slots read zeros). */
+static int find_vector(const Tcaf *t, int q0, int q1, int l)
+{
+    for (int q = q0; q < q1; q++) if (t->vec[3 * q + 2] == l) return q;
+    return -1;
+}
+
+/* The runs and their items; the lanes' sums, the tiles and the run factors
+ * per chunk, 64-byte aligned for the vector loads. */
 static int work_arrays(Tcaf *t)
 {
     const TcafLayout lay = tcaf_layout(t);
     t->run = malloc((size_t)t->nvec * sizeof *t->run + 1);
-    if (!t->run) return -1;
-    t->nrun = tcaf_runs(t, lay.off, t->run, &t->npad);
-    t->part = calloc((size_t)TCAF_CHUNKS * t->npad * 6 + 1, sizeof(double));
-    t->tabs = calloc((size_t)TCAF_CHUNKS * TCAF_BLOCK * lay.stride, sizeof(double));
-    return t->part && t->tabs ? 0 : -1;
-}
-
-/* A block of particles' v e^{i k.r} added to the current of one run (or a
- * piece of it, L slots from slot k0): e^{i(k_x x + k_y y)} once per particle,
- * times e^{i k_z z} along the run (the products (a b) c, as vector by vector).
- * The 6 x L sums are held in locals (registers) while the block's particles
- * are added in particle order, so each J component is the same sum, in the
- * same order, as particle by particle. J: 6 arrays of np padded slots (Re,
- * Im of x, y, z). */
-static inline __attribute__((always_inline))
-void run_block(int L, const TcafRun *restrict rr, int k0, TcafLayout lay, const double *restrict tab, int nb,
-               int np, double *restrict J)
-{
-    enum { LMAX = 16 };
-    double s0[LMAX], s1[LMAX], s2[LMAX], s3[LMAX], s4[LMAX], s5[LMAX];
-    const int q = rr->p0 + k0, wp = lay.wp;
-    double *restrict J0 = J + q, *restrict J1 = J + np + q, *restrict J2 = J + 2 * (size_t)np + q;
-    double *restrict J3 = J + 3 * (size_t)np + q, *restrict J4 = J + 4 * (size_t)np + q, *restrict J5 = J + 5 * (size_t)np + q;
-    for (int k = 0; k < L; k++) { s0[k] = J0[k]; s1[k] = J1[k]; s2[k] = J2[k]; s3[k] = J3[k]; s4[k] = J4[k]; s5[k] = J5[k]; }
-    for (int b = 0; b < nb; b++) {
-        const double *restrict p = tab + (size_t)b * lay.stride;
-        const double ar = p[lay.off + rr->i], ai = p[wp + lay.off + rr->i];
-        const double br = p[2 * wp + lay.off + rr->j], bi = p[3 * wp + lay.off + rr->j];
-        const double abr = ar * br - ai * bi, abi = ar * bi + ai * br;
-        const double *restrict cr = p + 4 * wp + rr->l0 + k0, *restrict ci = p + 5 * wp + rr->l0 + k0;
-        const double v0 = p[6 * wp], v1 = p[6 * wp + 1], v2 = p[6 * wp + 2];
-        #pragma omp simd
-        for (int k = 0; k < L; k++) {
-            const double pr = abr * cr[k] - abi * ci[k], pi = abr * ci[k] + abi * cr[k];
-            s0[k] += v0 * pr; s1[k] += v0 * pi;
-            s2[k] += v1 * pr; s3[k] += v1 * pi;
-            s4[k] += v2 * pr; s5[k] += v2 * pi;
+    t->item = malloc((size_t)t->nvec * sizeof *t->item + 1);
+    if (!t->run || !t->item) return -1;
+    int nr = 0, ni = 0;
+    for (int q0 = 0, q1; q0 < t->nvec; q0 = q1) {
+        const int *c = t->vec + 3 * q0;
+        int lmax = abs(c[2]);
+        for (q1 = q0 + 1; q1 < t->nvec && t->vec[3 * q1] == c[0] && t->vec[3 * q1 + 1] == c[1]; q1++)
+            if (abs(t->vec[3 * q1 + 2]) > lmax) lmax = abs(t->vec[3 * q1 + 2]);
+        t->run[nr] = (TcafRun){.i = c[0], .j = abs(c[1]), .jneg = c[1] < 0, .it0 = ni};
+        for (int l = 0; l <= lmax; l++) {
+            const TcafItem it = {.l = l, .qp = find_vector(t, q0, q1, l), .qm = l > 0 ? find_vector(t, q0, q1, -l) : -1};
+            if (it.qp < 0 && it.qm >= 0) return -1;   /* not a half space */
+            if (it.qp >= 0) t->item[ni++] = it;
         }
+        t->run[nr++].it1 = ni;
     }
-    for (int k = 0; k < L; k++) { J0[k] = s0[k]; J1[k] = s1[k]; J2[k] = s2[k]; J3[k] = s3[k]; J4[k] = s4[k]; J5[k] = s5[k]; }
+    t->nrun = nr;
+    const size_t lanes = (size_t)TCAF_CHUNKS * t->nvec * 6 * TCAF_LANES;
+    const size_t tabs = (size_t)TCAF_CHUNKS * TCAF_TILES * lay.stride * TCAF_LANES;
+    const size_t abuf = (size_t)TCAF_CHUNKS * TCAF_TILES * 2 * TCAF_LANES;
+    t->lane_sum = aligned_alloc(64, (lanes * sizeof(double) + 63) / 64 * 64);
+    t->tabs = aligned_alloc(64, (tabs * sizeof(double) + 63) / 64 * 64);
+    t->abuf = aligned_alloc(64, (abuf * sizeof(double) + 63) / 64 * 64);
+    return t->lane_sum && t->tabs && t->abuf ? 0 : -1;
 }
 
-/* Every run, in pieces of at most PIECE slots (the sums of a piece should fit
- * the registers: 6 x 16 doubles in AVX-512's 32, 6 x 8 in AVX2's 16; the
- * baseline's 8 spill a little but measured faster than 4); the common
- * lengths with a constant trip count (unrolled, no remainder). */
-static inline __attribute__((always_inline))
-void accumulate_block(int PIECE, int np, int nrun, const TcafRun *restrict run, TcafLayout lay,
-                      const double *restrict tab, int nb, double *restrict J)
+/* Lane k of tile p: particle i's tables and velocity. The three recurrences
+ * run side by side (each is a chain of dependent products). */
+static void phase_tables(double *p, int k, TcafLayout lay, const System *s, int i, const int M[3])
 {
-    for (int r = 0; r < nrun; r++)
-        for (int k0 = 0, len = run_padded(&run[r]); k0 < len; k0 += PIECE)
-            switch (len - k0 < PIECE ? len - k0 : PIECE) {
-            case 4: run_block(4, &run[r], k0, lay, tab, nb, np, J); break;
-            case 8: run_block(8, &run[r], k0, lay, tab, nb, np, J); break;
-            case 12: run_block(12, &run[r], k0, lay, tab, nb, np, J); break;
-            case 16: run_block(16, &run[r], k0, lay, tab, nb, np, J); break;
-            }
-}
-
-/* The loops compiled for AVX-512, AVX2 and baseline x86-64 (the same operations,
- * no contraction, so the same bits), chosen by simd_level() (core/simd.c). */
-typedef void (*AccumulateFn)(int, int, const TcafRun *, TcafLayout, const double *, int, double *);
-static void accumulate_portable(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
-{ accumulate_block(8, np, nrun, run, lay, tab, nb, J); }
-#ifdef DPD_HAVE_X86_SIMD
-__attribute__((target("avx2"))) static void accumulate_avx2(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
-{ accumulate_block(8, np, nrun, run, lay, tab, nb, J); }
-__attribute__((target("avx512f"))) static void accumulate_avx512(int np, int nrun, const TcafRun *run, TcafLayout lay, const double *tab, int nb, double *J)
-{ accumulate_block(16, np, nrun, run, lay, tab, nb, J); }
-#endif
-
-/* Particle i's phase tables and velocity into p (layout above). The three
- * recurrences run side by side (each is a chain of dependent products). */
-static void phase_tables(double *p, TcafLayout lay, const System *s, int i, const int M[3])
-{
-    const int off = lay.off, mmax = lay.off;
-    double br[3], bi[3], *er[3], *ei[3];
+    const int row0[3] = {lay.a, lay.b, lay.c}, mmax = M[0] > M[1] ? (M[0] > M[2] ? M[0] : M[2]) : (M[1] > M[2] ? M[1] : M[2]);
+    double br[3], bi[3], *e[3];
     for (int d = 0; d < 3; d++) {
         const double a = M[d] > 0 ? 2.0 * M_PI * s->x[3 * i + d] / s->box.L[d] : 0.0;
         br[d] = cos(a); bi[d] = sin(a);
-        er[d] = p + 2 * d * lay.wp; ei[d] = er[d] + lay.wp;
-        er[d][off] = 1.0; ei[d][off] = 0.0;
-        p[6 * lay.wp + d] = s->v[3 * i + d];
+        e[d] = p + (size_t)row0[d] * TCAF_LANES + k;
+        e[d][0] = 1.0; e[d][TCAF_LANES] = 0.0;
+        p[(size_t)(lay.v + d) * TCAF_LANES + k] = s->v[3 * i + d];
     }
     for (int m = 1; m <= mmax; m++)
         for (int d = 0; d < 3; d++) {
             if (m > M[d]) continue;
-            er[d][off + m] = er[d][off + m - 1] * br[d] - ei[d][off + m - 1] * bi[d];
-            ei[d][off + m] = er[d][off + m - 1] * bi[d] + ei[d][off + m - 1] * br[d];
-            er[d][off - m] = er[d][off + m];
-            ei[d][off - m] = -ei[d][off + m];
+            const double *o = e[d] + (size_t)(2 * m - 2) * TCAF_LANES;
+            double *n = e[d] + (size_t)(2 * m) * TCAF_LANES;
+            n[0] = o[0] * br[d] - o[TCAF_LANES] * bi[d];
+            n[TCAF_LANES] = o[0] * bi[d] + o[TCAF_LANES] * br[d];
         }
 }
 
+/* A tile's lanes beyond the last particle: zero tables and velocity, which
+ * add zeros to those lanes' sums. */
+static void clear_lanes(double *p, int k0, TcafLayout lay)
+{
+    for (int r = 0; r < lay.stride; r++)
+        for (int k = k0; k < TCAF_LANES; k++) p[(size_t)r * TCAF_LANES + k] = 0.0;
+}
+
+/* The sums of a block of ntile tiles, added to the lanes' sums acc (vector q,
+ * component c = 2d + (0: Re, 1: Im), lane k at ((q * 6 + c) * TCAF_LANES + k)).
+ * VT holds W of a tile's lanes, which are done W at a time (h): every level
+ * does the same operations on every lane. The sums of an item stay in
+ * registers while the block's tiles are added. */
+#define TCAF_ROW(VT, base, row) (*(VT *)((base) + (size_t)(row) * TCAF_LANES))
+#define TCAF_BLOCK_SUMS(NAME, VT, W, TARGET)                                                          \
+TARGET static void NAME(const Tcaf *t, TcafLayout lay, const double *tab, int ntile,                   \
+                        double *restrict abuf, double *restrict acc)                                   \
+{                                                                                                      \
+    for (int h = 0; h < TCAF_LANES; h += W)                                                            \
+        for (int r = 0; r < t->nrun; r++) {                                                            \
+            const TcafRun *R = &t->run[r];                                                             \
+            for (int b = 0; b < ntile; b++) {   /* e^{i(k_x x + k_y y)}: (a)(b) or (a)(conj b) */       \
+                const double *p = tab + (size_t)b * lay.stride * TCAF_LANES + h;                       \
+                const VT ar = TCAF_ROW(VT, p, lay.a + 2 * R->i), ai = TCAF_ROW(VT, p, lay.a + 2 * R->i + 1); \
+                const VT br = TCAF_ROW(VT, p, lay.b + 2 * R->j), bj = TCAF_ROW(VT, p, lay.b + 2 * R->j + 1); \
+                const VT bi = R->jneg ? -bj : bj;                                                      \
+                TCAF_ROW(VT, abuf + h, 2 * b) = ar * br - ai * bi;                                     \
+                TCAF_ROW(VT, abuf + h, 2 * b + 1) = ar * bi + ai * br;                                 \
+            }                                                                                          \
+            for (int it = R->it0; it < R->it1; it++) {                                                 \
+                const TcafItem *e = &t->item[it];                                                      \
+                const int both = e->qm >= 0;                                                           \
+                double *sp = acc + (size_t)e->qp * 6 * TCAF_LANES + h;                                 \
+                double *sm = acc + (size_t)(both ? e->qm : 0) * 6 * TCAF_LANES + h;                    \
+                VT s[6], m[6];                                                                         \
+                for (int c = 0; c < 6; c++) { s[c] = TCAF_ROW(VT, sp, c); m[c] = TCAF_ROW(VT, sm, c); } \
+                for (int b = 0; b < ntile; b++) {                                                      \
+                    const double *p = tab + (size_t)b * lay.stride * TCAF_LANES + h;                   \
+                    const VT abr = TCAF_ROW(VT, abuf + h, 2 * b), abi = TCAF_ROW(VT, abuf + h, 2 * b + 1); \
+                    const VT cr = TCAF_ROW(VT, p, lay.c + 2 * e->l), cj = TCAF_ROW(VT, p, lay.c + 2 * e->l + 1); \
+                    const VT v0 = TCAF_ROW(VT, p, lay.v), v1 = TCAF_ROW(VT, p, lay.v + 1), v2 = TCAF_ROW(VT, p, lay.v + 2); \
+                    if (both) {   /* (ab)(c) and (ab)(conj c) from four products */                    \
+                        const VT p1 = abr * cr, p2 = abi * cj, p3 = abr * cj, p4 = abi * cr;           \
+                        const VT pr = p1 - p2, pi = p3 + p4, qr = p1 + p2, qi = p4 - p3;               \
+                        s[0] += v0 * pr; s[1] += v0 * pi; s[2] += v1 * pr;                             \
+                        s[3] += v1 * pi; s[4] += v2 * pr; s[5] += v2 * pi;                             \
+                        m[0] += v0 * qr; m[1] += v0 * qi; m[2] += v1 * qr;                             \
+                        m[3] += v1 * qi; m[4] += v2 * qr; m[5] += v2 * qi;                             \
+                    } else {      /* +l alone: (ab)(c) */                                              \
+                        const VT pr = abr * cr - abi * cj, pi = abr * cj + abi * cr;                   \
+                        s[0] += v0 * pr; s[1] += v0 * pi; s[2] += v1 * pr;                             \
+                        s[3] += v1 * pi; s[4] += v2 * pr; s[5] += v2 * pi;                             \
+                    }                                                                                  \
+                }                                                                                      \
+                for (int c = 0; c < 6; c++) TCAF_ROW(VT, sp, c) = s[c];                                \
+                if (both) for (int c = 0; c < 6; c++) TCAF_ROW(VT, sm, c) = m[c];                      \
+            }                                                                                          \
+        }                                                                                              \
+}
+
+/* The vector types (may_alias: they read the double arrays); 8 lanes on
+ * AVX-512, 4 on AVX2, 2 on baseline x86-64 (SSE2), chosen by simd_level(). */
+typedef double tcaf_v2 __attribute__((vector_size(16), may_alias));
+typedef double tcaf_v4 __attribute__((vector_size(32), may_alias));
+typedef double tcaf_v8 __attribute__((vector_size(64), may_alias));
+typedef void (*BlockSumsFn)(const Tcaf *, TcafLayout, const double *, int, double *, double *);
+TCAF_BLOCK_SUMS(block_sums_portable, tcaf_v2, 2, )
+#ifdef DPD_HAVE_X86_SIMD
+TCAF_BLOCK_SUMS(block_sums_avx2, tcaf_v4, 4, __attribute__((target("avx2"))))
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+TCAF_BLOCK_SUMS(block_sums_avx512, tcaf_v8, 8, __attribute__((target("avx512f"))))
+#pragma GCC diagnostic pop
+#endif
+
 void tcaf_current(Tcaf *t, const System *s)
 {
-    const int nv = t->nvec, n = s->n, nrun = t->nrun, np = t->npad;
+    const int nv = t->nvec, n = s->n;
     const int M[3] = {t->nmax[0], t->nmax[1], t->nmax[2]};
     const TcafLayout lay = tcaf_layout(t);
-    const TcafRun *run = t->run;
-    double *part = t->part, *tabs = t->tabs;
-    memset(part, 0, (size_t)TCAF_CHUNKS * np * 6 * sizeof(double));
-    const AccumulateFn accumulate = SIMD_PICK(accumulate_portable, accumulate_avx2, accumulate_avx512);
+    const size_t per_chunk = (size_t)nv * 6 * TCAF_LANES, tile = (size_t)lay.stride * TCAF_LANES;
+    memset(t->lane_sum, 0, TCAF_CHUNKS * per_chunk * sizeof(double));
+    const BlockSumsFn block_sums = SIMD_PICK(block_sums_portable, block_sums_avx2, block_sums_avx512);
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
-        double *Jp = part + (size_t)chunk * np * 6;
-        /* phase tables as (re, im) rows: plain real arithmetic (complex
-         * products in C11 without -ffast-math go through a NaN-safe libcall) */
-        double *tab = tabs + (size_t)chunk * TCAF_BLOCK * lay.stride;
+        double *acc = t->lane_sum + chunk * per_chunk;
+        double *tab = t->tabs + chunk * TCAF_TILES * tile, *abuf = t->abuf + (size_t)chunk * TCAF_TILES * 2 * TCAF_LANES;
         const int i0 = (int)((long long)n * chunk / TCAF_CHUNKS), i1 = (int)((long long)n * (chunk + 1) / TCAF_CHUNKS);
-        int nb = 0;
+        int nb = 0;   /* particles in the block */
         for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
-            phase_tables(tab + (size_t)nb++ * lay.stride, lay, s, i, M);
-            if (nb == TCAF_BLOCK) { accumulate(np, nrun, run, lay, tab, nb, Jp); nb = 0; }
+            phase_tables(tab + (size_t)(nb / TCAF_LANES) * tile, nb % TCAF_LANES, lay, s, i, M);
+            if (++nb == TCAF_TILES * TCAF_LANES) { block_sums(t, lay, tab, TCAF_TILES, abuf, acc); nb = 0; }
         }
-        if (nb > 0) accumulate(np, nrun, run, lay, tab, nb, Jp);
+        if (nb > 0) {
+            if (nb % TCAF_LANES) clear_lanes(tab + (size_t)(nb / TCAF_LANES) * tile, nb % TCAF_LANES, lay);
+            block_sums(t, lay, tab, (nb + TCAF_LANES - 1) / TCAF_LANES, abuf, acc);
+        }
     }
-    /* the chunks' sums in chunk order (as complex sums: component by component) */
-    for (int r = 0; r < nrun; r++)
-        for (int k = 0; k < run[r].len; k++)
-            for (int d = 0; d < 3; d++) {
-                const size_t slot = (size_t)run[r].p0 + (size_t)k;
-                double re = 0.0, im = 0.0;
-                for (int h = 0; h < TCAF_CHUNKS; h++) {
-                    const double *Jp = part + (size_t)h * np * 6;
-                    re += Jp[(size_t)(2 * d) * np + slot];
-                    im += Jp[(size_t)(2 * d + 1) * np + slot];
+    /* the lanes' sums in lane order, then the chunks' in chunk order (as
+     * complex sums: component by component) */
+    for (int q = 0; q < nv; q++)
+        for (int d = 0; d < 3; d++) {
+            double z[2] = {0.0, 0.0};   /* (re, im), C11 6.2.5 */
+            for (int h = 0; h < TCAF_CHUNKS; h++)
+                for (int c = 0; c < 2; c++) {
+                    const double *lane = t->lane_sum + h * per_chunk + ((size_t)q * 6 + 2 * d + c) * TCAF_LANES;
+                    double sum = 0.0;
+                    for (int k = 0; k < TCAF_LANES; k++) sum += lane[k];
+                    z[c] += sum;
                 }
-                double *z = (double *)&t->J[3 * (run[r].q0 + k) + d];   /* (re, im), C11 6.2.5 */
-                z[0] = re; z[1] = im;
-            }
+            memcpy(&t->J[3 * q + d], z, sizeof z);
+        }
     /* momentum of rigid bodies (spring-model colloids), if asked for */
     for (int b = 0; b < t->nbody; b++)
         for (int q = 0; q < nv; q++) {

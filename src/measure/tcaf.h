@@ -61,10 +61,12 @@ typedef struct {
     long long *acc_n;         /* nblocks: complete origins */
     long long nstarted, ndone;
     /* tcaf_current's work arrays, made by tcaf_init: the wave vectors as runs
-     * of consecutive l, the chunks' padded partial sums, the phase tables */
+     * of consecutive l (items: +-l), the chunks' sums per lane, phase tables
+     * and run factors */
     struct TcafRun *run;
-    int nrun, npad;
-    double *part, *tabs;
+    struct TcafItem *item;
+    int nrun;
+    double *lane_sum, *tabs, *abuf;
     /* optional rigid bodies whose momentum M V joins the current (include_bodies) */
     int nbody;
     const double *body_R, *body_V;
