@@ -209,11 +209,13 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
  * pairs lane by lane, vectorised at each instruction set) gives the same
  * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force),
  * forces and torques, at every weight exponent case (s = 0.5, 1, 2 and pow),
- * with and without gamma^S, with and without Lees-Edwards shear. */
+ * with and without gamma^S, with and without Lees-Edwards shear, with two
+ * types and with one (whose parameters the lanes read once: uniform). */
 static void lanes_same_bits_as_pair_by_pair(void **state)
 {
     (void)state;
     const int best = simd_cap(-1);
+    for (int nt = 1; nt <= 2; nt++)
     for (int le = 0; le <= 1; le++) {
         System s;
         memset(&s, 0, sizeof s);
@@ -221,7 +223,7 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         box_init(&s.box, 3, L, le ? 0.4 : 0.0);
         s.box.le_offset = le ? 1.3 : 0.0;
         s.kBT = 1.0; s.dt = 0.01; s.lambda = 0.5; s.seed = 17; s.step = 3;
-        s.ntypes = 2;
+        s.ntypes = nt;
         for (int t = 0; t < 2; t++) {
             snprintf(s.types[t].name, sizeof s.types[t].name, "t%d", t);
             s.types[t].mass = 1.0; s.types[t].inertia = 0.1; s.types[t].body_force_flip_axis = -1;
@@ -233,7 +235,7 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         uint64_t st = 33;
         for (int i = 0; i < s.n; i++) {
             s.id[i] = (uint32_t)(7 * i + 1);
-            s.type[i] = i % 3 == 0;
+            s.type[i] = nt == 2 && i % 3 == 0;
             for (int a = 0; a < 3; a++) {
                 s.x[3 * i + a] = L[a] * tu_uniform(&st);
                 s.v_pred[3 * i + a] = s.v[3 * i + a] = 2.0 * tu_uniform(&st) - 1.0;
@@ -241,7 +243,8 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         }
         assert_int_equal(rotation_alloc(&s), 0);
         for (int k = 0; k < 3 * s.n; k++) s.omega_pred[k] = s.omega[k] = 4.0 * tu_uniform(&st) - 2.0;
-        /* pass 1 turns the (1, 1) pairs to s = 2, the fourth case of random_weight */
+        /* pass 1 turns the (1, 1) pairs (one type: the (0, 0) pairs) to s = 2, the
+         * fourth case of random_weight */
         NeighborList nl;
         ForceWork fw;
         assert_int_equal(neighbor_init(&nl, &s, 0.3), 0);
@@ -250,7 +253,8 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         double *f0 = malloc(6 * (size_t)s.n * sizeof(double));
         assert_non_null(f0);
         for (int pass = 0; pass < 2; pass++) {
-            if (pass == 1) system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
+            if (pass == 1 && nt == 2) system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
+            if (pass == 1 && nt == 1) system_set_pair(&s, 0, 0, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
             PairVirial pv = {.bin_axis = -1};
             forces_compute(&s, &nl, &fw, &pv);   /* pair by pair */
             memcpy(f0, s.f, 3 * (size_t)s.n * sizeof(double));
@@ -263,8 +267,8 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
                 forces_compute(&s, &nl, &fw, NULL);   /* lane by lane */
                 const int same = memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0
                               && memcmp(f0 + 3 * s.n, s.torque, 3 * (size_t)s.n * sizeof(double)) == 0;
-                CHECK_TRUE(same, "lane-wise forces and torques differ from the pair-by-pair bits (level %d, shear %d, pass %d)",
-                           level, le, pass);
+                CHECK_TRUE(same, "lane-wise forces and torques differ from the pair-by-pair bits (level %d, types %d, shear %d, pass %d)",
+                           level, nt, le, pass);
             }
             simd_cap(best);
         }

@@ -105,7 +105,7 @@ enum { MODEL_DPD, MODEL_PAN2008 };
 
 /* pan_lanes_force compiled for AVX-512, AVX2 and baseline x86-64 (the same
  * operations without contraction, so the same bits), chosen by simd_level(). */
-typedef void (*PanLanesFn)(PanLanes *, int, double);
+typedef void (*PanLanesFn)(PanLanes *, int, double, const PairParams *);
 /* no-tree-sink: GCC would otherwise move each square root into the branch of
  * the select that uses it, and a square root under a condition keeps the loop
  * from vectorising without masks (it "could trap"); the bits are the same.
@@ -115,13 +115,13 @@ typedef void (*PanLanesFn)(PanLanes *, int, double);
 #else
 #define PAN_LANES_OPT optimize("no-tree-sink")
 #endif
-__attribute__((PAN_LANES_OPT)) static void pan_lanes_portable(PanLanes *L, int m, double inv_sqrt_dt)
-{ pan_lanes_force(L, m, inv_sqrt_dt); }
+__attribute__((PAN_LANES_OPT)) static void pan_lanes_portable(PanLanes *L, int m, double inv_sqrt_dt, const PairParams *u)
+{ pan_lanes_force(L, m, inv_sqrt_dt, u); }
 #ifdef DPD_HAVE_X86_SIMD
-__attribute__((target("avx2"), PAN_LANES_OPT)) static void pan_lanes_avx2(PanLanes *L, int m, double inv_sqrt_dt)
-{ pan_lanes_force(L, m, inv_sqrt_dt); }
-__attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int m, double inv_sqrt_dt)
-{ pan_lanes_force(L, m, inv_sqrt_dt); }
+__attribute__((target("avx2"), PAN_LANES_OPT)) static void pan_lanes_avx2(PanLanes *L, int m, double inv_sqrt_dt, const PairParams *u)
+{ pan_lanes_force(L, m, inv_sqrt_dt, u); }
+__attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int m, double inv_sqrt_dt, const PairParams *u)
+{ pan_lanes_force(L, m, inv_sqrt_dt, u); }
 #endif
 
 /* pairs_in_range (pair.h) eight candidates at a time, for boxes without
@@ -257,10 +257,13 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
     if (model == MODEL_PAN2008 && !pv) {
         PanLanes L;
         int m = 0, c[PAIR_BATCH];
+        /* one type, not a general power: its parameters once, not per pair */
+        const PairParams *u = s->ntypes == 1 && pan_weight_mode(&s->pair[0][0]) != 3 ? &s->pair[0][0] : NULL;
         for (int p = i, off = 0; p < ie; off += count[p - i], p++)
-            c[p - i] = pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le);
+            c[p - i] = u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1)
+                         : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0);
         const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
-        lanes(&L, m, acc->inv_sqrt_dt);
+        lanes(&L, m, acc->inv_sqrt_dt, u);
         for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
             pan_lanes_apply(&L, k, c[p - i], acc);
             if (p + 1 < ie || close_last) pair_close(p, acc, model);

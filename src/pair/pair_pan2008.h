@@ -165,6 +165,12 @@ void pan_pair_batch(const System *s, int i, int *near, double (*dd)[4], const do
     }
 }
 
+/* random_weight's case for the exponent s: 0 s = 2, 1 s = 1, 2 s = 0.5, 3 a power */
+static inline int pan_weight_mode(const PairParams *p)
+{
+    return p->s == 2.0 ? 0 : p->s == 1.0 ? 1 : p->s == 0.5 ? 2 : 3;
+}
+
 /* ---- the same forces lane by lane (steps without the virial) -------------
  * A walk batch's interacting pairs in structure-of-arrays form: pass 1 gathers
  * each pair's geometry, velocities, noise and parameters (scalar: gathers and
@@ -187,30 +193,36 @@ typedef struct {
  * forces.c is compiled with -fno-math-errno (Makefile): sqrt then never calls
  * libm to set errno (its argument is never negative here), which is what
  * lets this loop vectorise; IEEE sqrt gives the same bits either way. */
-static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt)
+static inline __attribute__((always_inline))
+void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairParams *u, const int uniform)
 {
+    const double u_rc = uniform ? u->rc : 0.0, u_a = uniform ? u->a : 0.0, u_gamma = uniform ? u->gamma : 0.0;
+    const double u_sigma = uniform ? u->sigma : 0.0, u_gs = uniform ? u->gamma_shear : 0.0;
+    const double u_ss = uniform ? u->sigma_shear : 0.0;
     #pragma omp simd
     for (int q = 0; q < m; q++) {
         /* pan_pair_geometry: e = r_ij / r, w_C = 1 - r/rc, f = random_weight(w_C, s) */
         const double r = sqrt(L->r2[q]), inv_r = 1.0 / r;
         const double e0 = L->d[0][q] * inv_r, e1 = L->d[1][q] * inv_r, e2 = L->d[2][q] * inv_r;
-        const double wc = 1.0 - r / L->rc[q];
-        const double sq = sqrt(wc), sq2 = sqrt(sq), fp = L->f_pow[q];   /* all formed: no branch in the loop */
+        const double wc = 1.0 - r / (uniform ? u_rc : L->rc[q]);
+        const double sq = sqrt(wc), sq2 = sqrt(sq), fp = uniform ? 0.0 : L->f_pow[q];   /* all formed: no branch in the loop */
+        /* the mode per pair even when uniform: a mode fixed for the loop lets
+         * GCC unswitch it into square roots under conditions (2.5x slower) */
         const int mode = L->wmode[q];
         const double f = mode == 0 ? wc : mode == 1 ? sq : mode == 2 ? sq2 : fp;
         const double v0 = L->dv[0][q], v1 = L->dv[1][q], v2 = L->dv[2][q];
         const double edv = e0 * v0 + e1 * v1 + e2 * v2;
-        const double fc = L->a[q] * wc;                                         /* eq. 7 */
-        const double fdc = -L->gamma[q] * f * f * edv;                          /* eq. 13, central */
-        const double frc = L->sigma[q] * f * L->theta[q] * inv_sqrt_dt;         /* eq. 15, central */
+        const double fc = (uniform ? u_a : L->a[q]) * wc;                               /* eq. 7 */
+        const double fdc = -(uniform ? u_gamma : L->gamma[q]) * f * f * edv;            /* eq. 13, central */
+        const double frc = (uniform ? u_sigma : L->sigma[q]) * f * L->theta[q] * inv_sqrt_dt;   /* eq. 15, central */
         const double ft = fc + fdc + frc;
         const double h0 = 0.5 * L->d[0][q], h1 = 0.5 * L->d[1][q], h2 = 0.5 * L->d[2][q];
         const double w0 = L->ws[0][q], w1 = L->ws[1][q], w2 = L->ws[2][q];
         const double r0 = h1 * w2 - h2 * w1, r1 = h2 * w0 - h0 * w2, r2 = h0 * w1 - h1 * w0;   /* (r_ij / 2) x (Omega_i + Omega_j) */
-        const double gs = L->gshear[q] * (f * f);
+        const double gshear = uniform ? u_gs : L->gshear[q], gs = gshear * (f * f);
         const double x0 = L->xi[0][q], x1 = L->xi[1][q], x2 = L->xi[2][q];
         const double xe0 = x1 * e2 - x2 * e1, xe1 = x2 * e0 - x0 * e2, xe2 = x0 * e1 - x1 * e0;   /* xi x e */
-        const double frs = L->sshear[q] * f * inv_sqrt_dt;
+        const double frs = (uniform ? u_ss : L->sshear[q]) * f * inv_sqrt_dt;
         const double s0 = -gs * (v0 - edv * e0 + r0) + frs * xe0;               /* eqs 13-14 and 15, non-central */
         const double s1 = -gs * (v1 - edv * e1 + r1) + frs * xe1;
         const double s2 = -gs * (v2 - edv * e2 + r2) + frs * xe2;
@@ -218,7 +230,7 @@ static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *rest
         /* both forms computed, then selected (no arithmetic under a condition) */
         const double fc0 = ft * e0, fc1 = ft * e1, fc2 = ft * e2;
         const double fs0 = fc0 + s0, fs1 = fc1 + s1, fs2 = fc2 + s2;
-        const int shear = L->gshear[q] != 0.0;
+        const int shear = gshear != 0.0;
         L->F[0][q] = shear ? fs0 : fc0;
         L->F[1][q] = shear ? fs1 : fc1;
         L->F[2][q] = shear ? fs2 : fc2;
@@ -228,11 +240,20 @@ static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *rest
     }
 }
 
+/* Pass 2; u != NULL: every pair of the batch has the parameters u (a scene of
+ * one type whose weight is not a general power), read once, not per pair. */
+static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt,
+                                                                  const PairParams *u)
+{
+    if (u) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1);
+    else pan_lanes_loop(L, m, inv_sqrt_dt, NULL, 0);
+}
+
 /* Pass 1 for particle i's entries [0, m0) (near, dd; noise: rng_pair_normals'
  * planes from entry 0), appended to L at *m. Returns the pairs added. */
 static inline __attribute__((always_inline))
 int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
-                   PanLanes *restrict L, int *m, const int le)
+                   PanLanes *restrict L, int *m, const int le, const int uniform)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
@@ -242,11 +263,16 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
         const double r2 = dd[q][3];
         if (!pair_interacts(p, r2)) continue;
         const int k = (*m)++;
+        L->r2[k] = r2;
         /* the geometry in pass 2, but for a weight exponent other than 2, 1, 0.5 (pow) */
-        const int mode = p->s == 2.0 ? 0 : p->s == 1.0 ? 1 : p->s == 0.5 ? 2 : 3;
+        const int mode = pan_weight_mode(p);
         L->wmode[k] = mode;
-        L->f_pow[k] = mode == 3 ? random_weight(1.0 - sqrt(r2) / p->rc, p->s) : 0.0;
-        L->r2[k] = r2; L->rc[k] = p->rc;
+        if (!uniform) {
+            L->f_pow[k] = mode == 3 ? random_weight(1.0 - sqrt(r2) / p->rc, p->s) : 0.0;
+            L->rc[k] = p->rc;
+            L->a[k] = p->a; L->gamma[k] = p->gamma; L->sigma[k] = p->sigma;
+            L->gshear[k] = p->gamma_shear; L->sshear[k] = p->sigma_shear;
+        }
         double dvx = v[3 * i] - v[3 * j];
         if (le) dvx -= pair_image_vx(s, i, j, le);   /* relative to j's Lees-Edwards image */
         L->dv[0][k] = dvx; L->dv[1][k] = v[3 * i + 1] - v[3 * j + 1]; L->dv[2][k] = v[3 * i + 2] - v[3 * j + 2];
@@ -256,8 +282,6 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
             L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
         }
         L->theta[k] = noise[q];
-        L->a[k] = p->a; L->gamma[k] = p->gamma; L->sigma[k] = p->sigma;
-        L->gshear[k] = p->gamma_shear; L->sshear[k] = p->sigma_shear;
         L->j[k] = j;
     }
     return *m - k0;
