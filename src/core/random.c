@@ -217,27 +217,28 @@ int rng_ziggurat_fast(uint32_t k, double *z)
 #ifdef DPD_HAVE_X86_SIMD
 /* The ziggurat's first step on 16 words at a time: the same product
  * j * zig_w[i] and the same sign flip as zig_accept, so the same bits; ok[g]
- * has bit l set if word 16 g + l was accepted at once. Returns the words done
- * (a multiple of 16); the rest is left to the caller. */
+ * has bit l set if word 16 g + l was accepted at once. The last group is
+ * masked (its bits past m set, as accepted): returns m, every word done. */
 __attribute__((target("avx512f"))) static int zig_avx512(int m, const uint32_t *w, double *z, uint16_t *ok)
 {
     const __m512i low7 = _mm512_set1_epi32(0x7f), bit7 = _mm512_set1_epi32(0x80);
     const __m512i sign = _mm512_set1_epi64((long long)0x8000000000000000ULL);
-    int q = 0;
-    for (; q + 16 <= m; q += 16) {
-        const __m512i k = _mm512_loadu_si512(w + q);
+    for (int q = 0; q < m; q += 16) {
+        const __mmask16 live = m - q >= 16 ? 0xffff : (__mmask16)((1u << (m - q)) - 1);
+        const __m512i k = _mm512_maskz_loadu_epi32(live, w + q);   /* 0 past m: strip 0, j = 0 */
         const __m512i i = _mm512_and_si512(k, low7), j = _mm512_srli_epi32(k, 8);
-        ok[q / 16] = _mm512_cmplt_epu32_mask(j, _mm512_i32gather_epi32(i, (const int *)zig_k, 4));
+        ok[q / 16] = _mm512_cmplt_epu32_mask(j, _mm512_i32gather_epi32(i, (const int *)zig_k, 4)) | (__mmask16)~live;
         const __mmask16 neg = _mm512_testn_epi32_mask(k, bit7);
         for (int h = 0; h < 2; h++) {
             const __m256i ih = h ? _mm512_extracti64x4_epi64(i, 1) : _mm512_castsi512_si256(i);
             const __m256i jh = h ? _mm512_extracti64x4_epi64(j, 1) : _mm512_castsi512_si256(j);
             const __m512d x = _mm512_mul_pd(_mm512_cvtepu32_pd(jh), _mm512_i32gather_pd(ih, zig_w, 8));
             const __m512i xi = _mm512_castpd_si512(x);
-            _mm512_storeu_pd(z + q + 8 * h, _mm512_castsi512_pd(_mm512_mask_xor_epi64(xi, (__mmask8)(neg >> (8 * h)), xi, sign)));
+            _mm512_mask_storeu_pd(z + q + 8 * h, (__mmask8)(live >> (8 * h)),
+                                  _mm512_castsi512_pd(_mm512_mask_xor_epi64(xi, (__mmask8)(neg >> (8 * h)), xi, sign)));
         }
     }
-    return q;
+    return m;
 }
 
 /* The same on AVX2, 8 words per half of a group of 16 (so ok[] is laid out as
@@ -325,14 +326,14 @@ void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a,
         uint16_t ok[4][RNG_BATCH / 16];
         for (int v = 0; v < nvar; v++)
             q0 = isa == SIMD_AVX512 ? zig_avx512(m, w[v], z + v * RNG_BATCH, ok[v]) : zig_avx2(m, w[v], z + v * RNG_BATCH, ok[v]);
-        for (int g = 0; g < q0 / 16; g++) {
+        for (int g = 0; g < (q0 + 15) / 16; g++) {
             unsigned all = ok[0][g];
             for (int v = 1; v < nvar; v++) all &= ok[v][g];
             for (unsigned b = (uint16_t)~all; b; b &= b - 1) {
                 const int l = __builtin_ctz(b);
-                int v = 0;
-                while (ok[v][g] >> l & 1u) v++;   /* the first variate not accepted */
-                bad[nbad] = 16 * g + l; v0[nbad++] = v;
+                unsigned not_ok = 0;   /* bit v: variate v not accepted (no branch on which) */
+                for (int v = 0; v < nvar; v++) not_ok |= (~(unsigned)ok[v][g] >> l & 1u) << v;
+                bad[nbad] = 16 * g + l; v0[nbad++] = __builtin_ctz(not_ok);   /* the first variate not accepted */
             }
         }
     }

@@ -291,16 +291,20 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
 static inline __attribute__((always_inline))
 void pan_lanes_apply(const PanLanes *restrict L, int k0, int c, PairAcc *acc)
 {
+    /* i's sums in registers (acc->fi could alias the buffers for all the
+     * compiler knows, and a sum through memory waits on its own store) */
+    double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]}, ti[3] = {acc->ti[0], acc->ti[1], acc->ti[2]};
     for (int k = k0; k < k0 + c; k++) {
         const int j = L->j[k];
         force_claim(acc->f, acc->tq, acc->touched, j, acc->n);
         for (int a = 0; a < 3; a++) {
-            acc->fi[a] += L->F[a][k];
+            fi[a] += L->F[a][k];
             acc->f[3 * j + a] -= L->F[a][k];
-            acc->ti[a] += L->tau[a][k];
+            ti[a] += L->tau[a][k];
             acc->tq[3 * j + a] += L->tau[a][k];
         }
     }
+    for (int a = 0; a < 3; a++) { acc->fi[a] = fi[a]; acc->ti[a] = ti[a]; }
 }
 
 #endif
