@@ -68,8 +68,11 @@ typedef struct {
 
 int  system_alloc(System *s, int n);
 void system_free(System *s);
-/* Reorder all per-particle arrays so that particle perm[k] becomes particle k. */
-void system_permute(System *s, const int *perm, double *scratch);
+/* Reorder all per-particle arrays so that particle perm[k] becomes particle k.
+ * *spare: a buffer of at least 3 n doubles, which trades places with the
+ * 3-vector arrays (s->x and the others may point elsewhere afterwards, and
+ * *spare to what was one of them). */
+void system_permute(System *s, const int *perm, double **spare);
 /* Count of mobile particles and degrees of freedom used for the temperature. */
 int  system_dof(const System *s);
 double system_kinetic_temperature(const System *s);

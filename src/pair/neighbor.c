@@ -135,7 +135,7 @@ static int sort_by_cell(NeighborList *nl, System *s)
             if (c >= c0 && c < c1) nl->perm[cur[c]++] = i;
         }
     }
-    system_permute(s, nl->perm, nl->scratch);
+    system_permute(s, nl->perm, &nl->scratch);
     return 0;
 }
 
