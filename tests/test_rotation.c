@@ -210,7 +210,8 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
  * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force),
  * forces and torques, at every weight exponent case (s = 0.5, 1, 2 and pow),
  * with and without gamma^S, with and without Lees-Edwards shear, with two
- * types and with one (whose parameters the lanes read once: uniform). */
+ * types and with one (whose parameters the lanes read once: uniform; its
+ * batches read in place, and the one with a coincident pair compacted). */
 static void lanes_same_bits_as_pair_by_pair(void **state)
 {
     (void)state;
@@ -241,6 +242,9 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
                 s.v_pred[3 * i + a] = s.v[3 * i + a] = 2.0 * tu_uniform(&st) - 1.0;
             }
         }
+        /* one type: particle 1 on particle 0 (r = 0, no interaction), so one batch
+         * takes the compacting fill and the others read their pairs in place */
+        if (nt == 1) for (int a = 0; a < 3; a++) s.x[3 + a] = s.x[a];
         assert_int_equal(rotation_alloc(&s), 0);
         for (int k = 0; k < 3 * s.n; k++) s.omega_pred[k] = s.omega[k] = 4.0 * tu_uniform(&st) - 2.0;
         /* pass 1 turns the (1, 1) pairs (one type: the (0, 0) pairs) to s = 2, the

@@ -257,11 +257,20 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
     if (model == MODEL_PAN2008 && !pv) {
         PanLanes L;
         int m = 0, c[PAIR_BATCH];
-        /* one type, not a general power: its parameters once, not per pair */
+        /* one type, not a general power: its parameters once, not per pair; and
+         * when every pair of the batch interacts (one cutoff, none closer than
+         * PAIR_R_EPSILON), the lanes read the separations and the noise where
+         * the walk left them (direct: entry q of the batch is lane q) */
         const PairParams *u = s->ntypes == 1 && pan_weight_mode(&s->pair[0][0]) != 3 ? &s->pair[0][0] : NULL;
+        int total = 0, direct = u != NULL;
+        for (int p = i; p < ie; p++) total += count[p - i];
+        for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, dd[q][3]);
+        L.dd = direct ? (const double (*)[4])dd : NULL;
+        L.noise = noise;
         for (int p = i, off = 0; p < ie; off += count[p - i], p++)
-            c[p - i] = u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1)
-                         : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0);
+            c[p - i] = direct ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 1)
+                     : u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 0)
+                         : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0, 0);
         const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
         lanes(&L, m, acc->inv_sqrt_dt, u);
         for (int p = i, k = 0; p < ie; k += c[p - i], p++) {

@@ -186,6 +186,7 @@ typedef struct {
     double a[PAIR_BATCH], gamma[PAIR_BATCH], sigma[PAIR_BATCH], gshear[PAIR_BATCH], sshear[PAIR_BATCH];
     double F[3][PAIR_BATCH], tau[3][PAIR_BATCH];
     int j[PAIR_BATCH];
+    const double (*dd)[4], *noise;   /* direct (dd != NULL): the batch's separations and noise planes, read in place */
 } PanLanes;
 
 /* Pass 2: eqs 13-15 and eq. 1 as pan_pair_force (F == NULL), every pair at once;
@@ -194,16 +195,21 @@ typedef struct {
  * libm to set errno (its argument is never negative here), which is what
  * lets this loop vectorise; IEEE sqrt gives the same bits either way. */
 static inline __attribute__((always_inline))
-void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairParams *u, const int uniform)
+void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairParams *u, const int uniform,
+                    const int direct)
 {
+    const double (*dd)[4] = L->dd;
+    const double *nz = L->noise;
     const double u_rc = uniform ? u->rc : 0.0, u_a = uniform ? u->a : 0.0, u_gamma = uniform ? u->gamma : 0.0;
     const double u_sigma = uniform ? u->sigma : 0.0, u_gs = uniform ? u->gamma_shear : 0.0;
     const double u_ss = uniform ? u->sigma_shear : 0.0;
     #pragma omp simd
     for (int q = 0; q < m; q++) {
         /* pan_pair_geometry: e = r_ij / r, w_C = 1 - r/rc, f = random_weight(w_C, s) */
-        const double r = sqrt(L->r2[q]), inv_r = 1.0 / r;
-        const double e0 = L->d[0][q] * inv_r, e1 = L->d[1][q] * inv_r, e2 = L->d[2][q] * inv_r;
+        const double d0 = direct ? dd[q][0] : L->d[0][q], d1 = direct ? dd[q][1] : L->d[1][q];
+        const double d2 = direct ? dd[q][2] : L->d[2][q];
+        const double r = sqrt(direct ? dd[q][3] : L->r2[q]), inv_r = 1.0 / r;
+        const double e0 = d0 * inv_r, e1 = d1 * inv_r, e2 = d2 * inv_r;
         const double wc = 1.0 - r / (uniform ? u_rc : L->rc[q]);
         const double sq = sqrt(wc), sq2 = sqrt(sq), fp = uniform ? 0.0 : L->f_pow[q];   /* all formed: no branch in the loop */
         /* the mode per pair even when uniform: a mode fixed for the loop lets
@@ -214,13 +220,15 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
         const double edv = e0 * v0 + e1 * v1 + e2 * v2;
         const double fc = (uniform ? u_a : L->a[q]) * wc;                               /* eq. 7 */
         const double fdc = -(uniform ? u_gamma : L->gamma[q]) * f * f * edv;            /* eq. 13, central */
-        const double frc = (uniform ? u_sigma : L->sigma[q]) * f * L->theta[q] * inv_sqrt_dt;   /* eq. 15, central */
+        const double theta = direct ? nz[q] : L->theta[q];
+        const double frc = (uniform ? u_sigma : L->sigma[q]) * f * theta * inv_sqrt_dt;   /* eq. 15, central */
         const double ft = fc + fdc + frc;
-        const double h0 = 0.5 * L->d[0][q], h1 = 0.5 * L->d[1][q], h2 = 0.5 * L->d[2][q];
+        const double h0 = 0.5 * d0, h1 = 0.5 * d1, h2 = 0.5 * d2;
         const double w0 = L->ws[0][q], w1 = L->ws[1][q], w2 = L->ws[2][q];
         const double r0 = h1 * w2 - h2 * w1, r1 = h2 * w0 - h0 * w2, r2 = h0 * w1 - h1 * w0;   /* (r_ij / 2) x (Omega_i + Omega_j) */
         const double gshear = uniform ? u_gs : L->gshear[q], gs = gshear * (f * f);
-        const double x0 = L->xi[0][q], x1 = L->xi[1][q], x2 = L->xi[2][q];
+        const double x0 = direct ? nz[RNG_BATCH + q] : L->xi[0][q], x1 = direct ? nz[2 * RNG_BATCH + q] : L->xi[1][q];
+        const double x2 = direct ? nz[3 * RNG_BATCH + q] : L->xi[2][q];
         const double xe0 = x1 * e2 - x2 * e1, xe1 = x2 * e0 - x0 * e2, xe2 = x0 * e1 - x1 * e0;   /* xi x e */
         const double frs = (uniform ? u_ss : L->sshear[q]) * f * inv_sqrt_dt;
         const double s0 = -gs * (v0 - edv * e0 + r0) + frs * xe0;               /* eqs 13-14 and 15, non-central */
@@ -245,15 +253,18 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
 static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt,
                                                                   const PairParams *u)
 {
-    if (u) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1);
-    else pan_lanes_loop(L, m, inv_sqrt_dt, NULL, 0);
+    if (u && L->dd) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 1);
+    else if (u) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 0);
+    else pan_lanes_loop(L, m, inv_sqrt_dt, NULL, 0, 0);
 }
 
 /* Pass 1 for particle i's entries [0, m0) (near, dd; noise: rng_pair_normals'
- * planes from entry 0), appended to L at *m. Returns the pairs added. */
+ * planes from entry 0), appended to L at *m. Returns the pairs added. direct:
+ * every entry interacts (the caller checked), and pass 2 reads r^2, d and the
+ * noise from the batch's own arrays (L->dd, L->noise), so they are not copied. */
 static inline __attribute__((always_inline))
 int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
-                   PanLanes *restrict L, int *m, const int le, const int uniform)
+                   PanLanes *restrict L, int *m, const int le, const int uniform, const int direct)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
@@ -261,9 +272,9 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
         const int j = near[q];
         const PairParams *p = &s->pair[ti][s->type[j]];
         const double r2 = dd[q][3];
-        if (!pair_interacts(p, r2)) continue;
+        if (!direct && !pair_interacts(p, r2)) continue;
         const int k = (*m)++;
-        L->r2[k] = r2;
+        if (!direct) L->r2[k] = r2;
         /* the geometry in pass 2, but for a weight exponent other than 2, 1, 0.5 (pow) */
         const int mode = pan_weight_mode(p);
         L->wmode[k] = mode;
@@ -277,11 +288,11 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
         if (le) dvx -= pair_image_vx(s, i, j, le);   /* relative to j's Lees-Edwards image */
         L->dv[0][k] = dvx; L->dv[1][k] = v[3 * i + 1] - v[3 * j + 1]; L->dv[2][k] = v[3 * i + 2] - v[3 * j + 2];
         for (int a = 0; a < 3; a++) {
-            L->d[a][k] = dd[q][a];
+            if (!direct) L->d[a][k] = dd[q][a];
             L->ws[a][k] = w[3 * i + a] + w[3 * j + a];
-            L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
+            if (!direct) L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
         }
-        L->theta[k] = noise[q];
+        if (!direct) L->theta[k] = noise[q];
         L->j[k] = j;
     }
     return *m - k0;
