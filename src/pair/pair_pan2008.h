@@ -268,15 +268,16 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
+    const int u_mode = uniform ? pan_weight_mode(&s->pair[0][0]) : 0;   /* one type: no lookup per pair */
     for (int q = 0; q < m0; q++) {
         const int j = near[q];
-        const PairParams *p = &s->pair[ti][s->type[j]];
+        const PairParams *p = uniform ? &s->pair[0][0] : &s->pair[ti][s->type[j]];
         const double r2 = dd[q][3];
         if (!direct && !pair_interacts(p, r2)) continue;
         const int k = (*m)++;
         if (!direct) L->r2[k] = r2;
         /* the geometry in pass 2, but for a weight exponent other than 2, 1, 0.5 (pow) */
-        const int mode = pan_weight_mode(p);
+        const int mode = uniform ? u_mode : pan_weight_mode(p);
         L->wmode[k] = mode;
         if (!uniform) {
             L->f_pow[k] = mode == 3 ? random_weight(1.0 - sqrt(r2) / p->rc, p->s) : 0.0;
