@@ -261,7 +261,7 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
          * when every pair of the batch interacts (one cutoff, none closer than
          * PAIR_R_EPSILON), the lanes read the separations and the noise where
          * the walk left them (direct: entry q of the batch is lane q) */
-        const PairParams *u = s->ntypes == 1 && pan_weight_mode(&s->pair[0][0]) != 3 ? &s->pair[0][0] : NULL;
+        const PairParams *u = s->ntypes == 1 && !weight_general(s->pair[0][0].s) ? &s->pair[0][0] : NULL;
         int total = 0, direct = u != NULL;
         for (int p = i; p < ie; p++) total += count[p - i];
         for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, dd[q][3]);
