@@ -620,26 +620,29 @@ static void ik_bins_sum_to_virial(void **state)
 
 /* The neighbour build's distance test (neighbor.c scan_segment_avx512) gives
  * the same list, and the candidate pass of the walk (forces.c range_avx512:
- * separations, folds and r^2 eight at a time) the same forces, bit for bit,
+ * separations, folds and r^2 eight at a time) and the one-type evaluator
+ * (pair_dpd.h dpd_pair_lanes_avx512) the same forces, bit for bit,
  * as the scalar code at every level the CPU has: a box whose sides differ, so that every
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; a second type
  * pair with a shorter cutoff than the largest and a general exponent
  * (s = 0.42: w_R by batch, weight_pow_batch), with and without the virial. */
-static void levels_same_forces(void **state)
+static void same_forces_at_levels(int two_types, double sexp)
 {
-    (void)state;
+    printf("%s, s = %g\n", two_types ? "two types" : "one type", sexp);
     const int best = simd_cap(-1);
     const double L[3] = {6.0, 6.5, 7.0};
     System s;
-    make_system(&s, 3, 1500, L, 0.0, 25.0, 4.5, 2.0, 1.0, 91);
-    s.ntypes = 2;
-    snprintf(s.types[1].name, sizeof s.types[1].name, "u");
-    s.types[1].mass = 1.0; s.types[1].body_force_flip_axis = -1;
-    system_set_pair(&s, 0, 1, (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .s = 0.42, .rc = 0.9});
-    system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
+    make_system(&s, 3, 1500, L, 0.0, 25.0, 4.5, sexp, 1.0, 91);
+    if (two_types) {
+        s.ntypes = 2;
+        snprintf(s.types[1].name, sizeof s.types[1].name, "u");
+        s.types[1].mass = 1.0; s.types[1].body_force_flip_axis = -1;
+        system_set_pair(&s, 0, 1, (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .s = 0.42, .rc = 0.9});
+        system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
+    }
     uint64_t st = 7;
-    for (int i = 0; i < s.n; i++) s.type[i] = i % 4 == 0;
+    for (int i = 0; i < s.n; i++) s.type[i] = two_types && i % 4 == 0;
     for (int i = 0; i < 300; i++)   /* the cluster: 300 particles in a ball of radius 0.4 at a corner */
         for (int d = 0; d < 3; d++) s.x[3 * i + d] = fmod(L[d] - 0.2 + 0.4 * tu_uniform(&st), L[d]);
     for (int d = 0; d < 3; d++) s.x[3 * 400 + d] = s.x[3 * 401 + d];   /* coincident */
@@ -682,6 +685,16 @@ static void levels_same_forces(void **state)
     forces_free(&fw);
     neighbor_free(&nl);
     system_free(&s);
+}
+
+/* ... for two types (the scalar evaluator at every level), and for one type
+ * with each case of w_R (one type: the AVX-512 evaluator, pair_dpd.h) */
+static void levels_same_forces(void **state)
+{
+    (void)state;
+    same_forces_at_levels(1, 2.0);
+    const double sexp[] = {2.0, 1.0, 0.5, 0.42};
+    for (int k = 0; k < 4; k++) same_forces_at_levels(0, sexp[k]);
 }
 
 /* ------------------------------------------------------ w^p (weight_pow.h) */

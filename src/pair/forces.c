@@ -127,10 +127,9 @@ __attribute__((target("avx512f"))) static void pan_lanes_avx512(PanLanes *L, int
 /* pairs_in_range (pair.h) eight candidates at a time, for boxes without
  * Lees-Edwards shear in 3 dimensions: the same subtractions, folds and r^2
  * (no contraction: -std=c11 keeps it off), so the same bits and the same kept
- * entries in the same order. The kept j, separations and r^2 are compressed
- * into registers and stored whole (near and dd need RANGE_SLACK entries of
- * room past the last one). */
-#define RANGE_SLACK 16
+ * entries in the same order. The kept j, separations and r^2, and the pairs'
+ * ids are compressed into registers and stored whole (near, dd, id_a and id_b
+ * need RANGE_SLACK entries of room past the last one). */
 #ifdef DPD_HAVE_X86_SIMD
 #include <immintrin.h>
 #define AVX512 __attribute__((target("avx512f")))
@@ -149,8 +148,9 @@ static inline AVX512 __m512d fold_avx512(__m512d d, __m512d half, __m512d L, con
     return d;
 }
 static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, int i, int k0, int k1,
-                               int *near, double (*dd)[4])
+                               int *near, double (*dd)[4], double *pl, uint32_t *id_a, uint32_t *id_b, const int soa)
 {
+    const __m512i ida = _mm512_set1_epi32((int)s->id[i]);
     const double *x = s->x;
     const Box *b = &s->box;
     const __m512d xi = _mm512_set1_pd(x[3 * i]), yi = _mm512_set1_pd(x[3 * i + 1]), zi = _mm512_set1_pd(x[3 * i + 2]);
@@ -175,19 +175,29 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
         const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
         const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
         _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
+        /* the pair's stable ids, for its noise */
+        const __m512i idb = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), (__mmask16)keep, j, (const int *)s->id, 4);
+        _mm512_storeu_si512(id_b + m, _mm512_maskz_compress_epi32((__mmask16)keep, idb));
+        _mm512_storeu_si512(id_a + m, ida);
         const __m512d cx = _mm512_maskz_compress_pd(keep, dx), cy = _mm512_maskz_compress_pd(keep, dy);
         const __m512d cz = _mm512_maskz_compress_pd(keep, dz), cr = _mm512_maskz_compress_pd(keep, r2);
+        const int at = m;
+        m += __builtin_popcount(keep);
+        if (soa) {   /* planes x, y, z, r2 (PAIR_PLANE apart), as the AVX-512 evaluator reads them */
+            _mm512_storeu_pd(pl + at, cx); _mm512_storeu_pd(pl + PAIR_PLANE + at, cy);
+            _mm512_storeu_pd(pl + 2 * PAIR_PLANE + at, cz); _mm512_storeu_pd(pl + 3 * PAIR_PLANE + at, cr);
+            continue;
+        }
         const __m512d xy0 = _mm512_unpacklo_pd(cx, cy), xy1 = _mm512_unpackhi_pd(cx, cy);   /* x0 y0 x2 y2 .. | x1 y1 x3 y3 .. */
         const __m512d zr0 = _mm512_unpacklo_pd(cz, cr), zr1 = _mm512_unpackhi_pd(cz, cr);
         const __m512d e01 = _mm512_permutex2var_pd(xy0, lo_halves, zr0);   /* q0 q2 (even quads 0, 2) */
         const __m512d e23 = _mm512_permutex2var_pd(xy0, hi_halves, zr0);   /* q4 q6 */
         const __m512d o01 = _mm512_permutex2var_pd(xy1, lo_halves, zr1);   /* q1 q3 */
         const __m512d o23 = _mm512_permutex2var_pd(xy1, hi_halves, zr1);   /* q5 q7 */
-        _mm512_storeu_pd(dd[m], _mm512_permutex2var_pd(e01, first, o01));
-        _mm512_storeu_pd(dd[m + 2], _mm512_permutex2var_pd(e01, second, o01));
-        _mm512_storeu_pd(dd[m + 4], _mm512_permutex2var_pd(e23, first, o23));
-        _mm512_storeu_pd(dd[m + 6], _mm512_permutex2var_pd(e23, second, o23));
-        m += __builtin_popcount(keep);
+        _mm512_storeu_pd(dd[at], _mm512_permutex2var_pd(e01, first, o01));
+        _mm512_storeu_pd(dd[at + 2], _mm512_permutex2var_pd(e01, second, o01));
+        _mm512_storeu_pd(dd[at + 4], _mm512_permutex2var_pd(e23, first, o23));
+        _mm512_storeu_pd(dd[at + 6], _mm512_permutex2var_pd(e23, second, o23));
     }
     return m;
 }
@@ -216,7 +226,7 @@ static int scene_weights_general(const System *s)
 /* w_R (eq. 7) of every pair of a walk batch [i, ie) that interacts with a
  * general exponent, all at once (weight_pow_batch); other entries get a
  * placeholder. w_C = 1 - r/rc as the evaluator forms it, so the same bits. */
-static void batch_random_weights(const System *s, int i, int ie, double (*dd)[4], const int *near,
+static void batch_random_weights(const System *s, int i, int ie, const double *r2, int stride, const int *near,
                                  const int *count, double *wr)
 {
     double w[PAIR_BATCH + 8], e[PAIR_BATCH + 8];
@@ -225,8 +235,9 @@ static void batch_random_weights(const System *s, int i, int ie, double (*dd)[4]
         const int ti = s->type[p];
         for (int q = 0; q < count[p - i]; q++, k++) {
             const PairParams *pp = &s->pair[ti][s->type[near[k]]];
-            const int use = weight_general(pp->s) && pair_interacts(pp, dd[k][3]);
-            w[k] = use ? 1.0 - sqrt(dd[k][3]) / pp->rc : 1.0;
+            const double r2k = r2[(size_t)k * stride];
+            const int use = weight_general(pp->s) && pair_interacts(pp, r2k);
+            w[k] = use ? 1.0 - sqrt(r2k) / pp->rc : 1.0;
             e[k] = use ? 0.5 * pp->s : 1.0;
         }
     }
@@ -243,6 +254,22 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
         for (int a = 0; a < 3; a++) acc->tq[3 * i + a] += acc->ti[a];
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
 }
+
+#ifdef DPD_HAVE_X86_SIMD
+/* The standard pairs of a walk batch [i, ie) on AVX-512 (dpd_pair_lanes_avx512,
+ * the same bits as dpd_pair_batch): one type pair u, no shear, no virial. */
+__attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s, int i, int ie, const int *near,
+        const double *pl, const double *noise, const int *count, PairAcc *acc, const PairParams *u,
+        const double *wr, const int close_last)
+{
+    const int wcase = u->s == 2.0 ? 2 : u->s == 1.0 ? 1 : u->s == 0.5 ? 0 : -1;
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+        dpd_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, wcase,
+                              wcase < 0 ? wr + off : NULL);
+        if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_DPD);
+    }
+}
+#endif
 
 /* The pairs of particles [i, ie) of a walk batch (count[p - i] entries each,
  * from entry 0 of near, dd and the noise planes), each particle closed after
@@ -284,7 +311,7 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
      * eight: on the measurement steps of fig01's scene it was 10 % of the run) */
     double wr[PAIR_BATCH + 8];
     const int by_batch = model == MODEL_DPD && general;
-    if (by_batch) batch_random_weights(s, i, ie, dd, near, count, wr);
+    if (by_batch) batch_random_weights(s, i, ie, &dd[0][3], 4, near, count, wr);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le,
                       by_batch ? wr + off : NULL);
@@ -299,19 +326,22 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
  * of particle p. Returns the end particle ie; *np the entries. wide: the
  * AVX-512 candidate pass (range_avx512), compiled in walk_gather_avx512. */
 static inline __attribute__((always_inline))
-int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *near, double (*dd)[4],
-                int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, const int le, const int wide)
+int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *near, double (*dd)[4], double *pl,
+                int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, const int le, const int wide, const int soa)
 {
     int np = 0, ie = i;
     while (ie < i1 && ie - i < PAIR_BATCH && nl->start[ie + 1] - nl->start[ie] <= PAIR_BATCH - np) {
         int c;
 #ifdef DPD_HAVE_X86_SIMD
-        if (wide) c = range_avx512(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np);
+        if (wide) c = range_avx512(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, pl + np,
+                                   id_a + np, id_b + np, soa);
         else
 #endif
-        c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
-        (void)wide;
-        for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
+        {
+            c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
+            for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
+        }
+        (void)wide; (void)pl; (void)soa;
         count[ie - i] = c;
         np += c;
         ie++;
@@ -322,7 +352,11 @@ int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *nea
 #ifdef DPD_HAVE_X86_SIMD
 __attribute__((target("avx512f"))) static int walk_gather_avx512(const System *s, const NeighborList *nl, int i, int i1,
         int *near, double (*dd)[4], int *count, uint32_t *id_a, uint32_t *id_b, int *np_out)
-{ return walk_gather(s, nl, i, i1, near, dd, count, id_a, id_b, np_out, 0, 1); }
+{ return walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, np_out, 0, 1, 0); }
+/* the same into planes, for the AVX-512 evaluator */
+__attribute__((target("avx512f"))) static int walk_gather_avx512_planes(const System *s, const NeighborList *nl, int i,
+        int i1, int *near, double *pl, int *count, uint32_t *id_a, uint32_t *id_b, int *np_out)
+{ return walk_gather(s, nl, i, i1, near, NULL, pl, count, id_a, id_b, np_out, 0, 1, 1); }
 #endif
 
 /* The walk over the particles [i0, i1) of one chunk. The list entries of
@@ -343,11 +377,18 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
     _Static_assert(PAIR_BATCH <= RNG_BATCH, "a batch's noise fits rng_pair_normals' planes");
     int near[PAIR_BATCH + RANGE_SLACK], count[PAIR_BATCH];
     double dd[PAIR_BATCH + RANGE_SLACK][4], noise[4 * RNG_BATCH];   /* variate v of entry q at noise[v * RNG_BATCH + q] */
-    uint32_t id_a[PAIR_BATCH], id_b[PAIR_BATCH];
+    uint32_t id_a[PAIR_BATCH + RANGE_SLACK], id_b[PAIR_BATCH + RANGE_SLACK];
 #ifdef DPD_HAVE_X86_SIMD
     const int wide = !le && s->box.dim == 3 && simd_level() == SIMD_AVX512;
 #endif
     const int general = model == MODEL_DPD && scene_weights_general(s);
+    /* standard DPD of one type pair in 3D, no shear, no virial: the AVX-512
+     * evaluator (lists longer than a batch go through the scalar one) */
+    const PairParams *lanes = NULL;
+#ifdef DPD_HAVE_X86_SIMD
+    double pl[4 * PAIR_PLANE], wr[PAIR_BATCH + 8];
+    if (model == MODEL_DPD && wide && !pv && s->ntypes == 1) lanes = &s->pair[0][0];
+#endif
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
         if (nl->start[i + 1] - nl->start[i] > PAIR_BATCH) {   /* a long list: batches of its own */
@@ -364,10 +405,18 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         }
         int np, ie;
 #ifdef DPD_HAVE_X86_SIMD
+        if (lanes) {   /* the one-type evaluator: separations in planes */
+            ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
+            rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+            if (general) batch_random_weights(s, i, ie, pl + 3 * PAIR_PLANE, 1, near, count, wr);
+            dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr, 1);
+            i = ie;
+            continue;
+        }
         if (wide) ie = walk_gather_avx512(s, nl, i, i1, near, dd, count, id_a, id_b, &np);
         else
 #endif
-        ie = walk_gather(s, nl, i, i1, near, dd, count, id_a, id_b, &np, le, 0);
+        ie = walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, &np, le, 0, 0);
         rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
         pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1, general);
         i = ie;

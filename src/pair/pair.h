@@ -104,6 +104,10 @@ static inline void force_claim(double *f, double *t, unsigned char *touched, int
 }
 
 #define PAIR_BATCH 256
+/* room past a batch's last entry that the AVX-512 passes may write */
+#define RANGE_SLACK 16
+/* a walk batch's separations as planes: x, y, z, r^2, PAIR_PLANE apart */
+#define PAIR_PLANE (PAIR_BATCH + RANGE_SLACK)
 /* Pass 1 of the walk, branch free: the list entries k0..k1 of particle i that
  * lie inside the largest cutoff, with their minimum-image separation and r^2
  * (dd[q] = dx, dy, dz, r2). Returns their number. le: as box_min_image_le. */

@@ -6,6 +6,7 @@
 
 #include "pair.h"
 #include "random.h"
+#include "simd.h"
 
 /* The three force magnitudes along e_ij of one pair from its weights w_C and
  * w_R. theta ~ N(0,1); the noise is discretised as theta / sqrt(dt). */
@@ -95,5 +96,66 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], co
     }
     for (int a = 0; a < 3; a++) acc->fi[a] = fi[a];
 }
+
+
+#ifdef DPD_HAVE_X86_SIMD
+#include <immintrin.h>
+/* dpd_pair_batch for one type pair (u) without shear or virial, the per-pair
+ * arithmetic eight pairs at a time on AVX-512: the same IEEE operations in
+ * the same order (no contraction), so the same F_ij bits; the sums into
+ * acc->fi and -F_ij into f_j are then added pair by pair in list order, as
+ * dpd_pair_batch adds them. wcase: w_R from w_C (2: s = 2, 1: s = 1,
+ * 0: s = 0.5, -1: the batch's wr, weight_general). pl: the separations x,
+ * y, z and r^2 of the pairs as planes, PAIR_PLANE apart (forces.c range_avx512). */
+static inline __attribute__((target("avx512f"), always_inline))
+void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *theta,
+                           int m, PairAcc *acc, const PairParams *u, const int wcase, const double *wr_batch)
+{
+    const double *v = s->v_pred;
+    const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
+    const __m512d rc = _mm512_set1_pd(u->rc), rc2 = _mm512_set1_pd(u->rc2), one = _mm512_set1_pd(1.0);
+    const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
+    const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
+    const __m512d isdt = _mm512_set1_pd(acc->inv_sqrt_dt);
+    double fi0 = acc->fi[0], fi1 = acc->fi[1], fi2 = acc->fi[2];
+    for (int q0 = 0; q0 < m; q0 += 8) {
+        const int cnt = m - q0 < 8 ? m - q0 : 8;
+        const __mmask8 live = (__mmask8)((1u << cnt) - 1);
+        const __m512d dx = _mm512_maskz_loadu_pd(live, pl + q0), dy = _mm512_maskz_loadu_pd(live, pl + PAIR_PLANE + q0);
+        const __m512d dz = _mm512_maskz_loadu_pd(live, pl + 2 * PAIR_PLANE + q0);
+        const __m512d r2 = _mm512_maskz_loadu_pd(live, pl + 3 * PAIR_PLANE + q0);
+        /* pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts */
+        const __mmask8 act = live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
+        const __m256i j = _mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)live, near + q0));
+        const __m256i j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
+        const __m512d z0 = _mm512_setzero_pd();
+        const __m512d dvx = _mm512_sub_pd(vix, _mm512_mask_i32gather_pd(z0, live, j3, v, 8));
+        const __m512d dvy = _mm512_sub_pd(viy, _mm512_mask_i32gather_pd(z0, live, j3, v + 1, 8));
+        const __m512d dvz = _mm512_sub_pd(viz, _mm512_mask_i32gather_pd(z0, live, j3, v + 2, 8));
+        const __m512d r = _mm512_sqrt_pd(r2), inv_r = _mm512_div_pd(one, r);
+        const __m512d ex = _mm512_mul_pd(dx, inv_r), ey = _mm512_mul_pd(dy, inv_r), ez = _mm512_mul_pd(dz, inv_r);
+        const __m512d edv = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, dvx), _mm512_mul_pd(ey, dvy)), _mm512_mul_pd(ez, dvz));
+        const __m512d wc = _mm512_sub_pd(one, _mm512_div_pd(r, rc));                      /* w_C, eq. 5 */
+        const __m512d wr = wcase == 2 ? wc : wcase == 1 ? _mm512_sqrt_pd(wc)              /* w_R, eq. 7 */
+                         : wcase == 0 ? _mm512_sqrt_pd(_mm512_sqrt_pd(wc)) : _mm512_maskz_loadu_pd(live, wr_batch + q0);
+        const __m512d fc = _mm512_mul_pd(a, wc);                                           /* eq. 2 */
+        const __m512d fd = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(ngamma, wr), wr), edv); /* eq. 3 */
+        const __m512d fr = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(sigma, wr), _mm512_maskz_loadu_pd(live, theta + q0)), isdt); /* eq. 4 */
+        const __m512d ft = _mm512_add_pd(_mm512_add_pd(fc, fd), fr);
+        double fx[8], fy[8], fz[8];
+        _mm512_storeu_pd(fx, _mm512_mul_pd(ft, ex));
+        _mm512_storeu_pd(fy, _mm512_mul_pd(ft, ey));
+        _mm512_storeu_pd(fz, _mm512_mul_pd(ft, ez));
+        for (int l = 0; l < cnt; l++) {
+            if (!(act >> l & 1)) continue;
+            const int jj = near[q0 + l];
+            fi0 += fx[l]; fi1 += fy[l]; fi2 += fz[l];
+            force_claim(acc->f, NULL, acc->touched, jj, acc->n);
+            acc->f[3 * jj] -= fx[l]; acc->f[3 * jj + 1] -= fy[l]; acc->f[3 * jj + 2] -= fz[l];
+        }
+    }
+    acc->fi[0] = fi0; acc->fi[1] = fi1; acc->fi[2] = fi2;
+}
+#endif
 
 #endif
