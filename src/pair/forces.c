@@ -271,39 +271,52 @@ __attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s,
 }
 #endif
 
+/* Pan 2008 without the virial, lane by lane (pair_pan2008.h, the same bits
+ * as pair by pair): the pairs of particles [i, ie) of a walk batch, entry q's
+ * separation c at sep[q sq + c sc] (quads: sq = 4, sc = 1; planes: sq = 1,
+ * sc = PAIR_PLANE), its noise in rng_pair_normals' planes. One type, not a
+ * general power: its parameters once, not per pair; and when every pair of
+ * the batch interacts (one cutoff, none closer than PAIR_R_EPSILON), the
+ * lanes read the separations and the noise where the walk left them (direct:
+ * entry q of the batch is lane q). */
+static inline __attribute__((always_inline))
+void pan_evaluate_lanes(const System *s, int i, int ie, const int *near, const double *sep, const int sq, const int sc,
+                        const double *noise, const int *count, PairAcc *acc, const int le, const int close_last)
+{
+    PanLanes L;
+    int m = 0, c[PAIR_BATCH];
+    const PairParams *u = s->ntypes == 1 && !weight_general(s->pair[0][0].s) ? &s->pair[0][0] : NULL;
+    int total = 0, direct = u != NULL;
+    for (int p = i; p < ie; p++) total += count[p - i];
+    for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, sep[q * sq + 3 * sc]);
+    L.dd = direct && sq == 4 ? (const double (*)[4])sep : NULL;
+    L.pl = direct && sq == 1 ? sep : NULL;
+    L.noise = noise;
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+        const double *sp = sep + (size_t)off * sq;
+        c[p - i] = direct ? pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 1, 1)
+                 : u ? pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 1, 0)
+                     : pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 0, 0);
+    }
+    const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
+    lanes(&L, m, acc->inv_sqrt_dt, u);
+    for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
+        pan_lanes_apply(&L, k, c[p - i], acc);
+        if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_PAN2008);
+    }
+}
+
 /* The pairs of particles [i, ie) of a walk batch (count[p - i] entries each,
  * from entry 0 of near, dd and the noise planes), each particle closed after
  * its pairs (the last one only if close_last: a long list comes in several
- * batches). Pan 2008 without the virial: lane by lane (pair_pan2008.h), the
- * same bits as pair by pair. */
+ * batches). Pan 2008 without the virial: lane by lane (pan_evaluate_lanes). */
 static inline __attribute__((always_inline))
 void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)[4], const double *noise,
                          const int *count, PairAcc *acc, PairVirial *pv, const int model, const int le,
                          const int close_last, const int general)
 {
     if (model == MODEL_PAN2008 && !pv) {
-        PanLanes L;
-        int m = 0, c[PAIR_BATCH];
-        /* one type, not a general power: its parameters once, not per pair; and
-         * when every pair of the batch interacts (one cutoff, none closer than
-         * PAIR_R_EPSILON), the lanes read the separations and the noise where
-         * the walk left them (direct: entry q of the batch is lane q) */
-        const PairParams *u = s->ntypes == 1 && !weight_general(s->pair[0][0].s) ? &s->pair[0][0] : NULL;
-        int total = 0, direct = u != NULL;
-        for (int p = i; p < ie; p++) total += count[p - i];
-        for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, dd[q][3]);
-        L.dd = direct ? (const double (*)[4])dd : NULL;
-        L.noise = noise;
-        for (int p = i, off = 0; p < ie; off += count[p - i], p++)
-            c[p - i] = direct ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 1)
-                     : u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 0)
-                         : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0, 0);
-        const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
-        lanes(&L, m, acc->inv_sqrt_dt, u);
-        for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
-            pan_lanes_apply(&L, k, c[p - i], acc);
-            if (p + 1 < ie || close_last) pair_close(p, acc, model);
-        }
+        pan_evaluate_lanes(s, i, ie, near, &dd[0][0], 4, 1, noise, count, acc, le, close_last);
         return;
     }
     /* w_R by batch on every step (weight_pow one at a time has the lanes'
@@ -388,6 +401,8 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
 #ifdef DPD_HAVE_X86_SIMD
     double pl[4 * PAIR_PLANE], wr[PAIR_BATCH + 8];
     if (model == MODEL_DPD && wide && !pv && s->ntypes == 1) lanes = &s->pair[0][0];
+    /* Pan 2008 of one type without the virial: the lanes read the planes in place */
+    const int pan_planes = model == MODEL_PAN2008 && wide && !pv && s->ntypes == 1 && !weight_general(s->pair[0][0].s);
 #endif
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
@@ -410,6 +425,13 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
             if (general) batch_random_weights(s, i, ie, pl + 3 * PAIR_PLANE, 1, near, count, wr);
             dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr, 1);
+            i = ie;
+            continue;
+        }
+        if (pan_planes) {
+            ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
+            rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+            pan_evaluate_lanes(s, i, ie, near, pl, 1, PAIR_PLANE, noise, count, acc, le, 1);
             i = ie;
             continue;
         }

@@ -186,7 +186,9 @@ typedef struct {
     double a[PAIR_BATCH], gamma[PAIR_BATCH], sigma[PAIR_BATCH], gshear[PAIR_BATCH], sshear[PAIR_BATCH];
     double F[3][PAIR_BATCH], tau[3][PAIR_BATCH];
     int j[PAIR_BATCH];
-    const double (*dd)[4], *noise;   /* direct (dd != NULL): the batch's separations and noise planes, read in place */
+    /* direct: the batch's separations (dd: quads; pl: planes, PAIR_PLANE apart)
+     * and noise planes, read in place */
+    const double (*dd)[4], *pl, *noise;
 } PanLanes;
 
 /* Pass 2: eqs 13-15 and eq. 1 as pan_pair_force (F == NULL), every pair at once;
@@ -196,9 +198,9 @@ typedef struct {
  * lets this loop vectorise; IEEE sqrt gives the same bits either way. */
 static inline __attribute__((always_inline))
 void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairParams *u, const int uniform,
-                    const int direct)
+                    const int direct)   /* 0: copied into L, 1: L->dd, 2: L->pl */
 {
-    const double (*dd)[4] = L->dd;
+    const double (*dd)[4] = L->dd, *pl = L->pl;
     const double *nz = L->noise;
     const double u_rc = uniform ? u->rc : 0.0, u_a = uniform ? u->a : 0.0, u_gamma = uniform ? u->gamma : 0.0;
     const double u_sigma = uniform ? u->sigma : 0.0, u_gs = uniform ? u->gamma_shear : 0.0;
@@ -206,9 +208,10 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
     #pragma omp simd
     for (int q = 0; q < m; q++) {
         /* pan_pair_geometry: e = r_ij / r, w_C = 1 - r/rc, f = random_weight(w_C, s) */
-        const double d0 = direct ? dd[q][0] : L->d[0][q], d1 = direct ? dd[q][1] : L->d[1][q];
-        const double d2 = direct ? dd[q][2] : L->d[2][q];
-        const double r = sqrt(direct ? dd[q][3] : L->r2[q]), inv_r = 1.0 / r;
+        const double d0 = direct == 2 ? pl[q] : direct ? dd[q][0] : L->d[0][q];
+        const double d1 = direct == 2 ? pl[PAIR_PLANE + q] : direct ? dd[q][1] : L->d[1][q];
+        const double d2 = direct == 2 ? pl[2 * PAIR_PLANE + q] : direct ? dd[q][2] : L->d[2][q];
+        const double r = sqrt(direct == 2 ? pl[3 * PAIR_PLANE + q] : direct ? dd[q][3] : L->r2[q]), inv_r = 1.0 / r;
         const double e0 = d0 * inv_r, e1 = d1 * inv_r, e2 = d2 * inv_r;
         const double wc = 1.0 - r / (uniform ? u_rc : L->rc[q]);
         const double sq = sqrt(wc), sq2 = sqrt(sq), fp = uniform ? 0.0 : L->f_pow[q];   /* all formed: no branch in the loop */
@@ -253,18 +256,22 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
 static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt,
                                                                   const PairParams *u)
 {
-    if (u && L->dd) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 1);
+    if (u && L->pl) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 2);
+    else if (u && L->dd) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 1);
     else if (u) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 0);
     else pan_lanes_loop(L, m, inv_sqrt_dt, NULL, 0, 0);
 }
 
-/* Pass 1 for particle i's entries [0, m0) (near, dd; noise: rng_pair_normals'
+/* Pass 1 for particle i's entries [0, m0) (near; sep: the separation c of
+ * entry q at sep[q sq + c sc], quads or planes; noise: rng_pair_normals'
  * planes from entry 0), appended to L at *m. Returns the pairs added. direct:
  * every entry interacts (the caller checked), and pass 2 reads r^2, d and the
- * noise from the batch's own arrays (L->dd, L->noise), so they are not copied. */
+ * noise from the batch's own arrays (L->dd or L->pl, L->noise), so they are
+ * not copied. */
 static inline __attribute__((always_inline))
-int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
-                   PanLanes *restrict L, int *m, const int le, const int uniform, const int direct)
+int pan_lanes_fill(const System *s, int i, const int *near, const double *sep, const int sq, const int sc,
+                   const double *noise, int m0, PanLanes *restrict L, int *m, const int le, const int uniform,
+                   const int direct)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
@@ -272,7 +279,7 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
     for (int q = 0; q < m0; q++) {
         const int j = near[q];
         const PairParams *p = uniform ? &s->pair[0][0] : &s->pair[ti][s->type[j]];
-        const double r2 = dd[q][3];
+        const double r2 = sep[q * sq + 3 * sc];
         if (!direct && !pair_interacts(p, r2)) continue;
         const int k = (*m)++;
         if (!direct) L->r2[k] = r2;
@@ -289,7 +296,7 @@ int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], con
         if (le) dvx -= pair_image_vx(s, i, j, le);   /* relative to j's Lees-Edwards image */
         L->dv[0][k] = dvx; L->dv[1][k] = v[3 * i + 1] - v[3 * j + 1]; L->dv[2][k] = v[3 * i + 2] - v[3 * j + 2];
         for (int a = 0; a < 3; a++) {
-            if (!direct) L->d[a][k] = dd[q][a];
+            if (!direct) L->d[a][k] = sep[q * sq + a * sc];
             L->ws[a][k] = w[3 * i + a] + w[3 * j + a];
             if (!direct) L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
         }
