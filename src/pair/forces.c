@@ -272,32 +272,28 @@ __attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s,
 #endif
 
 /* Pan 2008 without the virial, lane by lane (pair_pan2008.h, the same bits
- * as pair by pair): the pairs of particles [i, ie) of a walk batch, entry q's
- * separation c at sep[q sq + c sc] (quads: sq = 4, sc = 1; planes: sq = 1,
- * sc = PAIR_PLANE), its noise in rng_pair_normals' planes. One type, not a
+ * as pair by pair): the pairs of particles [i, ie) of a walk batch, with
+ * their noise in rng_pair_normals' planes. One type, not a
  * general power: its parameters once, not per pair; and when every pair of
  * the batch interacts (one cutoff, none closer than PAIR_R_EPSILON), the
  * lanes read the separations and the noise where the walk left them (direct:
  * entry q of the batch is lane q). */
 static inline __attribute__((always_inline))
-void pan_evaluate_lanes(const System *s, int i, int ie, const int *near, const double *sep, const int sq, const int sc,
-                        const double *noise, const int *count, PairAcc *acc, const int le, const int close_last)
+void pan_evaluate_lanes(const System *s, int i, int ie, int *near, double (*dd)[4], const double *noise,
+                        const int *count, PairAcc *acc, const int le, const int close_last)
 {
     PanLanes L;
     int m = 0, c[PAIR_BATCH];
     const PairParams *u = s->ntypes == 1 && !weight_general(s->pair[0][0].s) ? &s->pair[0][0] : NULL;
     int total = 0, direct = u != NULL;
     for (int p = i; p < ie; p++) total += count[p - i];
-    for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, sep[q * sq + 3 * sc]);
-    L.dd = direct && sq == 4 ? (const double (*)[4])sep : NULL;
-    L.pl = direct && sq == 1 ? sep : NULL;
+    for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, dd[q][3]);
+    L.dd = direct ? (const double (*)[4])dd : NULL;
     L.noise = noise;
-    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-        const double *sp = sep + (size_t)off * sq;
-        c[p - i] = direct ? pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 1, 1)
-                 : u ? pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 1, 0)
-                     : pan_lanes_fill(s, p, near + off, sp, sq, sc, noise + off, count[p - i], &L, &m, le, 0, 0);
-    }
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++)
+        c[p - i] = direct ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 1)
+                 : u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 0)
+                     : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0, 0);
     const PanLanesFn lanes = SIMD_PICK(pan_lanes_portable, pan_lanes_avx2, pan_lanes_avx512);
     lanes(&L, m, acc->inv_sqrt_dt, u);
     for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
@@ -305,6 +301,22 @@ void pan_evaluate_lanes(const System *s, int i, int ie, const int *near, const d
         if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_PAN2008);
     }
 }
+
+#ifdef DPD_HAVE_X86_SIMD
+/* The Pan 2008 pairs of a walk batch [i, ie) on AVX-512 (pan_pair_lanes_avx512,
+ * the same bits as the lanes): one type whose weight is not a general power,
+ * no shear, no virial; entry q's noise at noise[v * RNG_BATCH + q]. */
+__attribute__((target("avx512f"))) static void pan_batch_avx512(const System *s, int i, int ie, const int *near,
+        const double *pl, const double *noise, const int *count, PairAcc *acc)
+{
+    const PairParams *u = &s->pair[0][0];
+    const int mode = pan_weight_mode(u);
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+        pan_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, mode);
+        pair_close(p, acc, MODEL_PAN2008);
+    }
+}
+#endif
 
 /* The pairs of particles [i, ie) of a walk batch (count[p - i] entries each,
  * from entry 0 of near, dd and the noise planes), each particle closed after
@@ -316,7 +328,7 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
                          const int close_last, const int general)
 {
     if (model == MODEL_PAN2008 && !pv) {
-        pan_evaluate_lanes(s, i, ie, near, &dd[0][0], 4, 1, noise, count, acc, le, close_last);
+        pan_evaluate_lanes(s, i, ie, near, dd, noise, count, acc, le, close_last);
         return;
     }
     /* w_R by batch on every step (weight_pow one at a time has the lanes'
@@ -431,7 +443,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         if (pan_planes) {
             ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
             rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
-            pan_evaluate_lanes(s, i, ie, near, pl, 1, PAIR_PLANE, noise, count, acc, le, 1);
+            pan_batch_avx512(s, i, ie, near, pl, noise, count, acc);
             i = ie;
             continue;
         }

@@ -186,9 +186,7 @@ typedef struct {
     double a[PAIR_BATCH], gamma[PAIR_BATCH], sigma[PAIR_BATCH], gshear[PAIR_BATCH], sshear[PAIR_BATCH];
     double F[3][PAIR_BATCH], tau[3][PAIR_BATCH];
     int j[PAIR_BATCH];
-    /* direct: the batch's separations (dd: quads; pl: planes, PAIR_PLANE apart)
-     * and noise planes, read in place */
-    const double (*dd)[4], *pl, *noise;
+    const double (*dd)[4], *noise;   /* direct (dd != NULL): the batch's separations and noise planes, read in place */
 } PanLanes;
 
 /* Pass 2: eqs 13-15 and eq. 1 as pan_pair_force (F == NULL), every pair at once;
@@ -198,9 +196,9 @@ typedef struct {
  * lets this loop vectorise; IEEE sqrt gives the same bits either way. */
 static inline __attribute__((always_inline))
 void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairParams *u, const int uniform,
-                    const int direct)   /* 0: copied into L, 1: L->dd, 2: L->pl */
+                    const int direct)
 {
-    const double (*dd)[4] = L->dd, *pl = L->pl;
+    const double (*dd)[4] = L->dd;
     const double *nz = L->noise;
     const double u_rc = uniform ? u->rc : 0.0, u_a = uniform ? u->a : 0.0, u_gamma = uniform ? u->gamma : 0.0;
     const double u_sigma = uniform ? u->sigma : 0.0, u_gs = uniform ? u->gamma_shear : 0.0;
@@ -208,10 +206,9 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
     #pragma omp simd
     for (int q = 0; q < m; q++) {
         /* pan_pair_geometry: e = r_ij / r, w_C = 1 - r/rc, f = random_weight(w_C, s) */
-        const double d0 = direct == 2 ? pl[q] : direct ? dd[q][0] : L->d[0][q];
-        const double d1 = direct == 2 ? pl[PAIR_PLANE + q] : direct ? dd[q][1] : L->d[1][q];
-        const double d2 = direct == 2 ? pl[2 * PAIR_PLANE + q] : direct ? dd[q][2] : L->d[2][q];
-        const double r = sqrt(direct == 2 ? pl[3 * PAIR_PLANE + q] : direct ? dd[q][3] : L->r2[q]), inv_r = 1.0 / r;
+        const double d0 = direct ? dd[q][0] : L->d[0][q], d1 = direct ? dd[q][1] : L->d[1][q];
+        const double d2 = direct ? dd[q][2] : L->d[2][q];
+        const double r = sqrt(direct ? dd[q][3] : L->r2[q]), inv_r = 1.0 / r;
         const double e0 = d0 * inv_r, e1 = d1 * inv_r, e2 = d2 * inv_r;
         const double wc = 1.0 - r / (uniform ? u_rc : L->rc[q]);
         const double sq = sqrt(wc), sq2 = sqrt(sq), fp = uniform ? 0.0 : L->f_pow[q];   /* all formed: no branch in the loop */
@@ -256,22 +253,18 @@ void pan_lanes_loop(PanLanes *restrict L, int m, double inv_sqrt_dt, const PairP
 static inline __attribute__((always_inline)) void pan_lanes_force(PanLanes *restrict L, int m, double inv_sqrt_dt,
                                                                   const PairParams *u)
 {
-    if (u && L->pl) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 2);
-    else if (u && L->dd) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 1);
+    if (u && L->dd) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 1);
     else if (u) pan_lanes_loop(L, m, inv_sqrt_dt, u, 1, 0);
     else pan_lanes_loop(L, m, inv_sqrt_dt, NULL, 0, 0);
 }
 
-/* Pass 1 for particle i's entries [0, m0) (near; sep: the separation c of
- * entry q at sep[q sq + c sc], quads or planes; noise: rng_pair_normals'
+/* Pass 1 for particle i's entries [0, m0) (near, dd; noise: rng_pair_normals'
  * planes from entry 0), appended to L at *m. Returns the pairs added. direct:
  * every entry interacts (the caller checked), and pass 2 reads r^2, d and the
- * noise from the batch's own arrays (L->dd or L->pl, L->noise), so they are
- * not copied. */
+ * noise from the batch's own arrays (L->dd, L->noise), so they are not copied. */
 static inline __attribute__((always_inline))
-int pan_lanes_fill(const System *s, int i, const int *near, const double *sep, const int sq, const int sc,
-                   const double *noise, int m0, PanLanes *restrict L, int *m, const int le, const int uniform,
-                   const int direct)
+int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
+                   PanLanes *restrict L, int *m, const int le, const int uniform, const int direct)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
@@ -279,7 +272,7 @@ int pan_lanes_fill(const System *s, int i, const int *near, const double *sep, c
     for (int q = 0; q < m0; q++) {
         const int j = near[q];
         const PairParams *p = uniform ? &s->pair[0][0] : &s->pair[ti][s->type[j]];
-        const double r2 = sep[q * sq + 3 * sc];
+        const double r2 = dd[q][3];
         if (!direct && !pair_interacts(p, r2)) continue;
         const int k = (*m)++;
         if (!direct) L->r2[k] = r2;
@@ -296,7 +289,7 @@ int pan_lanes_fill(const System *s, int i, const int *near, const double *sep, c
         if (le) dvx -= pair_image_vx(s, i, j, le);   /* relative to j's Lees-Edwards image */
         L->dv[0][k] = dvx; L->dv[1][k] = v[3 * i + 1] - v[3 * j + 1]; L->dv[2][k] = v[3 * i + 2] - v[3 * j + 2];
         for (int a = 0; a < 3; a++) {
-            if (!direct) L->d[a][k] = sep[q * sq + a * sc];
+            if (!direct) L->d[a][k] = dd[q][a];
             L->ws[a][k] = w[3 * i + a] + w[3 * j + a];
             if (!direct) L->xi[a][k] = noise[(a + 1) * RNG_BATCH + q];
         }
@@ -325,5 +318,107 @@ void pan_lanes_apply(const PanLanes *restrict L, int k0, int c, PairAcc *acc)
     }
     for (int a = 0; a < 3; a++) { acc->fi[a] = fi[a]; acc->ti[a] = ti[a]; }
 }
+
+
+#ifdef DPD_HAVE_X86_SIMD
+#include <immintrin.h>
+/* -x, as C's unary minus (a flip of the sign bit: 0 - x would give +0 for +0) */
+static inline __attribute__((target("avx512f"), always_inline)) __m512d neg(__m512d x)
+{
+    return _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(x), _mm512_set1_epi64((long long)0x8000000000000000ULL)));
+}
+/* Passes 1-3 for one type pair u whose weight is not a general power, no
+ * shear, no virial: particle i's m pairs (near; pl: separations x, y, z, r^2
+ * as planes, PAIR_PLANE apart; nz: rng_pair_normals' planes from entry 0)
+ * eight at a time on AVX-512, with pan_lanes_loop's operations in its order
+ * (no contraction: the same bits), v_j and Omega_j gathered, then added to i
+ * and to j pair by pair in list order as pan_lanes_apply adds them. */
+static inline __attribute__((target("avx512f"), always_inline))
+void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *nz, int m,
+                           PairAcc *acc, const PairParams *u, const int mode)
+{
+    const double *v = s->v_pred, *w = s->omega_pred;
+    const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
+    const __m512d wix = _mm512_set1_pd(w[3 * i]), wiy = _mm512_set1_pd(w[3 * i + 1]), wiz = _mm512_set1_pd(w[3 * i + 2]);
+    const __m512d one = _mm512_set1_pd(1.0), half = _mm512_set1_pd(0.5), z0 = _mm512_setzero_pd();
+    const __m512d rc = _mm512_set1_pd(u->rc), rc2 = _mm512_set1_pd(u->rc2);
+    const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
+    const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
+    const __m512d gshear = _mm512_set1_pd(u->gamma_shear), sshear = _mm512_set1_pd(u->sigma_shear);
+    const __m512d isdt = _mm512_set1_pd(acc->inv_sqrt_dt);
+    const int shear = u->gamma_shear != 0.0;
+    double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]}, ti[3] = {acc->ti[0], acc->ti[1], acc->ti[2]};
+    for (int q0 = 0; q0 < m; q0 += 8) {
+        const int cnt = m - q0 < 8 ? m - q0 : 8;
+        const __mmask8 live = (__mmask8)((1u << cnt) - 1);
+        const __m512d d0 = _mm512_maskz_loadu_pd(live, pl + q0), d1 = _mm512_maskz_loadu_pd(live, pl + PAIR_PLANE + q0);
+        const __m512d d2 = _mm512_maskz_loadu_pd(live, pl + 2 * PAIR_PLANE + q0);
+        const __m512d r2 = _mm512_maskz_loadu_pd(live, pl + 3 * PAIR_PLANE + q0);
+        const __mmask8 act = live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
+        const __m256i j3 = _mm256_mullo_epi32(_mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)live, near + q0)),
+                                              _mm256_set1_epi32(3));
+        /* pan_pair_geometry */
+        const __m512d r = _mm512_sqrt_pd(r2), inv_r = _mm512_div_pd(one, r);
+        const __m512d e0 = _mm512_mul_pd(d0, inv_r), e1 = _mm512_mul_pd(d1, inv_r), e2 = _mm512_mul_pd(d2, inv_r);
+        const __m512d wc = _mm512_sub_pd(one, _mm512_div_pd(r, rc));
+        const __m512d f = mode == 0 ? wc : mode == 1 ? _mm512_sqrt_pd(wc) : _mm512_sqrt_pd(_mm512_sqrt_pd(wc));
+        /* pan_lanes_fill: v_ij and Omega_i + Omega_j */
+        const __m512d v0 = _mm512_sub_pd(vix, _mm512_mask_i32gather_pd(z0, live, j3, v, 8));
+        const __m512d v1 = _mm512_sub_pd(viy, _mm512_mask_i32gather_pd(z0, live, j3, v + 1, 8));
+        const __m512d v2 = _mm512_sub_pd(viz, _mm512_mask_i32gather_pd(z0, live, j3, v + 2, 8));
+        const __m512d edv = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(e0, v0), _mm512_mul_pd(e1, v1)), _mm512_mul_pd(e2, v2));
+        const __m512d fc = _mm512_mul_pd(a, wc);                                                  /* eq. 7 */
+        const __m512d fdc = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(ngamma, f), f), edv);         /* eq. 13, central */
+        const __m512d theta = _mm512_maskz_loadu_pd(live, nz + q0);
+        const __m512d frc = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(sigma, f), theta), isdt);    /* eq. 15, central */
+        const __m512d ft = _mm512_add_pd(_mm512_add_pd(fc, fdc), frc);
+        double F[3][8], tau[3][8];
+        __m512d F0 = _mm512_mul_pd(ft, e0), F1 = _mm512_mul_pd(ft, e1), F2 = _mm512_mul_pd(ft, e2);
+        __m512d T0 = z0, T1 = z0, T2 = z0;
+        if (shear) {
+            const __m512d w0 = _mm512_add_pd(wix, _mm512_mask_i32gather_pd(z0, live, j3, w, 8));
+            const __m512d w1 = _mm512_add_pd(wiy, _mm512_mask_i32gather_pd(z0, live, j3, w + 1, 8));
+            const __m512d w2 = _mm512_add_pd(wiz, _mm512_mask_i32gather_pd(z0, live, j3, w + 2, 8));
+            const __m512d h0 = _mm512_mul_pd(half, d0), h1 = _mm512_mul_pd(half, d1), h2 = _mm512_mul_pd(half, d2);
+            /* (r_ij / 2) x (Omega_i + Omega_j) */
+            const __m512d o0 = _mm512_sub_pd(_mm512_mul_pd(h1, w2), _mm512_mul_pd(h2, w1));
+            const __m512d o1 = _mm512_sub_pd(_mm512_mul_pd(h2, w0), _mm512_mul_pd(h0, w2));
+            const __m512d o2 = _mm512_sub_pd(_mm512_mul_pd(h0, w1), _mm512_mul_pd(h1, w0));
+            const __m512d ngs = neg(_mm512_mul_pd(gshear, _mm512_mul_pd(f, f)));   /* -gs */
+            const __m512d x0 = _mm512_maskz_loadu_pd(live, nz + RNG_BATCH + q0);
+            const __m512d x1 = _mm512_maskz_loadu_pd(live, nz + 2 * RNG_BATCH + q0);
+            const __m512d x2 = _mm512_maskz_loadu_pd(live, nz + 3 * RNG_BATCH + q0);
+            /* xi x e */
+            const __m512d xe0 = _mm512_sub_pd(_mm512_mul_pd(x1, e2), _mm512_mul_pd(x2, e1));
+            const __m512d xe1 = _mm512_sub_pd(_mm512_mul_pd(x2, e0), _mm512_mul_pd(x0, e2));
+            const __m512d xe2 = _mm512_sub_pd(_mm512_mul_pd(x0, e1), _mm512_mul_pd(x1, e0));
+            const __m512d frs = _mm512_mul_pd(_mm512_mul_pd(sshear, f), isdt);
+            /* eqs 13-14 and 15, non-central */
+            const __m512d s0 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v0, _mm512_mul_pd(edv, e0)), o0)), _mm512_mul_pd(frs, xe0));
+            const __m512d s1 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v1, _mm512_mul_pd(edv, e1)), o1)), _mm512_mul_pd(frs, xe1));
+            const __m512d s2 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v2, _mm512_mul_pd(edv, e2)), o2)), _mm512_mul_pd(frs, xe2));
+            /* eq. 1: tau = -(h x F^S) */
+            T0 = neg(_mm512_sub_pd(_mm512_mul_pd(h1, s2), _mm512_mul_pd(h2, s1)));
+            T1 = neg(_mm512_sub_pd(_mm512_mul_pd(h2, s0), _mm512_mul_pd(h0, s2)));
+            T2 = neg(_mm512_sub_pd(_mm512_mul_pd(h0, s1), _mm512_mul_pd(h1, s0)));
+            F0 = _mm512_add_pd(F0, s0); F1 = _mm512_add_pd(F1, s1); F2 = _mm512_add_pd(F2, s2);
+        }
+        _mm512_storeu_pd(F[0], F0); _mm512_storeu_pd(F[1], F1); _mm512_storeu_pd(F[2], F2);
+        _mm512_storeu_pd(tau[0], T0); _mm512_storeu_pd(tau[1], T1); _mm512_storeu_pd(tau[2], T2);
+        for (int l = 0; l < cnt; l++) {
+            if (!(act >> l & 1)) continue;
+            const int j = near[q0 + l];
+            force_claim(acc->f, acc->tq, acc->touched, j, acc->n);
+            for (int c = 0; c < 3; c++) {
+                fi[c] += F[c][l];
+                acc->f[3 * j + c] -= F[c][l];
+                ti[c] += tau[c][l];
+                acc->tq[3 * j + c] += tau[c][l];
+            }
+        }
+    }
+    for (int c = 0; c < 3; c++) { acc->fi[c] = fi[c]; acc->ti[c] = ti[c]; }
+}
+#endif
 
 #endif
