@@ -627,13 +627,13 @@ static void ik_bins_sum_to_virial(void **state)
  * dense cluster, whose lists are longer than a walk batch; a second type
  * pair with a shorter cutoff than the largest and a general exponent
  * (s = 0.42: w_R by batch, weight_pow_batch), with and without the virial. */
-static void same_forces_at_levels(int two_types, double sexp)
+static void same_forces_at_levels(int two_types, double sexp, double rc)
 {
-    printf("%s, s = %g\n", two_types ? "two types" : "one type", sexp);
+    printf("%s, s = %g, rc = %g\n", two_types ? "two types" : "one type", sexp, rc);
     const int best = simd_cap(-1);
     const double L[3] = {6.0, 6.5, 7.0};
     System s;
-    make_system(&s, 3, 1500, L, 0.0, 25.0, 4.5, sexp, 1.0, 91);
+    make_system(&s, 3, 1500, L, 0.0, 25.0, 4.5, sexp, rc, 91);
     if (two_types) {
         s.ntypes = 2;
         snprintf(s.types[1].name, sizeof s.types[1].name, "u");
@@ -688,13 +688,15 @@ static void same_forces_at_levels(int two_types, double sexp)
 }
 
 /* ... for two types (the scalar evaluator at every level), and for one type
- * with each case of w_R (one type: the AVX-512 evaluator, pair_dpd.h) */
+ * with each case of w_R and rc = 1 and 1.5 (one type: the AVX-512 evaluator,
+ * pair_dpd.h, and its two forms of r / rc) */
 static void levels_same_forces(void **state)
 {
     (void)state;
-    same_forces_at_levels(1, 2.0);
+    same_forces_at_levels(1, 2.0, 1.0);
     const double sexp[] = {2.0, 1.0, 0.5, 0.42};
-    for (int k = 0; k < 4; k++) same_forces_at_levels(0, sexp[k]);
+    for (int k = 0; k < 4; k++) same_forces_at_levels(0, sexp[k], 1.0);   /* r / rc as a product */
+    same_forces_at_levels(0, 0.42, 1.5);                                   /* r / rc divided */
 }
 
 /* ------------------------------------------------------ w^p (weight_pow.h) */

@@ -15,6 +15,7 @@
 #include "system.h"
 #include "neighbor.h"
 #include "weight_pow.h"
+#include "simd.h"
 
 /* Pairs closer than this have no direction: they exert no force (LAMMPS'
  * EPSILON in pair_dpd.cpp). Springs use it too (bonds.c). */
@@ -135,5 +136,19 @@ static inline double pair_image_vx(const System *s, int i, int j, const int le)
 {
     return DPD_MODULES && le ? box_image_vx(&s->box, s->x[3 * i + 1] - s->x[3 * j + 1]) : 0.0;
 }
+
+#ifdef DPD_HAVE_X86_SIMD
+#include <immintrin.h>
+/* r / rc in eight lanes, as the scalar evaluators divide (eq. 5); when rc is a
+ * power of two (rc = 1 in most scenes) the product r * (1 / rc) is the same
+ * number, without the divider, which the lanes' square roots keep busy. */
+static inline __attribute__((target("avx512f"), always_inline))
+__m512d r_over_rc_avx512(__m512d r, double rc)
+{
+    int e;
+    if (frexp(rc, &e) == 0.5) return _mm512_mul_pd(r, _mm512_set1_pd(1.0 / rc));
+    return _mm512_div_pd(r, _mm512_set1_pd(rc));
+}
+#endif
 
 #endif
