@@ -102,5 +102,12 @@ int box_wrap(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
  * integrator picks one per step, not per particle. */
 int box_wrap_shear(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
 int box_wrap_plain(const Box *b, double x[3], int img[3], double *vx1, double *vx2);
+/* x lies in [0, L) along every axis of the box: box_wrap would leave it as
+ * it is (the integrator calls box_wrap only for the few that left) */
+static inline int box_inside(const Box *b, const double x[3])
+{
+    return x[0] >= 0.0 && x[0] < b->L[0] && x[1] >= 0.0 && x[1] < b->L[1]
+        && (b->dim < 3 || (x[2] >= 0.0 && x[2] < b->L[2]));
+}
 
 #endif

@@ -9,6 +9,8 @@
 static inline __attribute__((always_inline)) int predict_loop(System *s, const int walls, const int le)
 {
     const double dt = s->dt, lam = s->lambda;
+    double inv_mass[DPD_MAX_TYPES];   /* per type, not per particle */
+    for (int t = 0; t < s->ntypes; t++) inv_mass[t] = 1.0 / s->types[t].mass;
     int bad = 0;
     #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
@@ -18,13 +20,14 @@ static inline __attribute__((always_inline)) int predict_loop(System *s, const i
         if (walls && t->frozen) {
             for (int d = 0; d < 3; d++) { x[d] += dt * t->wall_velocity[d]; v[d] = vp[d] = t->wall_velocity[d]; }
         } else {
-            const double im = 1.0 / t->mass;
+            const double im = inv_mass[s->type[i]];
             for (int d = 0; d < 3; d++) {
                 x[d] += dt * v[d] + 0.5 * dt * dt * f[d] * im;
                 vp[d] = v[d] + lam * dt * f[d] * im;
                 v[d] += 0.5 * dt * f[d] * im;
             }
         }
+        if (box_inside(&s->box, x)) continue;
         if (le) bad += box_wrap_shear(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
         else bad += box_wrap_plain(&s->box, x, s->img + 3 * i, &v[0], &vp[0]);
     }
@@ -63,12 +66,14 @@ double integrate_predict(System *s)
 static inline __attribute__((always_inline)) int correct_loop(System *s, const int walls)
 {
     const double dt = s->dt;
+    double half_dt_inv_mass[DPD_MAX_TYPES];   /* per type, not per particle */
+    for (int t = 0; t < s->ntypes; t++) half_dt_inv_mass[t] = 0.5 * dt / s->types[t].mass;
     int bad = 0;
     #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int i = 0; i < s->n; i++) {
         const ParticleType *t = &s->types[s->type[i]];
         if (walls && t->frozen) continue;
-        const double h = 0.5 * dt / t->mass;
+        const double h = half_dt_inv_mass[s->type[i]];
         double *v = s->v + 3 * i;
         for (int d = 0; d < 3; d++) v[d] += h * s->f[3 * i + d];
         bad += !isfinite(v[0] + v[1] + v[2]);   /* a nan or inf in any; or an overflow, a blow-up too */
