@@ -496,10 +496,16 @@ static void sum_block(const ForceWork *w, double *f0, const double *rest, int b)
     const size_t k0 = 3 * ((size_t)b << FORCE_BLOCK_SHIFT);
     const size_t k1 = k0 + (3u << FORCE_BLOCK_SHIFT) < stride ? k0 + (3u << FORCE_BLOCK_SHIFT) : stride;
     const int own = w->touched[b];
+    int other[FORCE_CHUNKS], no = 0;   /* the other chunks that wrote to block b, in chunk order */
+    for (int c = 1; c < FORCE_CHUNKS; c++)
+        if (w->touched[(size_t)c * nb + (size_t)b]) other[no++] = c;
+    if (no == 0) {   /* chunk 0's sums alone (most blocks): already in place, or none */
+        if (!own) for (size_t k = k0; k < k1; k++) f0[k] = 0.0;
+        return;
+    }
     for (size_t k = k0; k < k1; k++) {
         double sum = own ? f0[k] : 0.0;
-        for (int c = 1; c < FORCE_CHUNKS; c++)
-            if (w->touched[(size_t)c * nb + (size_t)b]) sum += rest[(size_t)(c - 1) * stride + k];
+        for (int q = 0; q < no; q++) sum += rest[(size_t)(other[q] - 1) * stride + k];
         f0[k] = sum;
     }
 }
