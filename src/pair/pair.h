@@ -141,13 +141,17 @@ static inline double pair_image_vx(const System *s, int i, int j, const int le)
 #include <immintrin.h>
 /* r / rc in eight lanes, as the scalar evaluators divide (eq. 5); when rc is a
  * power of two (rc = 1 in most scenes) the product r * (1 / rc) is the same
- * number, without the divider, which the lanes' square roots keep busy. */
-static inline __attribute__((target("avx512f"), always_inline))
-__m512d r_over_rc_avx512(__m512d r, double rc)
+ * number, without the divider, which the lanes' square roots keep busy.
+ * inv_rc: rc_power_of_two_inverse(rc), formed once. */
+static inline double rc_power_of_two_inverse(double rc)
 {
     int e;
-    if (frexp(rc, &e) == 0.5) return _mm512_mul_pd(r, _mm512_set1_pd(1.0 / rc));
-    return _mm512_div_pd(r, _mm512_set1_pd(rc));
+    return frexp(rc, &e) == 0.5 ? 1.0 / rc : 0.0;
+}
+static inline __attribute__((target("avx512f"), always_inline))
+__m512d r_over_rc_avx512(__m512d r, double rc, double inv_rc)
+{
+    return inv_rc != 0.0 ? _mm512_mul_pd(r, _mm512_set1_pd(inv_rc)) : _mm512_div_pd(r, _mm512_set1_pd(rc));
 }
 #endif
 

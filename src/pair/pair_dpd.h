@@ -113,6 +113,7 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
 {
     const double *v = s->v_pred;
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
+    const double inv_rc = rc_power_of_two_inverse(u->rc);
     const __m512d rc2 = _mm512_set1_pd(u->rc2), one = _mm512_set1_pd(1.0);
     const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
     const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
@@ -135,7 +136,7 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
         const __m512d r = _mm512_sqrt_pd(r2), inv_r = _mm512_div_pd(one, r);
         const __m512d ex = _mm512_mul_pd(dx, inv_r), ey = _mm512_mul_pd(dy, inv_r), ez = _mm512_mul_pd(dz, inv_r);
         const __m512d edv = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ex, dvx), _mm512_mul_pd(ey, dvy)), _mm512_mul_pd(ez, dvz));
-        const __m512d wc = _mm512_sub_pd(one, r_over_rc_avx512(r, u->rc));   /* w_C, eq. 5 */
+        const __m512d wc = _mm512_sub_pd(one, r_over_rc_avx512(r, u->rc, inv_rc));   /* w_C, eq. 5 */
         const __m512d wr = wcase == 2 ? wc : wcase == 1 ? _mm512_sqrt_pd(wc)              /* w_R, eq. 7 */
                          : wcase == 0 ? _mm512_sqrt_pd(_mm512_sqrt_pd(wc)) : _mm512_maskz_loadu_pd(live, wr_batch + q0);
         const __m512d fc = _mm512_mul_pd(a, wc);                                           /* eq. 2 */

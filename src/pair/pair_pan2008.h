@@ -341,6 +341,7 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
     const __m512d wix = _mm512_set1_pd(w[3 * i]), wiy = _mm512_set1_pd(w[3 * i + 1]), wiz = _mm512_set1_pd(w[3 * i + 2]);
     const __m512d one = _mm512_set1_pd(1.0), half = _mm512_set1_pd(0.5), z0 = _mm512_setzero_pd();
+    const double inv_rc = rc_power_of_two_inverse(u->rc);
     const __m512d rc2 = _mm512_set1_pd(u->rc2);
     const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
     const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
@@ -360,7 +361,7 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
         /* pan_pair_geometry */
         const __m512d r = _mm512_sqrt_pd(r2), inv_r = _mm512_div_pd(one, r);
         const __m512d e0 = _mm512_mul_pd(d0, inv_r), e1 = _mm512_mul_pd(d1, inv_r), e2 = _mm512_mul_pd(d2, inv_r);
-        const __m512d wc = _mm512_sub_pd(one, r_over_rc_avx512(r, u->rc));   /* w_C, eq. 5 */
+        const __m512d wc = _mm512_sub_pd(one, r_over_rc_avx512(r, u->rc, inv_rc));   /* w_C, eq. 5 */
         const __m512d f = mode == 0 ? wc : mode == 1 ? _mm512_sqrt_pd(wc) : _mm512_sqrt_pd(_mm512_sqrt_pd(wc));
         /* pan_lanes_fill: v_ij and Omega_i + Omega_j */
         const __m512d v0 = _mm512_sub_pd(vix, _mm512_mask_i32gather_pd(z0, live, j3, v, 8));
