@@ -153,6 +153,12 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
     const __m512i ida = _mm512_set1_epi32((int)s->id[i]);
     const double *x = s->x;
     const Box *b = &s->box;
+    /* i at least `reach` from every face: no candidate is across one (each of
+     * i and j moved less than skin / 2 since the build, which listed them
+     * within rc + skin), so every fold would leave the separations as they are */
+    const double reach = nl->cutoff + nl->skin + 1e-9;
+    int interior = 1;
+    for (int a = 0; a < 3; a++) interior &= x[3 * i + a] >= reach && x[3 * i + a] <= b->L[a] - reach;
     const __m512d xi = _mm512_set1_pd(x[3 * i]), yi = _mm512_set1_pd(x[3 * i + 1]), zi = _mm512_set1_pd(x[3 * i + 2]);
     const __m512d rc2 = _mm512_set1_pd(s->rc_max * s->rc_max);
     /* the transpose of (dx, dy, dz, r2) x 8 into 8 quads: pairs of 128-bit halves */
@@ -169,9 +175,11 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
         __m512d dx = _mm512_sub_pd(xi, _mm512_mask_i32gather_pd(z0, live, j3, x, 8));
         __m512d dy = _mm512_sub_pd(yi, _mm512_mask_i32gather_pd(z0, live, j3, x + 1, 8));
         __m512d dz = _mm512_sub_pd(zi, _mm512_mask_i32gather_pd(z0, live, j3, x + 2, 8));
-        dy = fold_avx512(dy, _mm512_set1_pd(b->half[1]), _mm512_set1_pd(b->L[1]), 0);
-        dx = fold_avx512(dx, _mm512_set1_pd(b->half[0]), _mm512_set1_pd(b->L[0]), 1);
-        dz = fold_avx512(dz, _mm512_set1_pd(b->half[2]), _mm512_set1_pd(b->L[2]), 0);
+        if (!interior) {
+            dy = fold_avx512(dy, _mm512_set1_pd(b->half[1]), _mm512_set1_pd(b->L[1]), 0);
+            dx = fold_avx512(dx, _mm512_set1_pd(b->half[0]), _mm512_set1_pd(b->L[0]), 1);
+            dz = fold_avx512(dz, _mm512_set1_pd(b->half[2]), _mm512_set1_pd(b->L[2]), 0);
+        }
         const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
         const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
         _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
