@@ -171,7 +171,7 @@ static void pair_sequence_theta_then_xi(void **state)
 /* The batch path of the pair driver (rng_pair_normals: Philox lanes, GSL's
  * strip tables read out of GSL) gives what one pair at a time gives, bit for
  * bit: 1 and 4 variates per pair, batches of 1 ... RNG_BATCH pairs, ids in
- * either order, steps above 2^32 (the counter's second word); the Philox lanes
+ * either order (and ordered, rng_pair_normals_ordered), steps above 2^32 (the counter's second word); the Philox lanes
  * equal Random123's philox4x32 on every word. The share of words the ziggurat
  * accepts at once must be that of GSL's tables (about 97 %; 0 if the probing
  * of the tables had failed, which the equality alone would not show since
@@ -198,16 +198,20 @@ static void batch_isa(int cap)
                 words++; fast += rng_ziggurat_fast(w[v][q], &z);
             }
         }
-        for (int nvar = 1; nvar <= 4; nvar += 3) {
+        uint32_t lo[RNG_BATCH], hi[RNG_BATCH];
+        for (int q = 0; q < m; q++) { lo[q] = a[q] < b[q] ? a[q] : b[q]; hi[q] = a[q] < b[q] ? b[q] : a[q]; }
+        for (int k = 0; k < 4; k++) {
+            const int nvar = k < 2 ? 1 : 4, ordered = k % 2;   /* rng_pair_normals_ordered: ids as lo, hi */
             double z[4 * RNG_BATCH];
-            rng_pair_normals(SEED, step, m, a, b, nvar, z);
+            if (ordered) rng_pair_normals_ordered(SEED, step, m, lo, hi, nvar, z);
+            else rng_pair_normals(SEED, step, m, a, b, nvar, z);
             for (int q = 0; q < m; q++) {
                 CounterRng c;
                 rng_pair_start(&c, SEED, step, b[q], a[q]);
                 for (int v = 0; v < nvar; v++) {
                     const double one = rng_counter_normal(&c);
                     CHECK_TRUE(memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) == 0,
-                               "batch variate %d of pair %d (%d per pair) %.17g != %.17g one at a time", v, q, nvar, z[v * RNG_BATCH + q], one);
+                               "batch variate %d of pair %d (%d per pair, ordered %d) %.17g != %.17g one at a time", v, q, nvar, ordered, z[v * RNG_BATCH + q], one);
                 }
             }
         }

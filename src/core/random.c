@@ -142,16 +142,27 @@ static void philox_lanes(int m, uint32_t k0, uint32_t k1, uint32_t c0, uint32_t 
 static once_flag batch_once = ONCE_FLAG_INIT;
 static void batch_init(void);
 
-void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
-                     uint32_t w[4][RNG_BATCH])
+/* ordered: id_a[q] <= id_b[q] already (the pair driver's candidate pass) */
+static void pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                        const int ordered, uint32_t w[4][RNG_BATCH])
 {
     call_once(&batch_once, batch_init);
+    if (ordered) {
+        philox_lanes(m, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32), id_a, id_b, w);
+        return;
+    }
     uint32_t lo[RNG_BATCH], hi[RNG_BATCH];
     for (int q = 0; q < m; q++) {
         lo[q] = id_a[q] < id_b[q] ? id_a[q] : id_b[q];
         hi[q] = id_a[q] < id_b[q] ? id_b[q] : id_a[q];
     }
     philox_lanes(m, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32), lo, hi, w);
+}
+
+void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                     uint32_t w[4][RNG_BATCH])
+{
+    pair_blocks(seed, step, m, id_a, id_b, 0, w);
 }
 
 /* GSL's strip tables, read out of GSL itself (no copy of its constants): per
@@ -314,11 +325,11 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
     }
 }
 
-void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
-                      int nvar, double *z)
+static void pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                         const int ordered, int nvar, double *z)
 {
     uint32_t w[4][RNG_BATCH];
-    rng_pair_blocks(seed, step, m, id_a, id_b, w);
+    pair_blocks(seed, step, m, id_a, id_b, ordered, w);
     int q0 = 0, nbad = 0, bad[RNG_BATCH], v0[RNG_BATCH];
 #ifdef DPD_HAVE_X86_SIMD
     const int isa = simd_level();
@@ -344,4 +355,16 @@ void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a,
         if (v < nvar) { bad[nbad] = q; v0[nbad++] = v; }
     }
     if (nbad > 0) pair_normals_resume(seed, step, id_a, id_b, (const uint32_t (*)[RNG_BATCH])w, nbad, bad, v0, nvar, z);
+}
+
+void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
+                      int nvar, double *z)
+{
+    pair_normals(seed, step, m, id_a, id_b, 0, nvar, z);
+}
+
+void rng_pair_normals_ordered(uint32_t seed, uint64_t step, int m, const uint32_t *lo, const uint32_t *hi,
+                              int nvar, double *z)
+{
+    pair_normals(seed, step, m, lo, hi, 1, nvar, z);
 }

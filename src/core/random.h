@@ -105,6 +105,9 @@ void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, 
  * (one plane per variate): theta_ij, then xi_ij[0..2] as in rng_pair_start. */
 void rng_pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
                       int nvar, double *z);
+/* The same for ids already ordered, lo[q] <= hi[q] (the pair driver's batches). */
+void rng_pair_normals_ordered(uint32_t seed, uint64_t step, int m, const uint32_t *lo, const uint32_t *hi,
+                              int nvar, double *z);
 /* The ziggurat's first step on one word (GSL's gsl_ran_gaussian_ziggurat for a
  * 32-bit generator): 1 and the variate in *z if it accepts the word at once. */
 int rng_ziggurat_fast(uint32_t k, double *z);

@@ -183,10 +183,10 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
         const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
         const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
         _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
-        /* the pair's stable ids, for its noise */
-        const __m512i idb = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), (__mmask16)keep, j, (const int *)s->id, 4);
-        _mm512_storeu_si512(id_b + m, _mm512_maskz_compress_epi32((__mmask16)keep, idb));
-        _mm512_storeu_si512(id_a + m, ida);
+        /* the pair's stable ids, ordered, for its noise */
+        const __m512i idj = _mm512_mask_i32gather_epi32(ida, (__mmask16)keep, j, (const int *)s->id, 4);
+        _mm512_storeu_si512(id_a + m, _mm512_maskz_compress_epi32((__mmask16)keep, _mm512_min_epu32(ida, idj)));
+        _mm512_storeu_si512(id_b + m, _mm512_maskz_compress_epi32((__mmask16)keep, _mm512_max_epu32(ida, idj)));
         const __m512d cx = _mm512_maskz_compress_pd(keep, dx), cy = _mm512_maskz_compress_pd(keep, dy);
         const __m512d cz = _mm512_maskz_compress_pd(keep, dz), cr = _mm512_maskz_compress_pd(keep, r2);
         const int at = m;
@@ -352,6 +352,14 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
     }
 }
 
+/* The stable ids of pair (i, j), ordered (the key of its noise) */
+static inline void pair_ids(const System *s, int i, int j, uint32_t *lo, uint32_t *hi)
+{
+    const uint32_t a = s->id[i], b = s->id[j];
+    *lo = a < b ? a : b;
+    *hi = a < b ? b : a;
+}
+
 /* Pass 1 of a walk batch: from particle i on (before i1), the list entries
  * of consecutive particles inside the largest cutoff, as long as the next
  * particle's whole list fits in the PAIR_BATCH slots (the caller has taken a
@@ -372,7 +380,7 @@ int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *nea
 #endif
         {
             c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
-            for (int q = np; q < np + c; q++) { id_a[q] = s->id[ie]; id_b[q] = s->id[near[q]]; }
+            for (int q = np; q < np + c; q++) pair_ids(s, ie, near[q], id_a + q, id_b + q);
         }
         (void)wide; (void)pl; (void)soa;
         count[ie - i] = c;
@@ -430,8 +438,8 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             for (int k0 = nl->start[i]; k0 < nl->start[i + 1]; k0 += PAIR_BATCH) {
                 const int k1 = k0 + PAIR_BATCH < nl->start[i + 1] ? k0 + PAIR_BATCH : nl->start[i + 1];
                 const int m = pairs_in_range(s, nl, i, k0, k1, near, dd, le);
-                for (int q = 0; q < m; q++) { id_a[q] = s->id[i]; id_b[q] = s->id[near[q]]; }
-                rng_pair_normals(s->seed, s->step, m, id_a, id_b, nvar, noise);
+                for (int q = 0; q < m; q++) pair_ids(s, i, near[q], id_a + q, id_b + q);
+                rng_pair_normals_ordered(s->seed, s->step, m, id_a, id_b, nvar, noise);
                 pair_evaluate_batch(s, i, i + 1, near, dd, noise, &m, acc, pv, model, le, 0, general);
             }
             pair_close(i, acc, model);
@@ -442,7 +450,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
 #ifdef DPD_HAVE_X86_SIMD
         if (lanes) {   /* the one-type evaluator: separations in planes */
             ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
-            rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+            rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
             if (general) batch_random_weights(s, i, ie, pl + 3 * PAIR_PLANE, 1, near, count, wr);
             dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr, 1);
             i = ie;
@@ -450,7 +458,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         }
         if (pan_planes) {
             ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
-            rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+            rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
             pan_batch_avx512(s, i, ie, near, pl, noise, count, acc);
             i = ie;
             continue;
@@ -459,7 +467,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         else
 #endif
         ie = walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, &np, le, 0, 0);
-        rng_pair_normals(s->seed, s->step, np, id_a, id_b, nvar, noise);
+        rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
         pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1, general);
         i = ie;
     }
