@@ -271,9 +271,10 @@ __attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s,
         const double *wr, const int close_last)
 {
     const int wcase = u->s == 2.0 ? 2 : u->s == 1.0 ? 1 : u->s == 0.5 ? 0 : -1;
+    const double inv_rc = rc_power_of_two_inverse(u->rc);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         dpd_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, wcase,
-                              wcase < 0 ? wr + off : NULL);
+                              wcase < 0 ? wr + off : NULL, inv_rc);
         if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_DPD);
     }
 }
@@ -319,8 +320,9 @@ __attribute__((target("avx512f"))) static void pan_batch_avx512(const System *s,
 {
     const PairParams *u = &s->pair[0][0];
     const int mode = pan_weight_mode(u);
+    const double inv_rc = rc_power_of_two_inverse(u->rc);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-        pan_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, mode);
+        pan_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, mode, inv_rc);
         pair_close(p, acc, MODEL_PAN2008);
     }
 }

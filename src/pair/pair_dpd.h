@@ -105,15 +105,16 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], co
  * the same order (no contraction), so the same F_ij bits; the sums into
  * acc->fi and -F_ij into f_j are then added pair by pair in list order, as
  * dpd_pair_batch adds them. wcase: w_R from w_C (2: s = 2, 1: s = 1,
- * 0: s = 0.5, -1: the batch's wr, weight_general). pl: the separations x,
+ * 0: s = 0.5, -1: the batch's wr, weight_general); inv_rc:
+ * rc_power_of_two_inverse(u->rc). pl: the separations x,
  * y, z and r^2 of the pairs as planes, PAIR_PLANE apart (forces.c range_avx512). */
 static inline __attribute__((target("avx512f"), always_inline))
 void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *theta,
-                           int m, PairAcc *acc, const PairParams *u, const int wcase, const double *wr_batch)
+                           int m, PairAcc *acc, const PairParams *u, const int wcase, const double *wr_batch,
+                           double inv_rc)
 {
     const double *v = s->v_pred;
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
-    const double inv_rc = rc_power_of_two_inverse(u->rc);
     const __m512d rc2 = _mm512_set1_pd(u->rc2), one = _mm512_set1_pd(1.0);
     const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
     const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);

@@ -332,16 +332,16 @@ static inline __attribute__((target("avx512f"), always_inline)) __m512d neg(__m5
  * as planes, PAIR_PLANE apart; nz: rng_pair_normals' planes from entry 0)
  * eight at a time on AVX-512, with pan_lanes_loop's operations in its order
  * (no contraction: the same bits), v_j and Omega_j gathered, then added to i
- * and to j pair by pair in list order as pan_lanes_apply adds them. */
+ * and to j pair by pair in list order as pan_lanes_apply adds them. inv_rc:
+ * rc_power_of_two_inverse(u->rc). */
 static inline __attribute__((target("avx512f"), always_inline))
 void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *nz, int m,
-                           PairAcc *acc, const PairParams *u, const int mode)
+                           PairAcc *acc, const PairParams *u, const int mode, double inv_rc)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
     const __m512d wix = _mm512_set1_pd(w[3 * i]), wiy = _mm512_set1_pd(w[3 * i + 1]), wiz = _mm512_set1_pd(w[3 * i + 2]);
     const __m512d one = _mm512_set1_pd(1.0), half = _mm512_set1_pd(0.5), z0 = _mm512_setzero_pd();
-    const double inv_rc = rc_power_of_two_inverse(u->rc);
     const __m512d rc2 = _mm512_set1_pd(u->rc2);
     const __m512d eps2 = _mm512_set1_pd(PAIR_R_EPSILON * PAIR_R_EPSILON);
     const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
