@@ -361,8 +361,12 @@ int neighbor_build(NeighborList *nl, System *s)
 {
     const int n = s->n;
     if (sort_by_cell(nl, s)) return -1;
+    /* sorted: the particles of cell c are cell_start[c] .. cell_start[c + 1] - 1
+     * (the cells cell_index gives them; no second pass of divisions) */
+    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
     #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) nl->cell_of[i] = cell_index(nl, s->x + 3 * i);
+    for (int c = 0; c < ncell; c++)
+        for (int k = nl->cell_start[c]; k < nl->cell_start[c + 1]; k++) nl->cell_of[k] = c;
     int filter = s->n_frozen > 0;
     for (int a = 0; a < s->ntypes; a++)
         for (int b = 0; b < s->ntypes; b++) if (!s->pair[a][b].active) filter = 1;
