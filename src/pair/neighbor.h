@@ -19,6 +19,8 @@ typedef struct {
     int brute_force;          /* box too small for cells: all pairs */
     int per_cutoff;           /* cells per cutoff length, R = 1 or 2 */
     int *cell_start;          /* ncells + 1 */
+    int *tmpl_start;          /* without shear: cell c's stencil segments are tmpl[tmpl_start[c] ..] */
+    void *tmpl;               /* (neighbor.c's Segment, made at the first build) */
     int *cell_of, *perm;
     int *tcount;              /* per-thread cell counts of the sort (ncells x threads) */
     int tcount_threads;
