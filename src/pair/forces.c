@@ -151,6 +151,7 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
                                int *near, double (*dd)[4], double *pl, uint32_t *id_a, uint32_t *id_b, const int soa)
 {
     const __m512i ida = _mm512_set1_epi32((int)s->id[i]);
+    const __m256i lane_bit = _mm256_setr_epi32(31, 30, 29, 28, 27, 26, 25, 24);   /* keep's bit l to the sign of lane l */
     const double *x = s->x;
     const Box *b = &s->box;
     /* i at least `reach` from every face: no candidate is across one (each of
@@ -184,7 +185,10 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
         const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
         _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
         /* the pair's stable ids, ordered, for its noise */
-        const __m512i idj = _mm512_mask_i32gather_epi32(ida, (__mmask16)keep, j, (const int *)s->id, 4);
+        /* eight lanes (a sixteen-lane gather costs twice as much, masked or not) */
+        const __m256i keep8 = _mm256_cmpgt_epi32(_mm256_set1_epi32(0), _mm256_sllv_epi32(_mm256_set1_epi32(keep), lane_bit));
+        const __m512i idj = _mm512_castsi256_si512(_mm256_mask_i32gather_epi32(_mm512_castsi512_si256(ida), (const int *)s->id,
+                                                                               _mm512_castsi512_si256(j), keep8, 4));
         _mm512_storeu_si512(id_a + m, _mm512_maskz_compress_epi32((__mmask16)keep, _mm512_min_epu32(ida, idj)));
         _mm512_storeu_si512(id_b + m, _mm512_maskz_compress_epi32((__mmask16)keep, _mm512_max_epu32(ida, idj)));
         const __m512d cx = _mm512_maskz_compress_pd(keep, dx), cy = _mm512_maskz_compress_pd(keep, dy);
