@@ -275,37 +275,74 @@ size_t scan_segment(const double *x, int j0, int j1, double sx, double sy, doubl
  * whole vectors (x is x, y, z per particle) and sorted into x, y and z lanes,
  * the same subtractions and r^2 (no contraction), so the same test results;
  * the kept j compressed and stored whole. */
-static inline __attribute__((target("avx512f")))
-size_t scan_segment_avx512(const double *x, int j0, int j1, double sx, double sy, double sz, double cut2,
-                           int *buf, size_t len)
+/* The coordinates of candidates j .. j + cnt - 1 (cnt <= 8) in x, y and z
+ * lanes: three whole vectors of x (x, y, z per particle) sorted by six
+ * permutations, no gather */
+static inline __attribute__((target("avx512f"), always_inline))
+void load_group_avx512(const double *x, int j, int cnt, __m512d *X, __m512d *Y, __m512d *Z)
 {
-    const __m512d vx = _mm512_set1_pd(sx), vy = _mm512_set1_pd(sy), vz = _mm512_set1_pd(sz), c2 = _mm512_set1_pd(cut2);
     /* lanes of x, y, z from A = x[3j .. 3j + 7], B = the next 8, C = the 8 after */
     const __m512i xab = _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0), xc = _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0);
     const __m512i yab = _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1), yc = _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0);
     const __m512i zab = _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2), zc = _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0);
+    const int nv = 3 * cnt;
+    const double *p = x + 3 * (size_t)j;
+    const __m512d A = _mm512_maskz_loadu_pd((__mmask8)(nv >= 8 ? 0xff : (1u << nv) - 1), p);
+    const __m512d B = _mm512_maskz_loadu_pd((__mmask8)(nv >= 16 ? 0xff : nv <= 8 ? 0 : (1u << (nv - 8)) - 1), p + 8);
+    const __m512d C = _mm512_maskz_loadu_pd((__mmask8)(nv >= 24 ? 0xff : nv <= 16 ? 0 : (1u << (nv - 16)) - 1), p + 16);
+    *X = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, xab, B), xc, C);
+    *Y = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, yab, B), yc, C);
+    *Z = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, zab, B), zc, C);
+}
+
+/* The distance test of one point (sx, sy, sz) against a loaded group: the
+ * same subtractions and r^2 as scan_segment (no contraction), so the same
+ * results; the kept j compressed and stored whole at buf + len. */
+static inline __attribute__((target("avx512f"), always_inline))
+size_t test_group_avx512(__m512d X, __m512d Y, __m512d Z, int j, int cnt, double sx, double sy, double sz,
+                         __m512d c2, int *buf, size_t len)
+{
     const __m512i step = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+    const __m512d dx = _mm512_sub_pd(_mm512_set1_pd(sx), X), dy = _mm512_sub_pd(_mm512_set1_pd(sy), Y);
+    const __m512d dz = _mm512_sub_pd(_mm512_set1_pd(sz), Z);
+    const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
+    const __mmask8 keep = _mm512_mask_cmp_pd_mask((__mmask8)((1u << cnt) - 1), r2, c2, _CMP_LT_OQ);
+    const __m512i js = _mm512_add_epi32(_mm512_set1_epi32(j), step);
+    _mm512_storeu_si512(buf + len, _mm512_maskz_compress_epi32((__mmask16)keep, js));
+    return len + (size_t)__builtin_popcount(keep);
+}
+
+static inline __attribute__((target("avx512f")))
+size_t scan_segment_avx512(const double *x, int j0, int j1, double sx, double sy, double sz, double cut2,
+                           int *buf, size_t len)
+{
+    const __m512d c2 = _mm512_set1_pd(cut2);
     for (int j = j0; j < j1; j += 8) {
-        const int cnt = j1 - j < 8 ? j1 - j : 8, nv = 3 * cnt;
-        const double *p = x + 3 * (size_t)j;
-        const __m512d A = _mm512_maskz_loadu_pd((__mmask8)(nv >= 8 ? 0xff : (1u << nv) - 1), p);
-        const __m512d B = _mm512_maskz_loadu_pd((__mmask8)(nv >= 16 ? 0xff : nv <= 8 ? 0 : (1u << (nv - 8)) - 1), p + 8);
-        const __m512d C = _mm512_maskz_loadu_pd((__mmask8)(nv >= 24 ? 0xff : nv <= 16 ? 0 : (1u << (nv - 16)) - 1), p + 16);
-        const __m512d X = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, xab, B), xc, C);
-        const __m512d Y = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, yab, B), yc, C);
-        const __m512d Z = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, zab, B), zc, C);
-        const __m512d dx = _mm512_sub_pd(vx, X), dy = _mm512_sub_pd(vy, Y), dz = _mm512_sub_pd(vz, Z);
-        const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-        const __mmask8 keep = _mm512_mask_cmp_pd_mask((__mmask8)((1u << cnt) - 1), r2, c2, _CMP_LT_OQ);
-        const __m512i js = _mm512_add_epi32(_mm512_set1_epi32(j), step);
-        _mm512_storeu_si512(buf + len, _mm512_maskz_compress_epi32((__mmask16)keep, js));
-        len += (size_t)__builtin_popcount(keep);
+        const int cnt = j1 - j < 8 ? j1 - j : 8;
+        __m512d X, Y, Z;
+        load_group_avx512(x, j, cnt, &X, &Y, &Z);
+        len = test_group_avx512(X, Y, Z, j, cnt, sx, sy, sz, c2, buf, len);
     }
     return len;
 }
 #else
 #define SCAN_SLACK 1
 #endif
+
+/* The stencil segments of cell c with their particle ranges (m returned),
+ * and the particles they hold in *span: room one particle of c can need. */
+static int cell_segments(const NeighborList *nl, const Box *b, int c, Segment *seg, size_t *span)
+{
+    int m;
+    if (nl->tmpl_start) {   /* without shear: the cells and shifts made once (stencil_templates) */
+        m = nl->tmpl_start[c + 1] - nl->tmpl_start[c];
+        memcpy(seg, (const Segment *)nl->tmpl + nl->tmpl_start[c], (size_t)m * sizeof *seg);
+        for (int k = 0; k < m; k++) { seg[k].j0 = nl->cell_start[seg[k].c0]; seg[k].j1 = nl->cell_start[seg[k].c1 + 1]; }
+    } else m = stencil_segments(nl, b, c, seg);
+    *span = 0;
+    for (int k = 0; k < m; k++) *span += (size_t)(seg[k].j1 - seg[k].j0);
+    return m;
+}
 
 /* Neighbours of the particles [i0, i1) appended to the chunk's buffer *buf_out
  * (capacity *cap_out, length *len_out); counts in start[i+1]. The buffer, its
@@ -341,13 +378,7 @@ int build_range(const NeighborList *nl, const System *s, int i0, int i1, int fil
         const int c = nl->cell_of[i];
         if (c != cur_cell) {
             cur_cell = c;
-            if (nl->tmpl_start) {   /* without shear: the cells and shifts made once (neighbor_init) */
-                m = nl->tmpl_start[c + 1] - nl->tmpl_start[c];
-                memcpy(seg, (const Segment *)nl->tmpl + nl->tmpl_start[c], (size_t)m * sizeof *seg);
-                for (int k = 0; k < m; k++) { seg[k].j0 = nl->cell_start[seg[k].c0]; seg[k].j1 = nl->cell_start[seg[k].c1 + 1]; }
-            } else m = stencil_segments(nl, &s->box, c, seg);
-            span = 0;
-            for (int k = 0; k < m; k++) span += (size_t)(seg[k].j1 - seg[k].j0);
+            m = cell_segments(nl, &s->box, c, seg, &span);
         }
         if (ensure_capacity(&buf, &cap, len + span + SCAN_SLACK)) { rc = -1; break; }
         const double xi = x[3 * i], yi = x[3 * i + 1], zi = x[3 * i + 2];
@@ -380,9 +411,73 @@ static int build_range_portable(const NeighborList *nl, const System *s, int i0,
 #ifdef DPD_HAVE_X86_SIMD
 /* build_range with scan_segment_avx512 inlined (3D boxes: 2D ones keep z = 0
  * but are few and small) */
+/* build_range for the particles of one cell at a time (at most CELL_BLOCK):
+ * each group of eight candidates of a shared stencil segment is loaded and
+ * sorted into lanes once and tested against every particle of the block, each
+ * writing into a region of its own; the regions are then closed up in
+ * particle order. Every particle's entries are those of build_range, in its
+ * order (its own row first, then the segments in order). */
+#define CELL_BLOCK 32
+__attribute__((target("avx512f"))) static int build_cells_avx512(const NeighborList *nl, const System *s, int i0, int i1,
+                                                                 int filter, int **buf_out, size_t *cap_out, size_t *len_out)
+{
+    int *buf = *buf_out;
+    size_t cap = *cap_out, len = *len_out;
+    const double cut2 = nl->cutoff * nl->cutoff, *x = s->x;
+    const __m512d c2 = _mm512_set1_pd(cut2);
+    Segment seg[MAX_SEGMENTS];
+    size_t at[CELL_BLOCK], end[CELL_BLOCK];
+    int rc = 0;
+    for (int ia = i0; ia < i1;) {
+        const int c = nl->cell_of[ia];
+        int ib = nl->cell_start[c + 1] < i1 ? nl->cell_start[c + 1] : i1;
+        if (ib - ia > CELL_BLOCK) ib = ia + CELL_BLOCK;
+        const int nb = ib - ia;
+        size_t span;
+        const int m = cell_segments(nl, &s->box, c, seg, &span);
+        const size_t room = span + SCAN_SLACK;
+        if (ensure_capacity(&buf, &cap, len + (size_t)nb * room)) { rc = -1; break; }
+        for (int q = 0; q < nb; q++) {   /* the own row, from the particle after i */
+            const int i = ia + q;
+            at[q] = len + (size_t)q * room;
+            end[q] = scan_segment_avx512(x, i + 1, seg[0].j1, x[3 * i] - seg[0].shift[0], x[3 * i + 1] - seg[0].shift[1],
+                                         x[3 * i + 2] - seg[0].shift[2], cut2, buf, at[q]);
+        }
+        for (int k = 1; k < m; k++) {
+            double sp[CELL_BLOCK][3];
+            for (int q = 0; q < nb; q++)
+                for (int a = 0; a < 3; a++) sp[q][a] = x[3 * (ia + q) + a] - seg[k].shift[a];
+            for (int j = seg[k].j0; j < seg[k].j1; j += 8) {
+                const int cnt = seg[k].j1 - j < 8 ? seg[k].j1 - j : 8;
+                __m512d X, Y, Z;
+                load_group_avx512(x, j, cnt, &X, &Y, &Z);
+                for (int q = 0; q < nb; q++)
+                    end[q] = test_group_avx512(X, Y, Z, j, cnt, sp[q][0], sp[q][1], sp[q][2], c2, buf, end[q]);
+            }
+        }
+        for (int q = 0; q < nb; q++) {   /* close up, in particle order (len <= at[q]: moves go down) */
+            const int i = ia + q;
+            size_t w = at[q];
+            if (filter) {   /* drop frozen-frozen and non-interacting pairs */
+                for (size_t r = at[q]; r < end[q]; r++)
+                    if (keep_pair(s, 1, i, buf[r])) buf[w++] = buf[r];
+            } else w = end[q];
+            const size_t cnt = w - at[q];
+            memmove(buf + len, buf + at[q], cnt * sizeof *buf);
+            len += cnt;
+            nl->start[i + 1] = (int)cnt;
+        }
+        ia = ib;
+    }
+    *buf_out = buf; *cap_out = cap; *len_out = len;
+    return rc;
+}
 __attribute__((target("avx512f"))) static int build_range_avx512(const NeighborList *nl, const System *s, int i0, int i1,
                                                                  int filter, int **buf, size_t *cap, size_t *len)
-{ return build_range(nl, s, i0, i1, filter, buf, cap, len, 1); }
+{
+    if (!nl->brute_force) return build_cells_avx512(nl, s, i0, i1, filter, buf, cap, len);
+    return build_range(nl, s, i0, i1, filter, buf, cap, len, 1);
+}
 #endif
 
 /* Particles per build chunk on more than one thread: small enough that a
