@@ -184,8 +184,8 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
         const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
         const __mmask8 keep = _mm512_mask_cmp_pd_mask(live, r2, rc2, _CMP_LT_OQ);
         _mm512_storeu_si512(near + m, _mm512_maskz_compress_epi32((__mmask16)keep, j));
-        /* the pair's stable ids, ordered, for its noise */
-        /* eight lanes (a sixteen-lane gather costs twice as much, masked or not) */
+        /* the pair's stable ids, ordered, for its noise; gathered eight lanes
+         * wide (a sixteen-lane gather costs twice as much, masked or not) */
         const __m256i keep8 = _mm256_cmpgt_epi32(_mm256_set1_epi32(0), _mm256_sllv_epi32(_mm256_set1_epi32(keep), lane_bit));
         const __m512i idj = _mm512_castsi256_si512(_mm256_mask_i32gather_epi32(_mm512_castsi512_si256(ida), (const int *)s->id,
                                                                                _mm512_castsi512_si256(j), keep8, 4));
@@ -269,28 +269,29 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
 
 #ifdef DPD_HAVE_X86_SIMD
 /* The standard pairs of a walk batch [i, ie) on AVX-512 (dpd_pair_lanes_avx512,
- * the same bits as dpd_pair_batch): one type pair u, no shear, no virial. */
+ * the same bits as dpd_pair_batch): one type pair u, no shear, no virial;
+ * every particle of the batch closed after its pairs. */
 __attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s, int i, int ie, const int *near,
         const double *pl, const double *noise, const int *count, PairAcc *acc, const PairParams *u,
-        const double *wr, const int close_last)
+        const double *wr)
 {
     const int wcase = u->s == 2.0 ? 2 : u->s == 1.0 ? 1 : u->s == 0.5 ? 0 : -1;
     const double inv_rc = rc_power_of_two_inverse(u->rc);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         dpd_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, wcase,
                               wcase < 0 ? wr + off : NULL, inv_rc);
-        if (p + 1 < ie || close_last) pair_close(p, acc, MODEL_DPD);
+        pair_close(p, acc, MODEL_DPD);
     }
 }
 #endif
 
 /* Pan 2008 without the virial, lane by lane (pair_pan2008.h, the same bits
  * as pair by pair): the pairs of particles [i, ie) of a walk batch, with
- * their noise in rng_pair_normals' planes. One type, not a
- * general power: its parameters once, not per pair; and when every pair of
- * the batch interacts (one cutoff, none closer than PAIR_R_EPSILON), the
- * lanes read the separations and the noise where the walk left them (direct:
- * entry q of the batch is lane q). */
+ * their noise in rng_pair_normals' planes. One type, not a general power:
+ * its parameters once, not per pair; and when every pair of the batch
+ * interacts (one cutoff, none closer than PAIR_R_EPSILON), the lanes read the
+ * separations and the noise where the walk left them (direct: entry q of the
+ * batch is lane q). */
 static inline __attribute__((always_inline))
 void pan_evaluate_lanes(const System *s, int i, int ie, int *near, double (*dd)[4], const double *noise,
                         const int *count, PairAcc *acc, const int le, const int close_last)
@@ -458,7 +459,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
             rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
             if (general) batch_random_weights(s, i, ie, pl + 3 * PAIR_PLANE, 1, near, count, wr);
-            dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr, 1);
+            dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr);
             i = ie;
             continue;
         }
