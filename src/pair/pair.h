@@ -153,6 +153,27 @@ __m512d r_over_rc_avx512(__m512d r, double rc, double inv_rc)
 {
     return inv_rc != 0.0 ? _mm512_mul_pd(r, _mm512_set1_pd(inv_rc)) : _mm512_div_pd(r, _mm512_set1_pd(rc));
 }
+
+/* Pairs q0 .. q0 + cnt - 1 (cnt <= 8) of a particle's run in the walk's
+ * planes (pl: x, y, z, r^2, PAIR_PLANE apart; near: j): their separations,
+ * 3 j for the gathers, the live lanes and those that interact
+ * (pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts). */
+typedef struct { __m512d d0, d1, d2, r2; __m256i j3; __mmask8 live, act; int cnt; } PairLanes8;
+static inline __attribute__((target("avx512f"), always_inline))
+PairLanes8 pair_lanes_load_avx512(const double *pl, const int *near, int q0, int m, __m512d rc2, __m512d eps2)
+{
+    PairLanes8 g;
+    g.cnt = m - q0 < 8 ? m - q0 : 8;
+    g.live = (__mmask8)((1u << g.cnt) - 1);
+    g.d0 = _mm512_maskz_loadu_pd(g.live, pl + q0);
+    g.d1 = _mm512_maskz_loadu_pd(g.live, pl + PAIR_PLANE + q0);
+    g.d2 = _mm512_maskz_loadu_pd(g.live, pl + 2 * PAIR_PLANE + q0);
+    g.r2 = _mm512_maskz_loadu_pd(g.live, pl + 3 * PAIR_PLANE + q0);
+    g.act = g.live & ~(_mm512_cmp_pd_mask(g.r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(g.r2, eps2, _CMP_LT_OQ));
+    const __m256i j = _mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)g.live, near + q0));
+    g.j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
+    return g;
+}
 #endif
 
 #endif

@@ -121,15 +121,11 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
     const __m512d isdt = _mm512_set1_pd(acc->inv_sqrt_dt);
     double fi0 = acc->fi[0], fi1 = acc->fi[1], fi2 = acc->fi[2];
     for (int q0 = 0; q0 < m; q0 += 8) {
-        const int cnt = m - q0 < 8 ? m - q0 : 8;
-        const __mmask8 live = (__mmask8)((1u << cnt) - 1);
-        const __m512d dx = _mm512_maskz_loadu_pd(live, pl + q0), dy = _mm512_maskz_loadu_pd(live, pl + PAIR_PLANE + q0);
-        const __m512d dz = _mm512_maskz_loadu_pd(live, pl + 2 * PAIR_PLANE + q0);
-        const __m512d r2 = _mm512_maskz_loadu_pd(live, pl + 3 * PAIR_PLANE + q0);
-        /* pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts */
-        const __mmask8 act = live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
-        const __m256i j = _mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)live, near + q0));
-        const __m256i j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
+        const PairLanes8 g = pair_lanes_load_avx512(pl, near, q0, m, rc2, eps2);
+        const int cnt = g.cnt;
+        const __mmask8 live = g.live, act = g.act;
+        const __m512d dx = g.d0, dy = g.d1, dz = g.d2, r2 = g.r2;
+        const __m256i j3 = g.j3;
         const __m512d z0 = _mm512_setzero_pd();
         const __m512d dvx = _mm512_sub_pd(vix, _mm512_mask_i32gather_pd(z0, live, j3, v, 8));
         const __m512d dvy = _mm512_sub_pd(viy, _mm512_mask_i32gather_pd(z0, live, j3, v + 1, 8));

@@ -350,14 +350,11 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
     const int shear = u->gamma_shear != 0.0;
     double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]}, ti[3] = {acc->ti[0], acc->ti[1], acc->ti[2]};
     for (int q0 = 0; q0 < m; q0 += 8) {
-        const int cnt = m - q0 < 8 ? m - q0 : 8;
-        const __mmask8 live = (__mmask8)((1u << cnt) - 1);
-        const __m512d d0 = _mm512_maskz_loadu_pd(live, pl + q0), d1 = _mm512_maskz_loadu_pd(live, pl + PAIR_PLANE + q0);
-        const __m512d d2 = _mm512_maskz_loadu_pd(live, pl + 2 * PAIR_PLANE + q0);
-        const __m512d r2 = _mm512_maskz_loadu_pd(live, pl + 3 * PAIR_PLANE + q0);
-        const __mmask8 act = live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
-        const __m256i j3 = _mm256_mullo_epi32(_mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)live, near + q0)),
-                                              _mm256_set1_epi32(3));
+        const PairLanes8 g = pair_lanes_load_avx512(pl, near, q0, m, rc2, eps2);
+        const int cnt = g.cnt;
+        const __mmask8 live = g.live, act = g.act;
+        const __m512d d0 = g.d0, d1 = g.d1, d2 = g.d2, r2 = g.r2;
+        const __m256i j3 = g.j3;
         /* pan_pair_geometry */
         const __m512d r = _mm512_sqrt_pd(r2), inv_r = _mm512_div_pd(one, r);
         const __m512d e0 = _mm512_mul_pd(d0, inv_r), e1 = _mm512_mul_pd(d1, inv_r), e2 = _mm512_mul_pd(d2, inv_r);
