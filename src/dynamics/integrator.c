@@ -39,16 +39,24 @@ static int predict_plain(System *s) { return predict_loop(s, 0, 0); }
  * component over blocks of particles (the same bits, in vector lanes), then
  * the wrap of the block's particles that left the box. */
 #define INTEGRATE_BLOCK 64
+static inline int block_count(int n) { return (n + INTEGRATE_BLOCK - 1) / INTEGRATE_BLOCK; }
+/* the particles [*i0, *i1) of block b */
+static inline void block_range(int b, int n, int *i0, int *i1)
+{
+    *i0 = b * INTEGRATE_BLOCK;
+    *i1 = *i0 + INTEGRATE_BLOCK < n ? *i0 + INTEGRATE_BLOCK : n;
+}
 static int predict_one_type(System *s)
 {
     const double dt = s->dt, lam = s->lambda, im = 1.0 / s->types[0].mass;
-    const int n = s->n, nblk = (n + INTEGRATE_BLOCK - 1) / INTEGRATE_BLOCK;
+    const int n = s->n, nblk = block_count(n);
     double *restrict x = s->x, *restrict v = s->v, *restrict vp = s->v_pred;
     const double *restrict f = s->f;
     int bad = 0;
     #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int b = 0; b < nblk; b++) {
-        const int i0 = b * INTEGRATE_BLOCK, i1 = i0 + INTEGRATE_BLOCK < n ? i0 + INTEGRATE_BLOCK : n;
+        int i0, i1;
+        block_range(b, n, &i0, &i1);
         #pragma omp simd
         for (int k = 3 * i0; k < 3 * i1; k++) {
             x[k] += dt * v[k] + 0.5 * dt * dt * f[k] * im;
@@ -112,13 +120,14 @@ static int correct_plain(System *s) { return correct_loop(s, 0); }
 static int correct_one_type(System *s)
 {
     const double h = 0.5 * s->dt / s->types[0].mass;
-    const int n = s->n, nblk = (n + INTEGRATE_BLOCK - 1) / INTEGRATE_BLOCK;
+    const int n = s->n, nblk = block_count(n);
     double *restrict v = s->v;
     const double *restrict f = s->f;
     int bad = 0;
     #pragma omp parallel for schedule(static) reduction(+:bad)
     for (int b = 0; b < nblk; b++) {
-        const int i0 = b * INTEGRATE_BLOCK, i1 = i0 + INTEGRATE_BLOCK < n ? i0 + INTEGRATE_BLOCK : n;
+        int i0, i1;
+        block_range(b, n, &i0, &i1);
         #pragma omp simd
         for (int k = 3 * i0; k < 3 * i1; k++) v[k] += h * f[k];
         for (int i = i0; i < i1; i++) bad += !isfinite(v[3 * i] + v[3 * i + 1] + v[3 * i + 2]);

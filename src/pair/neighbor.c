@@ -352,7 +352,7 @@ static int cell_segments(const NeighborList *nl, const Box *b, int c, Segment *s
  * thread on 2 threads than on 1). */
 static inline __attribute__((always_inline))
 int build_range(const NeighborList *nl, const System *s, int i0, int i1, int filter,
-                int **buf_out, size_t *cap_out, size_t *len_out, const int wide)
+                int **buf_out, size_t *cap_out, size_t *len_out)
 {
     int *buf = *buf_out;
     size_t cap = *cap_out, len = *len_out;
@@ -386,13 +386,8 @@ int build_range(const NeighborList *nl, const System *s, int i0, int i1, int fil
             const double sx = xi - seg[k].shift[0], sy = yi - seg[k].shift[1], sz = zi - seg[k].shift[2];
             /* segment 0 is the own row from cell c: partners after i only */
             const int j0 = k == 0 ? i + 1 : seg[k].j0;
-#ifdef DPD_HAVE_X86_SIMD
-            if (wide) len = scan_segment_avx512(x, j0, seg[k].j1, sx, sy, sz, cut2, buf, len);
-            else
-#endif
             len = scan_segment(x, j0, seg[k].j1, sx, sy, sz, cut2, buf, len);
         }
-        (void)wide;
         if (filter) {   /* drop frozen-frozen and non-interacting pairs */
             size_t w = before;
             for (size_t q = before; q < len; q++)
@@ -407,10 +402,8 @@ int build_range(const NeighborList *nl, const System *s, int i0, int i1, int fil
 
 static int build_range_portable(const NeighborList *nl, const System *s, int i0, int i1, int filter,
                                 int **buf, size_t *cap, size_t *len)
-{ return build_range(nl, s, i0, i1, filter, buf, cap, len, 0); }
+{ return build_range(nl, s, i0, i1, filter, buf, cap, len); }
 #ifdef DPD_HAVE_X86_SIMD
-/* build_range with scan_segment_avx512 inlined (3D boxes: 2D ones keep z = 0
- * but are few and small) */
 /* build_range for the particles of one cell at a time (at most CELL_BLOCK):
  * each group of eight candidates of a shared stencil segment is loaded and
  * sorted into lanes once and tested against every particle of the block, each
@@ -472,11 +465,12 @@ __attribute__((target("avx512f"))) static int build_cells_avx512(const NeighborL
     *buf_out = buf; *cap_out = cap; *len_out = len;
     return rc;
 }
+/* 3D boxes (2D ones keep z = 0 but are few and small) */
 __attribute__((target("avx512f"))) static int build_range_avx512(const NeighborList *nl, const System *s, int i0, int i1,
                                                                  int filter, int **buf, size_t *cap, size_t *len)
 {
     if (!nl->brute_force) return build_cells_avx512(nl, s, i0, i1, filter, buf, cap, len);
-    return build_range(nl, s, i0, i1, filter, buf, cap, len, 1);
+    return build_range(nl, s, i0, i1, filter, buf, cap, len);   /* all pairs: the scalar test */
 }
 #endif
 
