@@ -3,7 +3,8 @@
 # binary built from an earlier commit) and NEW (default bin/dpd) give the same
 # summary rows (times, rates and memory aside), the same final state and the
 # same series, bit for bit, on one scene per model and module (standard, shear,
-# rotation, frozen rotors, colloids 2D/3D, springs with m = 0, TCAF, the
+# rotation, the general weight exponent of one type (the mai-duy-2019
+# solvent), frozen rotors, colloids 2D/3D, springs with m = 0, TCAF, the
 # experiments' suspension and two-sphere scenes), each shortened, on 1 and 2
 # threads. Not part of make test (it needs a second binary); run it around any
 # change meant to keep behaviour (tools: make build/dpd-ref REF=<commit>).
@@ -31,6 +32,7 @@ bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
 scenes=(
   "bench/standard.cfg|--set box=[6.0,6.0,6.0] --set steps=200 --set equilibration=50 --set measure.every=10"
   "bench/pan-fluid.cfg|--set steps=60 --set equilibration=20"
+  "bench/mai-duy-solvent.cfg|--set box=[8.0,8.0,8.0] --set steps=60 --set equilibration=20 --set measure.every=10"
   "tests/checkpoint-shear.cfg|"
   "tests/checkpoint-rotation.cfg|"
   "tests/checkpoint-colloids2d.cfg|"
