@@ -194,6 +194,13 @@ if [ "${TARGETS:-1}" = 1 ]; then
         printf 'TCAF accumulation / force time, fig01 paper settings\t%.3f\t%s\t-\t-\t< 0.15\n' "$(printf '%s\n' $r | median)" "$(printf '%s\n' $r | range)"
         IFS=$'\t' read -r m g a b < <(tg_pairs thr "tg_rate bench/standard.cfg 32.18 100 200 2 GOMP_SPINCOUNT=3000" "tg_rate bench/standard.cfg 32.18 100 200 1 GOMP_SPINCOUNT=3000")
         printf '2 threads / 1 thread, 1e5 particles, harness settings\t%s\t%s\t%s\t%s\t>= 1.8\n' "$m" "$g" "$a" "$b"
+        # the machine's own share of that ratio: one thread pinned to CPU 1, then to CPU 0. The
+        # force chunks are fixed (their sums in a fixed order give the same bits on any thread
+        # count) and split in halves, so 2 threads run at about twice the slower CPU's rate
+        if command -v taskset >/dev/null && [ "$(nproc)" -ge 2 ]; then
+            IFS=$'\t' read -r m g a b < <(tg_pairs cpu "tg_rate bench/standard.cfg 32.18 100 200 1 GOMP_SPINCOUNT=3000 taskset -c 1" "tg_rate bench/standard.cfg 32.18 100 200 1 GOMP_SPINCOUNT=3000 taskset -c 0")
+            printf 'one thread on CPU 1 / on CPU 0, 1e5 particles (the hardware)\t%s\t%s\t%s\t%s\t-\n' "$m" "$g" "$a" "$b"
+        fi
         printf 'date, commit\t%s\t%s\t\t\t\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
     } > "$out/targets.tsv"
     cp "$out/targets.tsv" bench/targets.tsv
