@@ -767,5 +767,17 @@ mkres x/xp quick 1 <<< "$(tab q 3.2 1.0)"
 T "check: a known non-reproduction that passes is XPASS, exit 1" 1 "$C" x/xp
 has "check: XPASS shown" "XPASS"
 
+# tools/cost class: the factor a projected run gets follows the walk it takes (one type in 3D without
+# shear: the AVX-512 evaluators; several types, shear or 2D: the generic walk)
+cc=$tools/cost
+printf 'dimension = 3;\ntypes = ( { name = "f"; density = 3.0; } );\npairs = ( { types = ["f", "f"]; a = 25.0; gamma = 4.5; s = 0.42; } );\n' > "$root/one.cfg"
+sed 's/types = ( { name = "f"; density = 3.0; } );/types = ( { name = "f"; density = 3.0; }, { name = "g"; count = 2; } );/' "$root/one.cfg" > "$root/two.cfg"
+T "cost class: one type, a power" 0 "$cc" class "$root/one.cfg"; has "cost class: pow" '^pow$'
+T "cost class: two types" 0 "$cc" class "$root/two.cfg"; has "cost class: pow-generic (types)" '^pow-generic$'
+T "cost class: shear by --set" 0 "$cc" class "$root/one.cfg" --set shear_rate=0.1; has "cost class: pow-generic (shear)" '^pow-generic$'
+T "cost class: shear rate 0 is no shear" 0 "$cc" class "$root/one.cfg" --set shear_rate=0.0; has "cost class: pow (rate 0)" '^pow$'
+sed 's/s = 0.42; //' "$root/one.cfg" > "$root/std.cfg"
+T "cost class: s = 2" 0 "$cc" class "$root/std.cfg"; has "cost class: standard" '^standard$'
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -323,7 +323,7 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
         c.used = v0[k];
         /* variate v0's first word was not accepted (pair_normals tested it): GSL from
          * that word on, without testing it again (a test known to fail is a branch
-         * the predictor gets wrong, about 2.5 % of the Pan 2008 kernel's time) */
+         * the predictor gets wrong: 2.6 % of the Pan 2008 fluid's run) */
         z[v0[k] * RNG_BATCH + q] = rng_counter_normal(&c);
         for (int v = v0[k] + 1; v < nvar; v++) z[v * RNG_BATCH + q] = counter_normal_first_step(&c);
     }

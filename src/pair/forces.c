@@ -235,10 +235,11 @@ static int scene_weights_general(const System *s)
     return 0;
 }
 
-/* w_R (eq. 7) of every pair of a walk batch [i, ie) that interacts with a
- * general exponent, all at once (weight_pow_batch); other entries get a
- * placeholder. w_C = 1 - r/rc as the evaluator forms it, so the same bits. */
-static void batch_random_weights(const System *s, int i, int ie, const double *r2, int stride, const int *near,
+/* w_R (eq. 7) of every pair of a walk batch [i, ie) (separations and r^2 in
+ * dd) that interacts with a general exponent, all at once (weight_pow_batch);
+ * other entries get a placeholder. w_C = 1 - r/rc as the evaluator forms it,
+ * so the same bits. */
+static void batch_random_weights(const System *s, int i, int ie, const double (*dd)[4], const int *near,
                                  const int *count, double *wr)
 {
     double w[PAIR_BATCH + 8], e[PAIR_BATCH + 8];
@@ -247,7 +248,7 @@ static void batch_random_weights(const System *s, int i, int ie, const double *r
         const int ti = s->type[p];
         for (int q = 0; q < count[p - i]; q++, k++) {
             const PairParams *pp = &s->pair[ti][s->type[near[k]]];
-            const double r2k = r2[(size_t)k * stride];
+            const double r2k = dd[k][3];
             const int use = weight_general(pp->s) && pair_interacts(pp, r2k);
             w[k] = use ? 1.0 - sqrt(r2k) / pp->rc : 1.0;
             e[k] = use ? 0.5 * pp->s : 1.0;
@@ -376,7 +377,7 @@ void pair_evaluate_batch(const System *s, int i, int ie, int *near, double (*dd)
      * eight: on the measurement steps of fig01's scene it was 10 % of the run) */
     double wr[PAIR_BATCH + 8];
     const int by_batch = model == MODEL_DPD && general;
-    if (by_batch) batch_random_weights(s, i, ie, &dd[0][3], 4, near, count, wr);
+    if (by_batch) batch_random_weights(s, i, ie, (const double (*)[4])dd, near, count, wr);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         pair_evaluate(s, p, near + off, dd + off, noise + off, count[p - i], acc, pv, model, le,
                       by_batch ? wr + off : NULL);
