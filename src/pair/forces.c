@@ -272,8 +272,7 @@ __attribute__((target("avx512f"))) static void batch_random_weights_avx512(const
     for (int q = 0; q < np; q += 8) {
         const __mmask8 live = (__mmask8)(np - q >= 8 ? 0xff : (1u << (np - q)) - 1);
         const __m512d x = _mm512_maskz_loadu_pd(live, r2 + q);
-        /* pair_interacts: !(r2 >= rc2 || r2 < eps2) */
-        const __mmask8 use = live & ~(_mm512_cmp_pd_mask(x, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(x, eps2, _CMP_LT_OQ));
+        const __mmask8 use = pair_interacts_avx512(x, rc2, eps2, live);
         const __m512d wc = _mm512_sub_pd(one, _mm512_div_pd(_mm512_sqrt_pd(x), rc));
         _mm512_storeu_pd(w + q, _mm512_mask_blend_pd(use, one, wc));
         _mm512_storeu_pd(e + q, _mm512_mask_blend_pd(use, one, half_s));

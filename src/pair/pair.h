@@ -154,6 +154,13 @@ __m512d r_over_rc_avx512(__m512d r, double rc, double inv_rc)
     return inv_rc != 0.0 ? _mm512_mul_pd(r, _mm512_set1_pd(inv_rc)) : _mm512_div_pd(r, _mm512_set1_pd(rc));
 }
 
+/* The lanes of live whose r^2 interacts (pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts) */
+static inline __attribute__((target("avx512f"), always_inline))
+__mmask8 pair_interacts_avx512(__m512d r2, __m512d rc2, __m512d eps2, __mmask8 live)
+{
+    return live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
+}
+
 /* Pairs q0 .. q0 + cnt - 1 (cnt <= 8) of a particle's run in the walk's
  * planes (pl: x, y, z, r^2, PAIR_PLANE apart; near: j): their separations,
  * 3 j for the gathers, the live lanes and those that interact
@@ -169,7 +176,7 @@ PairLanes8 pair_lanes_load_avx512(const double *pl, const int *near, int q0, int
     g.d1 = _mm512_maskz_loadu_pd(g.live, pl + PAIR_PLANE + q0);
     g.d2 = _mm512_maskz_loadu_pd(g.live, pl + 2 * PAIR_PLANE + q0);
     g.r2 = _mm512_maskz_loadu_pd(g.live, pl + 3 * PAIR_PLANE + q0);
-    g.act = g.live & ~(_mm512_cmp_pd_mask(g.r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(g.r2, eps2, _CMP_LT_OQ));
+    g.act = pair_interacts_avx512(g.r2, rc2, eps2, g.live);
     const __m256i j = _mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)g.live, near + q0));
     g.j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
     return g;
