@@ -395,10 +395,10 @@ if [ -n "${BASE:-}" ] && [ "${SPEEDUP:-0}" = 1 ]; then
             tcaf) echo "experiments/mai-duy-2019/fig01-viscosity-wavenumber/solvent-tcaf.cfg --set steps=600 --set equilibration=40 --set measure.blocks=2" ;;
             rotation) echo "bench/pan-fluid.cfg --set steps=600 --set equilibration=100" ;;
             m0) echo "experiments/phan-thien-2016/fig03-couette-profile/couette.cfg --set steps=60 --set equilibration=20" ;;
-            # the generic walk (several types, shear or 2D: not the AVX-512 evaluators), on scenes of the
-            # experiments that take it: the standard system sheared, the mai-duy-2019 suspension (two
-            # types, shear, springs), its TCAF scene with a free colloid (fig02), the pan-2008 two spheres
-            # (a fluid and frozen spheres)
+            # several types, shear or 2D (the generic walk for the batches that mix types, and for all
+            # with shear or in 2D; the AVX-512 evaluators for the rest), on scenes of the experiments:
+            # the standard system sheared, the mai-duy-2019 suspension (two types, shear, springs), its
+            # TCAF scene with a free colloid (fig02), the pan-2008 two spheres (a fluid and frozen spheres)
             tcaf-generic) echo "experiments/mai-duy-2019/fig02-length-scale/free.cfg --set steps=600 --set equilibration=20 --set measure.blocks=2" ;;
             standard-generic) echo "bench/standard.cfg --set box=[15.0,15.0,15.0] --set shear_rate=0.1 --set steps=400 --set equilibration=100" ;;
             pow-generic) echo "experiments/mai-duy-2019/fig04-relative-viscosity-a353/suspension-shear.cfg --set steps=60 --set equilibration=20" ;;

@@ -626,7 +626,8 @@ static void ik_bins_sum_to_virial(void **state)
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; a second type
  * pair with a shorter cutoff than the largest and a general exponent
- * (s = 0.42: w_R by batch, weight_pow_batch), with and without the virial. */
+ * (s = 0.42: w_R by batch, weight_pow_batch), with and without the virial
+ * (the virial, the energy and the force on a frozen type the same bits too). */
 static void same_forces_at_levels(int two_types, double sexp, double rc)
 {
     printf("%s, s = %g, rc = %g\n", two_types ? "two types" : "one type", sexp, rc);
@@ -642,7 +643,11 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
         system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
     }
     uint64_t st = 7;
-    for (int i = 0; i < s.n; i++) s.type[i] = two_types && i % 4 == 0;
+    /* two types: every fourth particle of type 1 (most walk batches mix the
+     * types), or (two_types = 2) type 1 frozen on a slab x < 1.5, so that most
+     * batches are of one type, some of the frozen one */
+    for (int i = 0; i < s.n; i++) s.type[i] = two_types == 2 ? s.x[3 * i] < 1.5 : two_types && i % 4 == 0;
+    if (two_types == 2) s.types[1].frozen = 1;
     for (int i = 0; i < 300; i++)   /* the cluster: 300 particles in a ball of radius 0.4 at a corner */
         for (int d = 0; d < 3; d++) s.x[3 * i + d] = fmod(L[d] - 0.2 + 0.4 * tu_uniform(&st), L[d]);
     for (int d = 0; d < 3; d++) s.x[3 * 400 + d] = s.x[3 * 401 + d];   /* coincident */
@@ -679,7 +684,12 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
         forces_compute(&s, &nl, &fw, NULL);
         CHECK_TRUE(memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0,
                    "forces at level %d differ from the portable pass's bits", level);
+        PairVirial pvl = {.bin_axis = -1};   /* a measurement step: virial, energy, force on the frozen type */
+        forces_compute(&s, &nl, &fw, &pvl);
+        CHECK_TRUE(memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0 && memcmp(&pv, &pvl, sizeof pv) == 0,
+                   "forces or virial of a measurement step at level %d differ from the portable pass's bits", level);
     }
+    CHECK_TRUE(two_types != 2 || pv.frozen_force[1][0] != 0.0, "no force on the frozen type");
     simd_cap(best);
     free(f0);
     forces_free(&fw);
@@ -687,13 +697,15 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
     system_free(&s);
 }
 
-/* ... for two types (the scalar evaluator at every level), and for one type
+/* ... for two types (the scalar evaluator at every level; with the second
+ * type on a slab, the AVX-512 evaluator on the batches of one type), and for one type
  * with each case of w_R and rc = 1 and 1.5 (one type: the AVX-512 evaluator,
  * pair_dpd.h, and its two forms of r / rc) */
 static void levels_same_forces(void **state)
 {
     (void)state;
     same_forces_at_levels(1, 2.0, 1.0);
+    same_forces_at_levels(2, 0.42, 1.0);
     const double sexp[] = {2.0, 1.0, 0.5, 0.42};
     for (int k = 0; k < 4; k++) same_forces_at_levels(0, sexp[k], 1.0);   /* r / rc as a product */
     same_forces_at_levels(0, 0.42, 1.5);                                   /* r / rc divided */

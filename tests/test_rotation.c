@@ -206,8 +206,9 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
 }
 
 /* The force loop of steps without the virial (forces.c pan_walk_batch: the
- * pairs lane by lane, vectorised at each instruction set) gives the same
- * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force),
+ * pairs lane by lane, vectorised at each instruction set; on AVX-512 also
+ * the measurement steps of one-type batches, with the virial) gives the same
+ * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force, the portable level),
  * forces and torques, at every weight exponent case (s = 0.5, 1, 2 and pow),
  * with and without gamma^S, with and without Lees-Edwards shear, with two
  * types and with one (whose parameters the lanes read once: uniform; its
@@ -260,7 +261,8 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
             if (pass == 1 && nt == 2) system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
             if (pass == 1 && nt == 1) system_set_pair(&s, 0, 0, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
             PairVirial pv = {.bin_axis = -1};
-            forces_compute(&s, &nl, &fw, &pv);   /* pair by pair */
+            simd_cap(0);
+            forces_compute(&s, &nl, &fw, &pv);   /* pair by pair (the portable level) */
             memcpy(f0, s.f, 3 * (size_t)s.n * sizeof(double));
             memcpy(f0 + 3 * s.n, s.torque, 3 * (size_t)s.n * sizeof(double));
             double fmaxv = 0.0, tmaxv = 0.0;
@@ -272,6 +274,11 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
                 const int same = memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0
                               && memcmp(f0 + 3 * s.n, s.torque, 3 * (size_t)s.n * sizeof(double)) == 0;
                 CHECK_TRUE(same, "lane-wise forces and torques differ from the pair-by-pair bits (level %d, types %d, shear %d, pass %d)",
+                           level, nt, le, pass);
+                PairVirial pvl = {.bin_axis = -1};   /* a measurement step (AVX-512: lane by lane) */
+                forces_compute(&s, &nl, &fw, &pvl);
+                CHECK_TRUE(memcmp(&pv, &pvl, sizeof pv) == 0 && memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0,
+                           "the virial or forces of a measurement step differ from the pair-by-pair bits (level %d, types %d, shear %d, pass %d)",
                            level, nt, le, pass);
             }
             simd_cap(best);

@@ -294,19 +294,28 @@ static inline __attribute__((always_inline)) void pair_close(int i, PairAcc *acc
 
 #ifdef DPD_HAVE_X86_SIMD
 /* The standard pairs of a walk batch [i, ie) on AVX-512 (dpd_pair_lanes_avx512,
- * the same bits as dpd_pair_batch): one type pair u, no shear, no virial;
- * every particle of the batch closed after its pairs. */
-__attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s, int i, int ie, const int *near,
-        const double *pl, const double *noise, const int *count, PairAcc *acc, const PairParams *u,
-        const double *wr)
+ * the same bits as dpd_pair_batch): one type pair u, no shear; pv != NULL
+ * (measurement steps): the virial and energy too (not binned, no frozen
+ * type). Every particle of the batch closed after its pairs. Compiled once
+ * without the virial and once with it (the lanes are inlined). */
+static inline __attribute__((target("avx512f"), always_inline))
+void dpd_batch_lanes(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
+                     const int *count, PairAcc *acc, const PairParams *u, const double *wr, PairVirial *pv)
 {
     const int wcase = u->s == 2.0 ? 2 : u->s == 1.0 ? 1 : u->s == 0.5 ? 0 : -1;
     const double inv_rc = rc_power_of_two_inverse(u->rc);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
         dpd_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, wcase,
-                              wcase < 0 ? wr + off : NULL, inv_rc);
+                              wcase < 0 ? wr + off : NULL, inv_rc, pv);
         pair_close(p, acc, MODEL_DPD);
     }
+}
+__attribute__((target("avx512f"))) static void dpd_batch_avx512(const System *s, int i, int ie, const int *near,
+        const double *pl, const double *noise, const int *count, PairAcc *acc, const PairParams *u,
+        const double *wr, PairVirial *pv)
+{
+    if (pv) dpd_batch_lanes(s, i, ie, near, pl, noise, count, acc, u, wr, pv);
+    else dpd_batch_lanes(s, i, ie, near, pl, noise, count, acc, u, wr, NULL);
 }
 #endif
 
@@ -343,18 +352,25 @@ void pan_evaluate_lanes(const System *s, int i, int ie, int *near, double (*dd)[
 
 #ifdef DPD_HAVE_X86_SIMD
 /* The Pan 2008 pairs of a walk batch [i, ie) on AVX-512 (pan_pair_lanes_avx512,
- * the same bits as the lanes): one type whose weight is not a general power,
- * no shear, no virial; entry q's noise at noise[v * RNG_BATCH + q]. */
-__attribute__((target("avx512f"))) static void pan_batch_avx512(const System *s, int i, int ie, const int *near,
-        const double *pl, const double *noise, const int *count, PairAcc *acc)
+ * the same bits as the lanes): one type pair u whose weight is not a general
+ * power, no shear; pv as dpd_batch_lanes'; entry q's noise at
+ * noise[v * RNG_BATCH + q]. */
+static inline __attribute__((target("avx512f"), always_inline))
+void pan_batch_lanes(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
+                     const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv)
 {
-    const PairParams *u = &s->pair[0][0];
     const int mode = pan_weight_mode(u);
     const double inv_rc = rc_power_of_two_inverse(u->rc);
     for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
-        pan_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, mode, inv_rc);
+        pan_pair_lanes_avx512(s, p, near + off, pl + off, noise + off, count[p - i], acc, u, mode, inv_rc, pv);
         pair_close(p, acc, MODEL_PAN2008);
     }
+}
+__attribute__((target("avx512f"))) static void pan_batch_avx512(const System *s, int i, int ie, const int *near,
+        const double *pl, const double *noise, const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv)
+{
+    if (pv) pan_batch_lanes(s, i, ie, near, pl, noise, count, acc, u, pv);
+    else pan_batch_lanes(s, i, ie, near, pl, noise, count, acc, u, NULL);
 }
 #endif
 
@@ -432,6 +448,31 @@ __attribute__((target("avx512f"))) static int walk_gather_avx512_planes(const Sy
 { return walk_gather(s, nl, i, i1, near, NULL, pl, count, id_a, id_b, np_out, 0, 1, 1); }
 #endif
 
+#ifdef DPD_HAVE_X86_SIMD
+/* The type pair of a walk batch whose particles [i, ie) and partners
+ * near[0 .. np) are all of one type t: &s->pair[t][t]; NULL if it mixes types,
+ * or on a measurement step (pv) if t is frozen (the force on frozen types is
+ * the pair-by-pair evaluators' to record). */
+static inline const PairParams *batch_one_type(const System *s, int i, int ie, const int *near, int np,
+                                               const PairVirial *pv)
+{
+    const unsigned t = s->type[i];
+    unsigned mixed = 0;
+    if (s->ntypes > 1) {
+        for (int p = i + 1; p < ie; p++) mixed |= s->type[p] ^ t;
+        for (int q = 0; q < np; q++) mixed |= s->type[near[q]] ^ t;
+    }
+    return mixed || (pv && MOD_FROZEN(&s->types[t])) ? NULL : &s->pair[t][t];
+}
+
+/* A batch's planes (x, y, z, r^2, PAIR_PLANE apart) as the rows dd[q] of the pair-by-pair evaluators */
+static void planes_to_rows(const double *pl, int np, double (*dd)[4])
+{
+    for (int q = 0; q < np; q++)
+        for (int c = 0; c < 4; c++) dd[q][c] = pl[c * PAIR_PLANE + q];
+}
+#endif
+
 /* The walk over the particles [i0, i1) of one chunk. The list entries of
  * consecutive particles are gathered up to PAIR_BATCH at a time; those inside
  * the largest cutoff (pairs_in_range) get their noise in one call (Philox
@@ -455,14 +496,12 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
     const int wide = !le && s->box.dim == 3 && simd_level() == SIMD_AVX512;
 #endif
     const int general = model == MODEL_DPD && scene_weights_general(s);
-    /* standard DPD of one type pair in 3D, no shear, no virial: the AVX-512
-     * evaluator (lists longer than a batch go through the scalar one) */
-    const PairParams *lanes = NULL;
 #ifdef DPD_HAVE_X86_SIMD
+    /* 3D, no shear, no binned virial: the batches into planes, and each batch
+     * whose particles are all of one type (in a scene of several, most are the
+     * solvent's) to the AVX-512 evaluator of that type pair */
     double pl[4 * PAIR_PLANE], wr[PAIR_BATCH + 8];
-    if (model == MODEL_DPD && wide && !pv && s->ntypes == 1) lanes = &s->pair[0][0];
-    /* Pan 2008 of one type without the virial: the lanes read the planes in place */
-    const int pan_planes = model == MODEL_PAN2008 && wide && !pv && s->ntypes == 1 && !weight_general(s->pair[0][0].s);
+    const int planes = wide && (!pv || pv->nbins == 0);
 #endif
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
@@ -480,18 +519,19 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         }
         int np, ie;
 #ifdef DPD_HAVE_X86_SIMD
-        if (lanes) {   /* the one-type evaluator: separations in planes */
+        if (planes) {
             ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
             rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
-            if (general) batch_random_weights_avx512(lanes, pl + 3 * PAIR_PLANE, np, wr);
-            dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, lanes, wr);
-            i = ie;
-            continue;
-        }
-        if (pan_planes) {
-            ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
-            rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
-            pan_batch_avx512(s, i, ie, near, pl, noise, count, acc);
+            const PairParams *u = batch_one_type(s, i, ie, near, np, pv);
+            if (u && model == MODEL_DPD) {
+                if (weight_general(u->s)) batch_random_weights_avx512(u, pl + 3 * PAIR_PLANE, np, wr);
+                dpd_batch_avx512(s, i, ie, near, pl, noise, count, acc, u, wr, pv);
+            } else if (u && !weight_general(u->s)) {
+                pan_batch_avx512(s, i, ie, near, pl, noise, count, acc, u, pv);
+            } else {   /* several type pairs, or Pan 2008 with a general power: pair by pair */
+                planes_to_rows(pl, np, dd);
+                pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1, general);
+            }
             i = ie;
             continue;
         }

@@ -181,6 +181,23 @@ PairLanes8 pair_lanes_load_avx512(const double *pl, const int *near, int q0, int
     g.j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
     return g;
 }
+
+/* A measurement step's sums of eight pairs: their virial terms (t[k], lane l
+ * pair l's component k = 9 part + 3 a + b, PairVirial W's order) and energies
+ * e, added pair by pair in list order (the lanes set in act) into W and epot
+ * as the pair-by-pair evaluators add them: the same bits. */
+static inline __attribute__((target("avx512f"), always_inline))
+void virial_lanes_add(PairVirial *pv, const __m512d t[PAIR_PARTS * 9], __m512d e, __mmask8 act)
+{
+    double T[PAIR_PARTS * 9][8], E[8], *W = &pv->W[0][0][0];
+    for (int k = 0; k < PAIR_PARTS * 9; k++) _mm512_storeu_pd(T[k], t[k]);
+    _mm512_storeu_pd(E, e);
+    for (unsigned b = act; b; b &= b - 1) {
+        const int l = __builtin_ctz(b);
+        for (int k = 0; k < PAIR_PARTS * 9; k++) W[k] += T[k][l];
+        pv->epot += E[l];
+    }
+}
 #endif
 
 #endif

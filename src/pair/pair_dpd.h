@@ -100,7 +100,8 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], co
 
 #ifdef DPD_HAVE_X86_SIMD
 #include <immintrin.h>
-/* dpd_pair_batch for one type pair (u) without shear or virial, the per-pair
+/* dpd_pair_batch for one type pair (u) without shear (pv != NULL: the virial
+ * and energy as dpd_pair_record forms them, no frozen type, no bins), the per-pair
  * arithmetic eight pairs at a time on AVX-512: the same IEEE operations in
  * the same order (no contraction), so the same F_ij bits; the sums into
  * acc->fi and -F_ij into f_j are then added pair by pair in list order, as
@@ -111,8 +112,9 @@ void dpd_pair_batch(const System *s, int i, const int *near, double (*dd)[4], co
 static inline __attribute__((target("avx512f"), always_inline))
 void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *theta,
                            int m, PairAcc *acc, const PairParams *u, const int wcase, const double *wr_batch,
-                           double inv_rc)
+                           double inv_rc, PairVirial *pv)
 {
+    const double energy = 0.5 * u->a * u->rc;   /* pair_energy's first factors */
     const double *v = s->v_pred;
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
     const __m512d rc2 = _mm512_set1_pd(u->rc2), one = _mm512_set1_pd(1.0);
@@ -140,6 +142,16 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
         const __m512d fd = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(ngamma, wr), wr), edv); /* eq. 3 */
         const __m512d fr = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(sigma, wr), _mm512_maskz_loadu_pd(live, theta + q0)), isdt); /* eq. 4 */
         const __m512d ft = _mm512_add_pd(_mm512_add_pd(fc, fd), fr);
+        if (pv) {   /* dpd_pair_record: r_a r_b F / r by part, the energy a rc w_C^2 / 2 */
+            const __m512d d3[3] = {dx, dy, dz}, part[PAIR_PARTS] = {fc, fd, fr};
+            __m512d t[PAIR_PARTS * 9];
+            for (int q = 0; q < PAIR_PARTS; q++) {
+                const __m512d g = _mm512_mul_pd(part[q], inv_r);
+                for (int a3 = 0; a3 < 3; a3++)
+                    for (int c = 0; c < 3; c++) t[9 * q + 3 * a3 + c] = _mm512_mul_pd(_mm512_mul_pd(d3[a3], d3[c]), g);
+            }
+            virial_lanes_add(pv, t, _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(energy), wc), wc), act);
+        }
         double fx[8], fy[8], fz[8];
         _mm512_storeu_pd(fx, _mm512_mul_pd(ft, ex));
         _mm512_storeu_pd(fy, _mm512_mul_pd(ft, ey));

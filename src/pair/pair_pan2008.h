@@ -328,7 +328,9 @@ static inline __attribute__((target("avx512f"), always_inline)) __m512d neg(__m5
     return _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(x), _mm512_set1_epi64((long long)0x8000000000000000ULL)));
 }
 /* Passes 1-3 for one type pair u whose weight is not a general power, no
- * shear, no virial: particle i's m pairs (near; pl: separations x, y, z, r^2
+ * shear; pv != NULL (measurement steps, no frozen type, no bins): the virial
+ * by part and the energy as pan_pair_record forms them, added pair by pair
+ * (virial_lanes_add): particle i's m pairs (near; pl: separations x, y, z, r^2
  * as planes, PAIR_PLANE apart; nz: rng_pair_normals' planes from entry 0)
  * eight at a time on AVX-512, with pan_lanes_loop's operations in its order
  * (no contraction: the same bits), v_j and Omega_j gathered, then added to i
@@ -336,8 +338,9 @@ static inline __attribute__((target("avx512f"), always_inline)) __m512d neg(__m5
  * rc_power_of_two_inverse(u->rc). */
 static inline __attribute__((target("avx512f"), always_inline))
 void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double *pl, const double *nz, int m,
-                           PairAcc *acc, const PairParams *u, const int mode, double inv_rc)
+                           PairAcc *acc, const PairParams *u, const int mode, double inv_rc, PairVirial *pv)
 {
+    const double energy = 0.5 * u->a * u->rc;   /* pair_energy's first factors */
     const double *v = s->v_pred, *w = s->omega_pred;
     const __m512d vix = _mm512_set1_pd(v[3 * i]), viy = _mm512_set1_pd(v[3 * i + 1]), viz = _mm512_set1_pd(v[3 * i + 2]);
     const __m512d wix = _mm512_set1_pd(w[3 * i]), wiy = _mm512_set1_pd(w[3 * i + 1]), wiz = _mm512_set1_pd(w[3 * i + 2]);
@@ -373,6 +376,13 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
         double F[3][8], tau[3][8];
         __m512d F0 = _mm512_mul_pd(ft, e0), F1 = _mm512_mul_pd(ft, e1), F2 = _mm512_mul_pd(ft, e2);
         __m512d T0 = z0, T1 = z0, T2 = z0;
+        __m512d P[PAIR_PARTS][3];   /* measurement steps: F by part (pan_pair_force's F) */
+        if (pv) {
+            const __m512d ee[3] = {e0, e1, e2};
+            for (int c = 0; c < 3; c++) {
+                P[0][c] = _mm512_mul_pd(fc, ee[c]); P[1][c] = _mm512_mul_pd(fdc, ee[c]); P[2][c] = _mm512_mul_pd(frc, ee[c]);
+            }
+        }
         if (shear) {
             const __m512d w0 = _mm512_add_pd(wix, _mm512_mask_i32gather_pd(z0, live, j3, w, 8));
             const __m512d w1 = _mm512_add_pd(wiy, _mm512_mask_i32gather_pd(z0, live, j3, w + 1, 8));
@@ -391,15 +401,28 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
             const __m512d xe1 = _mm512_sub_pd(_mm512_mul_pd(x2, e0), _mm512_mul_pd(x0, e2));
             const __m512d xe2 = _mm512_sub_pd(_mm512_mul_pd(x0, e1), _mm512_mul_pd(x1, e0));
             const __m512d frs = _mm512_mul_pd(_mm512_mul_pd(sshear, f), isdt);
-            /* eqs 13-14 and 15, non-central */
-            const __m512d s0 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v0, _mm512_mul_pd(edv, e0)), o0)), _mm512_mul_pd(frs, xe0));
-            const __m512d s1 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v1, _mm512_mul_pd(edv, e1)), o1)), _mm512_mul_pd(frs, xe1));
-            const __m512d s2 = _mm512_add_pd(_mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v2, _mm512_mul_pd(edv, e2)), o2)), _mm512_mul_pd(frs, xe2));
+            /* eqs 13-14 and 15, non-central: dissipative fd, random fr */
+            const __m512d fd0 = _mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v0, _mm512_mul_pd(edv, e0)), o0)), fr0 = _mm512_mul_pd(frs, xe0);
+            const __m512d fd1 = _mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v1, _mm512_mul_pd(edv, e1)), o1)), fr1 = _mm512_mul_pd(frs, xe1);
+            const __m512d fd2 = _mm512_mul_pd(ngs, _mm512_add_pd(_mm512_sub_pd(v2, _mm512_mul_pd(edv, e2)), o2)), fr2 = _mm512_mul_pd(frs, xe2);
+            const __m512d s0 = _mm512_add_pd(fd0, fr0), s1 = _mm512_add_pd(fd1, fr1), s2 = _mm512_add_pd(fd2, fr2);
+            if (pv) {   /* pan_pair_force's parts: F[1] += fds, F[2] += frs */
+                P[1][0] = _mm512_add_pd(P[1][0], fd0); P[1][1] = _mm512_add_pd(P[1][1], fd1); P[1][2] = _mm512_add_pd(P[1][2], fd2);
+                P[2][0] = _mm512_add_pd(P[2][0], fr0); P[2][1] = _mm512_add_pd(P[2][1], fr1); P[2][2] = _mm512_add_pd(P[2][2], fr2);
+            }
             /* eq. 1: tau = -(h x F^S) */
             T0 = neg(_mm512_sub_pd(_mm512_mul_pd(h1, s2), _mm512_mul_pd(h2, s1)));
             T1 = neg(_mm512_sub_pd(_mm512_mul_pd(h2, s0), _mm512_mul_pd(h0, s2)));
             T2 = neg(_mm512_sub_pd(_mm512_mul_pd(h0, s1), _mm512_mul_pd(h1, s0)));
             F0 = _mm512_add_pd(F0, s0); F1 = _mm512_add_pd(F1, s1); F2 = _mm512_add_pd(F2, s2);
+        }
+        if (pv) {   /* pan_pair_record: r_a F_b by part, the energy a rc w_C^2 / 2 */
+            const __m512d dv3[3] = {d0, d1, d2};
+            __m512d t[PAIR_PARTS * 9];
+            for (int q = 0; q < PAIR_PARTS; q++)
+                for (int a3 = 0; a3 < 3; a3++)
+                    for (int c = 0; c < 3; c++) t[9 * q + 3 * a3 + c] = _mm512_mul_pd(dv3[a3], P[q][c]);
+            virial_lanes_add(pv, t, _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(energy), wc), wc), act);
         }
         _mm512_storeu_pd(F[0], F0); _mm512_storeu_pd(F[1], F1); _mm512_storeu_pd(F[2], F2);
         _mm512_storeu_pd(tau[0], T0); _mm512_storeu_pd(tau[1], T1); _mm512_storeu_pd(tau[2], T2);
