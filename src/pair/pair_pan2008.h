@@ -417,11 +417,11 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
             F0 = _mm512_add_pd(F0, s0); F1 = _mm512_add_pd(F1, s1); F2 = _mm512_add_pd(F2, s2);
         }
         if (pv) {   /* pan_pair_record: r_a F_b by part, the energy a rc w_C^2 / 2 */
-            const __m512d dv3[3] = {d0, d1, d2};
+            const __m512d d3[3] = {d0, d1, d2};
             __m512d t[PAIR_PARTS * 9];
             for (int q = 0; q < PAIR_PARTS; q++)
                 for (int a3 = 0; a3 < 3; a3++)
-                    for (int c = 0; c < 3; c++) t[9 * q + 3 * a3 + c] = _mm512_mul_pd(dv3[a3], P[q][c]);
+                    for (int c = 0; c < 3; c++) t[9 * q + 3 * a3 + c] = _mm512_mul_pd(d3[a3], P[q][c]);
             virial_lanes_add(pv, t, _mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(energy), wc), wc), act);
         }
         _mm512_storeu_pd(F[0], F0); _mm512_storeu_pd(F[1], F1); _mm512_storeu_pd(F[2], F2);
