@@ -148,7 +148,8 @@ static inline AVX512 __m512d fold_avx512(__m512d d, __m512d half, __m512d L, con
     return d;
 }
 static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, int i, int k0, int k1,
-                               int *near, double (*dd)[4], double *pl, uint32_t *id_a, uint32_t *id_b, const int soa)
+                               int *near, double (*dd)[4], double *pl, uint32_t *id_a, uint32_t *id_b, const int soa,
+                               int ahead)
 {
     const __m512i ida = _mm512_set1_epi32((int)s->id[i]);
     const __m256i lane_bit = _mm256_setr_epi32(31, 30, 29, 28, 27, 26, 25, 24);   /* keep's bit l to the sign of lane l */
@@ -158,6 +159,12 @@ static inline AVX512 int range_avx512(const System *s, const NeighborList *nl, i
      * i and j moved less than skin / 2 since the build, which listed them
      * within rc + skin), so every fold would leave the separations as they are */
     const double reach = nl->cutoff + nl->skin + 1e-9;
+    if (ahead && i + ahead < s->n)   /* walk_prefetch_ahead */
+        for (int k = nl->start[i + ahead]; k < nl->start[i + ahead + 1]; k += 3) {   /* 3 particles' x: 72 B */
+            const int jj = nl->nbr[k];
+            _mm_prefetch((const char *)(x + 3 * jj), _MM_HINT_T0);
+            _mm_prefetch((const char *)(s->v_pred + 3 * jj), _MM_HINT_T0);
+        }
     int interior = 1;
     for (int a = 0; a < 3; a++) interior &= x[3 * i + a] >= reach && x[3 * i + a] <= b->L[a] - reach;
     const __m512d xi = _mm512_set1_pd(x[3 * i]), yi = _mm512_set1_pd(x[3 * i + 1]), zi = _mm512_set1_pd(x[3 * i + 2]);
@@ -416,21 +423,22 @@ static inline void pair_ids(const System *s, int i, int j, uint32_t *lo, uint32_
  * AVX-512 candidate pass (range_avx512), compiled in walk_gather_avx512. */
 static inline __attribute__((always_inline))
 int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *near, double (*dd)[4], double *pl,
-                int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, const int le, const int wide, const int soa)
+                int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, const int le, const int wide, const int soa,
+                int ahead)
 {
     int np = 0, ie = i;
     while (ie < i1 && ie - i < PAIR_BATCH && nl->start[ie + 1] - nl->start[ie] <= PAIR_BATCH - np) {
         int c;
 #ifdef DPD_HAVE_X86_SIMD
         if (wide) c = range_avx512(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, pl + np,
-                                   id_a + np, id_b + np, soa);
+                                   id_a + np, id_b + np, soa, ahead);
         else
 #endif
         {
             c = pairs_in_range(s, nl, ie, nl->start[ie], nl->start[ie + 1], near + np, dd + np, le);
             for (int q = np; q < np + c; q++) pair_ids(s, ie, near[q], id_a + q, id_b + q);
         }
-        (void)wide; (void)pl; (void)soa;
+        (void)wide; (void)pl; (void)soa; (void)ahead;
         count[ie - i] = c;
         np += c;
         ie++;
@@ -440,12 +448,25 @@ int walk_gather(const System *s, const NeighborList *nl, int i, int i1, int *nea
 }
 #ifdef DPD_HAVE_X86_SIMD
 __attribute__((target("avx512f"))) static int walk_gather_avx512(const System *s, const NeighborList *nl, int i, int i1,
-        int *near, double (*dd)[4], int *count, uint32_t *id_a, uint32_t *id_b, int *np_out)
-{ return walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, np_out, 0, 1, 0); }
+        int *near, double (*dd)[4], int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, int ahead)
+{ return walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, np_out, 0, 1, 0, ahead); }
 /* the same into planes, for the AVX-512 evaluator */
 __attribute__((target("avx512f"))) static int walk_gather_avx512_planes(const System *s, const NeighborList *nl, int i,
-        int i1, int *near, double *pl, int *count, uint32_t *id_a, uint32_t *id_b, int *np_out)
-{ return walk_gather(s, nl, i, i1, near, NULL, pl, count, id_a, id_b, np_out, 0, 1, 1); }
+        int i1, int *near, double *pl, int *count, uint32_t *id_a, uint32_t *id_b, int *np_out, int ahead)
+{ return walk_gather(s, nl, i, i1, near, NULL, pl, count, id_a, id_b, np_out, 0, 1, 1, ahead); }
+
+/* How many particles ahead the AVX-512 candidate pass fetches a particle's
+ * candidates (x, v_pred) toward the cache; 0: not at all. The walk's half
+ * shell comes back to a cell layer's particles one layer later: once a
+ * layer's data (x, v_pred and the force buffer, 72 B per particle) outgrows a
+ * quarter of a 1 MB L2, they come from L3 or memory (bench/RESULTS.md: at 1.9e5
+ * particles the prefetch gains 6-10 %; at 3000, where it all stays in L2, it
+ * costs about 4 %). It changes no number. */
+static int walk_prefetch_ahead(const System *s, const NeighborList *nl)
+{
+    const double layer_bytes = 72.0 * s->n / nl->nc[2];
+    return layer_bytes > 256.0 * 1024.0 ? 16 : 0;
+}
 #endif
 
 #ifdef DPD_HAVE_X86_SIMD
@@ -502,6 +523,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
      * solvent's) to the AVX-512 evaluator of that type pair */
     double pl[4 * PAIR_PLANE], wr[PAIR_BATCH + 8];
     const int planes = wide && (!pv || pv->nbins == 0);
+    const int ahead = wide ? walk_prefetch_ahead(s, nl) : 0;
 #endif
     for (int a = 0; a < 3; a++) acc->fi[a] = acc->ti[a] = 0.0;
     for (int i = i0; i < i1;) {
@@ -520,7 +542,7 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
         int np, ie;
 #ifdef DPD_HAVE_X86_SIMD
         if (planes) {
-            ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np);
+            ie = walk_gather_avx512_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np, ahead);
             rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
             const PairParams *u = batch_one_type(s, i, ie, near, np, pv);
             if (u && model == MODEL_DPD) {
@@ -535,10 +557,10 @@ void pair_walk(const System *s, const NeighborList *nl, int i0, int i1, PairAcc 
             i = ie;
             continue;
         }
-        if (wide) ie = walk_gather_avx512(s, nl, i, i1, near, dd, count, id_a, id_b, &np);
+        if (wide) ie = walk_gather_avx512(s, nl, i, i1, near, dd, count, id_a, id_b, &np, ahead);
         else
 #endif
-        ie = walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, &np, le, 0, 0);
+        ie = walk_gather(s, nl, i, i1, near, dd, NULL, count, id_a, id_b, &np, le, 0, 0, 0);
         rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
         pair_evaluate_batch(s, i, ie, near, dd, noise, count, acc, pv, model, le, 1, general);
         i = ie;
