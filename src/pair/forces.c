@@ -460,8 +460,8 @@ __attribute__((target("avx512f"))) static int walk_gather_avx512_planes(const Sy
  * shell comes back to a cell layer's particles one layer later: once a
  * layer's data (x, v_pred and the force buffer, 72 B per particle) outgrows a
  * quarter of a 1 MB L2, they come from L3 or memory (bench/RESULTS.md: at 1.9e5
- * particles the prefetch gains 6-10 %; at 3000, where it all stays in L2, it
- * costs about 4 %). It changes no number. */
+ * particles the prefetch gained 2-10 % in two sets of alternating pairs; at
+ * 3000, where it all stays in L2, it cost 3-5 %). It changes no number. */
 static int walk_prefetch_ahead(const System *s, const NeighborList *nl)
 {
     const double layer_bytes = 72.0 * s->n / nl->nc[2];
