@@ -1,4 +1,5 @@
 /* random.c - Philox counter blocks as a GSL generator, for GSL's ziggurat. */
+#include <string.h>
 #include <gsl/gsl_rng.h>
 #include <gsl/gsl_randist.h>
 #include "random.h"
@@ -8,8 +9,7 @@ static unsigned long counter_get(void *vs)
     CounterRng *c = vs;
     if (c->used == 4) {
         c->ctr.v[1] += 1u << 24;   /* next block of the same pair and step */
-        c->out = c->have_next ? c->next : philox4x32(c->ctr, c->key);
-        c->have_next = 0;
+        c->out = philox4x32(c->ctr, c->key);
         c->used = 0;
     }
     return c->out.v[c->used++];
@@ -228,7 +228,13 @@ static inline int zig_accept(uint32_t k, double *z)
 {
     const uint32_t i = k & 0x7f, j = k >> 8;
     const double x = j * zig_w[i];
-    *z = (k & 0x80) ? x : -x;   /* GSL: sign * sigma * x, sigma = 1 */
+    /* GSL: sign * sigma * x, sigma = 1; x >= 0, so -x is x with its sign bit
+     * set, here without a branch (the sign is a fair coin: a branch on it is
+     * guessed wrong half the time) */
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    b ^= (uint64_t)(~k & 0x80u) << 56;
+    memcpy(z, &b, sizeof b);
     return j < zig_k[i];
 }
 
@@ -245,6 +251,18 @@ int rng_ziggurat_fast(uint32_t k, double *z)
 }
 
 #ifdef DPD_HAVE_X86_SIMD
+/* zig_k[i] for 16 strips i < 128 from registers (two-table permutes of 32
+ * entries, then bits 5 and 6 of i choose): cheaper than a gather */
+__attribute__((target("avx512f"))) static inline __m512i zig_k_lookup_avx512(__m512i i)
+{
+    const __m512i *t = (const __m512i *)zig_k;
+    const __m512i a = _mm512_permutex2var_epi32(_mm512_loadu_si512(t), i, _mm512_loadu_si512(t + 1));
+    const __m512i b = _mm512_permutex2var_epi32(_mm512_loadu_si512(t + 2), i, _mm512_loadu_si512(t + 3));
+    const __m512i c = _mm512_permutex2var_epi32(_mm512_loadu_si512(t + 4), i, _mm512_loadu_si512(t + 5));
+    const __m512i d = _mm512_permutex2var_epi32(_mm512_loadu_si512(t + 6), i, _mm512_loadu_si512(t + 7));
+    const __mmask16 b5 = _mm512_test_epi32_mask(i, _mm512_set1_epi32(32)), b6 = _mm512_test_epi32_mask(i, _mm512_set1_epi32(64));
+    return _mm512_mask_blend_epi32(b6, _mm512_mask_blend_epi32(b5, a, b), _mm512_mask_blend_epi32(b5, c, d));
+}
 /* The ziggurat's first step on 16 words at a time: the same product
  * j * zig_w[i] and the same sign flip as zig_accept, so the same bits; ok[g]
  * has bit l set if word 16 g + l was accepted at once. The last group is
@@ -257,7 +275,7 @@ __attribute__((target("avx512f"))) static int zig_avx512(int m, const uint32_t *
         const __mmask16 live = m - q >= 16 ? 0xffff : (__mmask16)((1u << (m - q)) - 1);
         const __m512i k = _mm512_maskz_loadu_epi32(live, w + q);   /* 0 past m: strip 0, j = 0 */
         const __m512i i = _mm512_and_si512(k, low7), j = _mm512_srli_epi32(k, 8);
-        ok[q / 16] = _mm512_cmplt_epu32_mask(j, _mm512_i32gather_epi32(i, (const int *)zig_k, 4)) | (__mmask16)~live;
+        ok[q / 16] = _mm512_cmplt_epu32_mask(j, zig_k_lookup_avx512(i)) | (__mmask16)~live;
         const __mmask16 neg = _mm512_testn_epi32_mask(k, bit7);
         for (int h = 0; h < 2; h++) {
             const __m256i ih = h ? _mm512_extracti64x4_epi64(i, 1) : _mm512_castsi512_si256(i);
@@ -302,24 +320,79 @@ __attribute__((target("avx2"))) static int zig_avx2(int m, const uint32_t *w, do
 }
 #endif
 
-/* One normal from c's stream, as gsl_ran_gaussian_ziggurat draws it: its
- * first step inline (zig_accept is that step); if the word is not accepted
- * at once, it is put back (used >= 1 after a get, also across blocks) and
- * GSL draws from it on, so the sequence is GSL's word for word. */
-static double counter_normal_first_step(CounterRng *c)
+/* A pair's sequence from a given word on, as a GSL generator: its first
+ * eight words (blocks 0 and 1) in an array, so that a resumed pair's words
+ * are read without a test per word; a word past them (1.4e-4 of the pairs of
+ * four variates, 1.7e-4 of those of one, which have four words) from its
+ * Philox block, computed then. */
+typedef struct {
+    uint32_t w[8];
+    int pos, lim;                 /* next word; words in w (4: block 1 not drawn) */
+    philox4x32_ctr_t ctr;         /* block 0's counter (rng_pair_start's) */
+    philox4x32_key_t key;
+} PairWords;
+
+static unsigned long words_get(void *vs)
 {
-    double z;
-    if (zig_accept((uint32_t)counter_get(c), &z)) return z;
-    c->used--;
-    return rng_counter_normal(c);
+    PairWords *c = vs;
+    const int p = c->pos++;
+    if (__builtin_expect(p < c->lim, 1)) return c->w[p];
+    philox4x32_ctr_t ctr = c->ctr;
+    ctr.v[1] += (uint32_t)(p >> 2) << 24;   /* block p / 4, as counter_get counts them */
+    return philox4x32(ctr, c->key).v[p & 3];
+}
+static double words_get_double(void *vs) { return words_get(vs) * (1.0 / 4294967296.0); }
+static const gsl_rng_type words_type = {
+    "philox4x32-10-pair-words", 0xffffffffUL, 0, sizeof(PairWords),
+    &counter_set, &words_get, &words_get_double
+};
+
+/* One normal from the pair's words at c->pos on, as gsl_ran_gaussian_ziggurat draws it */
+static double words_normal(PairWords *c)
+{
+    gsl_rng r = {&words_type, c};
+    return gsl_ran_gaussian_ziggurat(&r, 1.0);
+}
+
+/* One pair whose variate v0 the ziggurat did not accept at once: variates
+ * 0 ... v0 - 1 (in z already) took its first v0 words; GSL draws variate v0
+ * from word v0 on (not testing it first: a test known to fail is a branch the
+ * predictor gets wrong), and the later variates resume where GSL stopped. They
+ * are nearly always accepted at once (97.2 % each): their first steps are all
+ * taken before any is tested, and one test decides (one predictable branch,
+ * where a loop of its own per variate was one wrong guess per pair: the
+ * number of variates left is v0's, random). */
+static void pair_resume_one(PairWords *c, int v0, int nvar, double *z, int q)
+{
+    c->pos = v0;
+    const double first = words_normal(c);
+    if (nvar == 1) { z[q] = first; return; }
+    double t[4];   /* t[u]: variate v0 + u, t[0] GSL's */
+    t[0] = first;
+    unsigned all = 1;
+    for (int u = 1; u < 4; u++) {   /* the next three words' first steps (a word past the eight: GSL below) */
+        const int p = c->pos + u - 1, needed = v0 + u < nvar;
+        all &= (unsigned)(zig_accept(c->w[p < 8 ? p : 7], &t[u]) & (p < c->lim)) | (unsigned)!needed;
+    }
+    if (__builtin_expect(all, 1)) {   /* stores at indices, not branches on v0 (the fastest of three forms) */
+        double zz[7];
+        for (int v = 0; v < nvar; v++) zz[v] = z[v * RNG_BATCH + q];
+        for (int u = 0; u < 4; u++) zz[v0 + u] = t[u];
+        for (int v = 0; v < nvar; v++) z[v * RNG_BATCH + q] = zz[v];
+        return;
+    }
+    z[v0 * RNG_BATCH + q] = first;
+    for (int v = v0 + 1; v < nvar; v++) {   /* rare: a later variate not accepted at once either */
+        double x;
+        if (c->pos < c->lim && zig_accept(c->w[c->pos], &x)) { c->pos++; z[v * RNG_BATCH + q] = x; }
+        else z[v * RNG_BATCH + q] = words_normal(c);
+    }
 }
 
 /* The pairs of a batch whose variate v0[k] the ziggurat did not accept at
- * once (bad[k]: their index in the batch): variates 0 ... v0 - 1 took the first
- * v0 words of the pair's first block and are kept; the sequence resumes at
- * word v0 (after a rejection GSL draws further words, so the later variates'
- * words are not the batch's). The first block is the batch's and the second,
- * which most pairs of several variates reach, is drawn for all of them at once. */
+ * once (bad[k]: their index in the batch). The first block is the batch's and
+ * the second, which most pairs of several variates reach (GSL's path takes a
+ * second word), is drawn for all of them at once. */
 static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id_a, const uint32_t *id_b,
                                 const uint32_t (*w)[RNG_BATCH], int nbad, const int *bad, const int *v0,
                                 int nvar, double *z)
@@ -332,44 +405,66 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
     /* one variate rarely reaches the second block (its first has four words) */
     const int next = nvar > 1;
     if (next) philox_lanes(nbad, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32) + (1u << 24), lo, hi, w1);
+    PairWords c;   /* rng_pair_start's counter and key */
+    c.ctr.v[0] = (uint32_t)step; c.ctr.v[1] = (uint32_t)(step >> 32);
+    c.key.v[0] = seed; c.key.v[1] = STREAM_PAIR_NOISE;
+    c.lim = next ? 8 : 4;
     for (int k = 0; k < nbad; k++) {
         const int q = bad[k];
-        CounterRng c;   /* rng_pair_start's counter and key */
-        c.ctr.v[0] = (uint32_t)step; c.ctr.v[1] = (uint32_t)(step >> 32); c.ctr.v[2] = lo[k]; c.ctr.v[3] = hi[k];
-        c.key.v[0] = seed; c.key.v[1] = STREAM_PAIR_NOISE;
-        for (int u = 0; u < 4; u++) { c.out.v[u] = w[u][q]; c.next.v[u] = next ? w1[u][k] : 0; }
-        c.have_next = next;
-        c.used = v0[k];
-        /* variate v0's first word was not accepted (pair_normals tested it): GSL from
-         * that word on, without testing it again (a test known to fail is a branch
-         * the predictor gets wrong: 2.6 % of the Pan 2008 fluid's run) */
-        z[v0[k] * RNG_BATCH + q] = rng_counter_normal(&c);
-        for (int v = v0[k] + 1; v < nvar; v++) z[v * RNG_BATCH + q] = counter_normal_first_step(&c);
+        c.ctr.v[2] = lo[k]; c.ctr.v[3] = hi[k];
+        for (int u = 0; u < 4; u++) { c.w[u] = w[u][q]; c.w[4 + u] = next ? w1[u][k] : 0; }
+        pair_resume_one(&c, v0[k], nvar, z, q);
     }
 }
+
+#ifdef DPD_HAVE_X86_SIMD
+/* The pairs of groups of 16 (ok[v][g]: zig_avx512's bits) not accepted at
+ * once, without a branch per pair: each group's indices and first variates
+ * not accepted (v0), packed to the front of a register and stored at the end
+ * of the list (16 entries, the list has room). Returns their number. */
+__attribute__((target("avx512f"))) static int bad_pairs_avx512(int groups, const uint16_t (*ok)[RNG_BATCH / 16],
+                                                               int nvar, int *bad, int *v0)
+{
+    const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    int nbad = 0;
+    for (int g = 0; g < groups; g++) {
+        __mmask16 all = ok[0][g];
+        for (int v = 1; v < nvar; v++) all &= ok[v][g];
+        __m512i first = _mm512_setzero_si512();   /* the first variate not accepted: from the last down */
+        for (int v = nvar - 1; v >= 0; v--) first = _mm512_mask_mov_epi32(first, (__mmask16)~ok[v][g], _mm512_set1_epi32(v));
+        const __mmask16 b = (__mmask16)~all;
+        _mm512_storeu_si512(bad + nbad, _mm512_maskz_compress_epi32(b, _mm512_add_epi32(lane, _mm512_set1_epi32(16 * g))));
+        _mm512_storeu_si512(v0 + nbad, _mm512_maskz_compress_epi32(b, first));
+        nbad += __builtin_popcount(b);
+    }
+    return nbad;
+}
+#endif
 
 static void pair_normals(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
                          const int ordered, int nvar, double *z)
 {
     uint32_t w[4][RNG_BATCH];
     pair_blocks(seed, step, m, id_a, id_b, ordered, w);
-    int q0 = 0, nbad = 0, bad[RNG_BATCH], v0[RNG_BATCH];
+    int q0 = 0, nbad = 0, bad[RNG_BATCH + 16], v0[RNG_BATCH + 16];   /* + 16: bad_pairs_avx512's stores */
 #ifdef DPD_HAVE_X86_SIMD
     const int isa = simd_level();
     if (isa != SIMD_PORTABLE) {   /* 16 pairs at a time, variate by variate, then the pairs not accepted at once */
         uint16_t ok[4][RNG_BATCH / 16];
         for (int v = 0; v < nvar; v++)
             q0 = isa == SIMD_AVX512 ? zig_avx512(m, w[v], z + v * RNG_BATCH, ok[v]) : zig_avx2(m, w[v], z + v * RNG_BATCH, ok[v]);
-        for (int g = 0; g < (q0 + 15) / 16; g++) {
-            unsigned all = ok[0][g];
-            for (int v = 1; v < nvar; v++) all &= ok[v][g];
-            for (unsigned b = (uint16_t)~all; b; b &= b - 1) {
-                const int l = __builtin_ctz(b);
-                unsigned not_ok = 0;   /* bit v: variate v not accepted (no branch on which) */
-                for (int v = 0; v < nvar; v++) not_ok |= (~(unsigned)ok[v][g] >> l & 1u) << v;
-                bad[nbad] = 16 * g + l; v0[nbad++] = __builtin_ctz(not_ok);   /* the first variate not accepted */
+        if (isa == SIMD_AVX512) nbad = bad_pairs_avx512((q0 + 15) / 16, (const uint16_t (*)[RNG_BATCH / 16])ok, nvar, bad, v0);
+        else
+            for (int g = 0; g < (q0 + 15) / 16; g++) {
+                unsigned all = ok[0][g];
+                for (int v = 1; v < nvar; v++) all &= ok[v][g];
+                for (unsigned b = (uint16_t)~all; b; b &= b - 1) {
+                    const int l = __builtin_ctz(b);
+                    unsigned not_ok = 0;   /* bit v: variate v not accepted (no branch on which) */
+                    for (int v = 0; v < nvar; v++) not_ok |= (~(unsigned)ok[v][g] >> l & 1u) << v;
+                    bad[nbad] = 16 * g + l; v0[nbad++] = __builtin_ctz(not_ok);   /* the first variate not accepted */
+                }
             }
-        }
     }
 #endif
     for (int q = q0; q < m; q++) {

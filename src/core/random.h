@@ -54,8 +54,6 @@ typedef struct {
     philox4x32_ctr_t ctr, out;
     philox4x32_key_t key;
     int used;
-    int have_next;            /* next: the following block, already computed (rng_pair_normals) */
-    philox4x32_ctr_t next;
 } CounterRng;
 
 double rng_counter_normal(CounterRng *c);
@@ -67,7 +65,6 @@ static inline __attribute__((always_inline)) void rng_counter_start(CounterRng *
     c->key.v[0] = seed; c->key.v[1] = stream;
     c->out = philox4x32(c->ctr, c->key);
     c->used = 0;
-    c->have_next = 0;
 }
 
 /* The noise sequence of the pair (i, j) at a step, the same for (j, i): its
