@@ -613,10 +613,15 @@ static void sum_block(const ForceWork *w, double *f0, const double *rest, int b)
         if (!own) for (size_t k = k0; k < k1; k++) f0[k] = 0.0;
         return;
     }
-    for (size_t k = k0; k < k1; k++) {
-        double sum = own ? f0[k] : 0.0;
-        for (int q = 0; q < no; q++) sum += rest[(size_t)(other[q] - 1) * stride + k];
-        f0[k] = sum;
+    /* each element's sum in chunk order, as one sum per element would form
+     * it (0.0 first where chunk 0 wrote nothing): chunk by chunk over the
+     * block, so that the elements go side by side */
+    if (!own) for (size_t k = k0; k < k1; k++) f0[k] = 0.0;
+    for (int q = 0; q < no; q++) {
+        const double *restrict r = rest + (size_t)(other[q] - 1) * stride;
+        double *restrict f = f0;
+        #pragma omp simd
+        for (size_t k = k0; k < k1; k++) f[k] += r[k];
     }
 }
 
