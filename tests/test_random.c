@@ -10,6 +10,9 @@
  * to unit variance has kurtosis 1.8 and fails the kurtosis bound (0.02) by far.
  * The draws are deterministic (fixed seeds), so the outcome is reproducible. */
 #include "testutil.h"
+#include <stdlib.h>
+#include <gsl/gsl_rng.h>
+#include <gsl/gsl_randist.h>
 #include "random.h"
 #include "simd.h"
 
@@ -277,6 +280,107 @@ static void batch_past_its_words(void **state)
     simd_cap(best);
 }
 
+/* The batch path's wedge test (random.c wedge_avx512: GSL's heights
+ * bracketed by probing, a vector exp, a margin) takes GSL's decision on every
+ * word it settles: 4000 batches of 256 pairs (about 5.4e4 pairs not accepted
+ * at once with four variates, 1.4e4 with one) on the best level, bit for bit
+ * against one pair at a time; and the heights of the 127 strips below the
+ * tail are bracketed to 1e-6 (were none, every test would go to GSL: the
+ * same bits, and none of the speed). */
+static void wedge_same_as_gsl(void **state)
+{
+    (void)state;
+    CHECK_TRUE(rng_ziggurat_wedge_brackets(1e-6) == 127, "strips bracketed to 1e-6: %d of 127",
+               rng_ziggurat_wedge_brackets(1e-6));
+    uint64_t st = 99;
+    long bad = 0;
+    for (int rep = 0; rep < 4000; rep++) {
+        const int nvar = rep % 2 ? 4 : 1, m = RNG_BATCH;
+        const uint64_t step = tu_next(&st) >> 20;
+        uint32_t lo[RNG_BATCH], hi[RNG_BATCH];
+        for (int q = 0; q < m; q++) { lo[q] = (uint32_t)tu_next(&st) >> 1; hi[q] = lo[q] + 1 + (uint32_t)(tu_next(&st) % 1000); }
+        double z[4 * RNG_BATCH];
+        rng_pair_normals_ordered(SEED, step, m, lo, hi, nvar, z);
+        for (int q = 0; q < m; q++) {
+            CounterRng c;
+            rng_pair_start(&c, SEED, step, lo[q], hi[q]);
+            int fast = 1;
+            for (int v = 0; v < nvar; v++) {
+                const double one = rng_counter_normal(&c);
+                double x;
+                fast &= rng_ziggurat_fast(rng_block(SEED, STREAM_PAIR_NOISE, step, lo[q], hi[q]).v[v], &x);
+                if (memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) != 0) {
+                    CHECK_TRUE(0, "variate %d of pair %d (%d per pair, batch %d) %.17g != %.17g one at a time",
+                               v, q, nvar, rep, z[v * RNG_BATCH + q], one);
+                    return;
+                }
+            }
+            bad += !fast;
+        }
+    }
+    printf("wedge: %ld pairs not accepted at once, every variate GSL's\n", bad);
+    CHECK_TRUE(bad > 60000, "pairs not accepted at once: %ld (expected about 6.8e4)", bad);
+}
+
+/* GSL's own wedge decision for word k (not accepted at once) with U1 from u:
+ * a generator that counts its words; 2 (k and U1) = kept. */
+typedef struct { uint32_t k, u; int calls; } WordPair;
+static unsigned long wp_get(void *vs) { WordPair *p = vs; const int c = p->calls++; return c == 0 ? p->k : c == 1 ? p->u : 0x81u; }
+static double wp_get_double(void *vs) { return wp_get(vs) * (1.0 / 4294967296.0); }
+static void wp_set(void *vs, unsigned long s) { (void)vs; (void)s; }
+static const gsl_rng_type wp_type = {"word-pair", 0xffffffffUL, 0, sizeof(WordPair), &wp_set, &wp_get, &wp_get_double};
+static int gsl_keeps(uint32_t k, uint32_t u)
+{
+    WordPair p = {k, u, 0};
+    gsl_rng r = {&wp_type, &p};
+    (void)gsl_ran_gaussian_ziggurat(&r, 1.0);
+    return p.calls == 2;
+}
+
+/* The wedge test where it is hardest: in every strip below the tail, at
+ * U1 = 0, 1 and eleven values between, the words j next to GSL's boundary
+ * (found by bisection on GSL itself) and 10^5 either side. Near it the test
+ * must be left open or agree with GSL; far from it, it must be settled (and
+ * agree). A bound of the brackets taken the wrong way shows here first. */
+static void wedge_at_its_boundary(void **state)
+{
+    (void)state;
+    if (rng_ziggurat_wedge(0x100u, 0u) < 0) { printf("wedge test: not used on this CPU\n"); return; }
+    long near = 0, open = 0, far = 0;
+    for (uint32_t i = 0; i < 127; i++) {
+        double x;
+        uint32_t j0 = 0;   /* the strip's first word not accepted at once */
+        while (j0 < (1u << 24) && rng_ziggurat_fast((j0 << 8) | 0x80u | i, &x)) j0 = j0 ? 2 * j0 : 1;
+        uint32_t a = j0 / 2, b = j0;
+        while (a < b) { const uint32_t mid = a + (b - a) / 2; if (rng_ziggurat_fast((mid << 8) | 0x80u | i, &x)) a = mid + 1; else b = mid; }
+        j0 = a;
+        for (int t = 0; t <= 12; t++) {
+            const uint32_t u = t == 12 ? 0xffffffffu : (uint32_t)((double)t / 12.0 * 4294967296.0);
+            uint32_t lo = j0, hi = 1u << 24;   /* GSL's first j not kept */
+            while (lo < hi) { const uint32_t mid = lo + (hi - lo) / 2; if (gsl_keeps((mid << 8) | 0x80u | i, u)) lo = mid + 1; else hi = mid; }
+            for (long dj = -100003; dj <= 100003; dj++) {
+                if (labs(dj) > 3 && labs(dj) != 100003) continue;
+                const long j = (long)lo + dj;
+                if (j < (long)j0 || j >= (1l << 24)) continue;
+                const uint32_t k = ((uint32_t)j << 8) | (t % 2 ? 0x80u : 0u) | i;   /* either sign */
+                const int w = rng_ziggurat_wedge(k, u), g = gsl_keeps(k, u);
+                if (labs(dj) <= 3) { near++; open += w == 2; }
+                else far++;
+                if (w != 2 && w != !g) {
+                    CHECK_TRUE(0, "strip %u, j %ld (GSL's boundary %u), U1 word %u: wedge %d, GSL %s", i, j, lo, u, w, g ? "keeps" : "does not");
+                    return;
+                }
+                if (labs(dj) > 3 && w == 2) {
+                    CHECK_TRUE(0, "strip %u, j %ld, 1e5 from GSL's boundary %u, U1 word %u: left open", i, j, lo, u);
+                    return;
+                }
+            }
+        }
+    }
+    printf("wedge at its boundary: %ld words next to it (%ld left open), %ld far, all as GSL\n", near, open, far);
+    CHECK_TRUE(near > 5000 && far > 1000, "words tested: %ld near, %ld far", near, far);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -288,6 +392,8 @@ int main(void)
         cmocka_unit_test(pair_sequence_theta_then_xi),
         cmocka_unit_test(batch_equals_one_at_a_time),
         cmocka_unit_test(batch_past_its_words),
+        cmocka_unit_test(wedge_same_as_gsl),
+        cmocka_unit_test(wedge_at_its_boundary),
     };
     return cmocka_run_group_tests_name("random", tests, NULL, NULL);
 }

@@ -56,7 +56,8 @@ int run_write_results(Run *r);
 
 /* stability.c: the blow-up check after a step; if it fails, the message (step,
  * quantity, value, a smaller dt) and the reason in INCOMPLETE. Returns 0, or
- * 3 (unstable). */
-int run_stop_if_unstable(const Run *r);
+ * 3 (unstable). spins_only: the rotational temperature alone (the steps
+ * between the full checks of a rotation scene). */
+int run_stop_if_unstable(const Run *r, int spins_only);
 
 #endif

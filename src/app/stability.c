@@ -37,9 +37,15 @@ static int find_nonfinite_position(const System *s, Instability *u)
  * particle against half the smallest box side (beyond it the minimum image
  * and the pair forces lose their meaning; m = 0 runs have no temperature), and
  * after a step that made a position or velocity non-finite, that value. */
-static int check_stable(const System *s, const RunConfig *rc, Instability *u)
+static int check_stable(const System *s, const RunConfig *rc, Instability *u, int spins_only)
 {
     const double kT = s->kBT > 0 ? s->kBT : 1.0;
+    if (spins_only) {
+        snprintf(u->what, sizeof u->what, "rotational temperature");
+        u->value = rotation_temperature(s);
+        u->limit = rc->max_temperature_ratio * kT;
+        return isfinite(u->value) && u->value <= u->limit;
+    }
     if (!rc->overdamped) {
         snprintf(u->what, sizeof u->what, "kinetic temperature");
         u->value = system_kinetic_temperature(s);
@@ -66,12 +72,12 @@ static int check_stable(const System *s, const RunConfig *rc, Instability *u)
     return !(s->nonfinite && find_nonfinite_position(s, u));
 }
 
-int run_stop_if_unstable(const Run *r)
+int run_stop_if_unstable(const Run *r, int spins_only)
 {
     const System *s = &r->s;
     const RunOptions *opt = r->opt;
     Instability u;
-    if (check_stable(s, &r->rc, &u)) return 0;
+    if (check_stable(s, &r->rc, &u, spins_only)) return 0;
     if (r->show) fputc('\n', stderr);
     char why[512];
     snprintf(why, sizeof why, "unstable at step %llu (t = %g): %s %g is %s (limit %g); reduce dt "

@@ -191,11 +191,12 @@ void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, 
  * further attempt. */
 static uint32_t zig_k[128];
 static double zig_w[128];
-typedef struct { uint32_t first; int calls; } ZigProbe;
+typedef struct { uint32_t first, second; int calls; } ZigProbe;
 static unsigned long probe_get(void *vs)
 {
     ZigProbe *p = vs;
-    return p->calls++ == 0 ? p->first : 0x81u;
+    const int c = p->calls++;
+    return c == 0 ? p->first : c == 1 ? p->second : 0x81u;
 }
 static double probe_get_double(void *vs) { return probe_get(vs) * (1.0 / 4294967296.0); }
 static void probe_set(void *vs, unsigned long seed) { (void)vs; (void)seed; }
@@ -203,10 +204,61 @@ static const gsl_rng_type probe_type = {"ziggurat-probe", 0xffffffffUL, 0, sizeo
                                         &probe_set, &probe_get, &probe_get_double};
 static int probe(uint32_t i, uint32_t j, double *x)
 {
-    ZigProbe p = {(j << 8) | 0x80u | i, 0};
+    ZigProbe p = {(j << 8) | 0x80u | i, 0x81u, 0};
     gsl_rng r = {&probe_type, &p};
     *x = gsl_ran_gaussian_ziggurat(&r, 1.0);
     return p.calls == 1;
+}
+
+/* GSL's wedge test, for a word k = (j << 8 | 0x80 | i) of strip i < 127 not
+ * accepted at once: with U1 from the next word, y = y1 + (y0 - y1) U1
+ * (y0, y1 = ytab[i], ytab[i + 1], table heights GSL does not export), kept
+ * iff y < exp(-x^2 / 2), x = j wtab[i]. y is linear in U1, so it is
+ * bracketed at two points, U1 = 1/4 and 3/4, by probing: GSL keeps the word
+ * for j < J and not from J on, so exp(-x_J^2 / 2) <= y < exp(-x_{J-1}^2 / 2)
+ * (x_j = j wtab[i]: GSL's own x and exp). Per strip: y(1/4) in
+ * [wedge_a[0], wedge_a[1]], the slope in [wedge_b[0], wedge_b[1]]. The
+ * brackets are about 1e-7 wide; a bound not found stays 0 or 1 (y is in
+ * (0, 1]), and the test is then left to GSL. */
+static double wedge_a[2][128], wedge_b[2][128];
+static int wedge_kept(uint32_t i, uint32_t j, uint32_t u)
+{
+    ZigProbe p = {(j << 8) | 0x80u | i, u, 0};
+    gsl_rng r = {&probe_type, &p};
+    (void)gsl_ran_gaussian_ziggurat(&r, 1.0);
+    return p.calls == 2;   /* k and U1: kept by the wedge; more: a new attempt */
+}
+static void wedge_bracket(uint32_t i, uint32_t u, double *lo_y, double *hi_y)
+{
+    const uint32_t j0 = zig_k[i];
+    uint32_t lo = j0, hi = 1u << 24;   /* J: the first j not kept, in [j0, 2^24] */
+    while (lo < hi) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if (wedge_kept(i, mid, u)) lo = mid + 1; else hi = mid;
+    }
+    const double xJ = lo * zig_w[i], xJ1 = (lo - 1) * zig_w[i];
+    *lo_y = lo < (1u << 24) ? exp(-0.5 * xJ * xJ) : 0.0;
+    *hi_y = lo > j0 ? exp(-0.5 * xJ1 * xJ1) : 1.0;
+}
+static void wedge_init(void)
+{
+    for (uint32_t i = 0; i < 128; i++) {
+        double alo = 0.0, ahi = 1.0, blo = 0.0, bhi = 1.0;   /* strip 127 (the tail): open */
+        if (i < 127) {
+            wedge_bracket(i, 1u << 30, &alo, &ahi);   /* U1 = 1/4 */
+            wedge_bracket(i, 3u << 30, &blo, &bhi);   /* U1 = 3/4 */
+        }
+        wedge_a[0][i] = alo; wedge_a[1][i] = ahi;
+        wedge_b[0][i] = (blo - ahi) / 0.5; wedge_b[1][i] = (bhi - alo) / 0.5;   /* slope dy / dU1 */
+    }
+}
+
+int rng_ziggurat_wedge_brackets(double width)
+{
+    call_once(&batch_once, batch_init);
+    int n = 0;
+    for (int i = 0; i < 128; i++) n += wedge_a[1][i] - wedge_a[0][i] < width && wedge_b[1][i] - wedge_b[0][i] < 4 * width;
+    return n;
 }
 static void zig_init(void)
 {
@@ -218,9 +270,13 @@ static void zig_init(void)
             if (probe(i, mid, &x)) lo = mid + 1; else hi = mid;
         }
         zig_k[i] = lo;
-        double x = 0.0;
-        if (lo > 1) probe(i, 1, &x);   /* j = 1: x = wtab[i] */
-        zig_w[i] = x;
+        /* j = 1: x = wtab[i], accepted at once or, in a strip that never is
+         * (strip 0, the top one: zig_k = 0), kept by the wedge test with
+         * U1 = 0 (y = ytab[1] < exp(-wtab[0]^2 / 2)) */
+        ZigProbe p = {(1u << 8) | 0x80u | i, 0u, 0};
+        gsl_rng r = {&probe_type, &p};
+        const double x = gsl_ran_gaussian_ziggurat(&r, 1.0);
+        zig_w[i] = p.calls <= 2 ? x : NAN;   /* NAN: the wedge test then stays open (GSL's) */
     }
 }
 
@@ -242,6 +298,7 @@ static inline int zig_accept(uint32_t k, double *z)
 static void batch_init(void)
 {
     zig_init();
+    wedge_init();
 }
 
 int rng_ziggurat_fast(uint32_t k, double *z)
@@ -320,6 +377,73 @@ __attribute__((target("avx2"))) static int zig_avx2(int m, const uint32_t *w, do
 }
 #endif
 
+/* The wedge's outcome for a pair not accepted at once (pair_resume_one) */
+enum { WEDGE_KEPT = 0, WEDGE_NOT_KEPT = 1, WEDGE_OPEN = 2 };
+
+#ifdef DPD_HAVE_X86_SIMD
+/* exp(t) for t <= 0 (the wedge's -x^2 / 2 >= -6): t = n ln 2 + r, |r| <=
+ * ln 2 / 2, Taylor to r^11 (remainder below 1e-14), times 2^n. Within 1e-14
+ * of exp(t): its use is only where the margin of 1e-12 settles a test. */
+__attribute__((target("avx512f"))) static inline __m512d exp_nonpositive_avx512(__m512d t)
+{
+    const __m512d n = _mm512_roundscale_pd(_mm512_mul_pd(t, _mm512_set1_pd(1.4426950408889634)), _MM_FROUND_TO_NEAREST_INT);
+    const __m512d r = _mm512_sub_pd(_mm512_sub_pd(t, _mm512_mul_pd(n, _mm512_set1_pd(6.93147180369123816490e-01))),
+                                    _mm512_mul_pd(n, _mm512_set1_pd(1.90821492927058770002e-10)));
+    static const double inv_fact[12] = {1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+                                        1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800};
+    __m512d p = _mm512_set1_pd(inv_fact[11]);
+    for (int k = 10; k >= 0; k--) p = _mm512_add_pd(_mm512_mul_pd(p, r), _mm512_set1_pd(inv_fact[k]));
+    return _mm512_scalef_pd(p, n);
+}
+
+/* GSL's wedge test (wedge_init) for the nbad pairs not accepted at once, eight
+ * at a time: kw[k] the word not accepted, uw[k] the next (U1); both padded
+ * with zeros to a multiple of 8, out has as much room. Kept where y's upper
+ * bound is below exp(-x^2 / 2) by more than the margin, not kept where y's
+ * lower bound is above it by more; open otherwise, and in the tail strip
+ * (127, GSL's other test). */
+__attribute__((target("avx512f"))) static void wedge_avx512(int nbad, const uint32_t *kw, const uint32_t *uw,
+                                                            uint8_t *out)
+{
+    const __m512d margin = _mm512_set1_pd(1e-12), u32 = _mm512_set1_pd(1.0 / 4294967296.0);
+    for (int k = 0; k < nbad; k += 8) {
+        const __m256i kk = _mm256_loadu_si256((const __m256i *)(kw + k)), uu = _mm256_loadu_si256((const __m256i *)(uw + k));
+        const __m256i i = _mm256_and_si256(kk, _mm256_set1_epi32(0x7f)), j = _mm256_srli_epi32(kk, 8);
+        const __m512d x = _mm512_mul_pd(_mm512_cvtepu32_pd(j), _mm512_i32gather_pd(i, zig_w, 8));
+        const __m512d U1 = _mm512_mul_pd(_mm512_cvtepu32_pd(uu), u32);   /* GSL's gsl_rng_uniform */
+        /* y = y(1/4) + slope (U1 - 1/4), its bounds by the sign of U1 - 1/4 */
+        const __m512d dU = _mm512_sub_pd(U1, _mm512_set1_pd(0.25));
+        const __mmask8 up = _mm512_cmp_pd_mask(dU, _mm512_setzero_pd(), _CMP_GE_OQ);
+        const __m512d blo = _mm512_i32gather_pd(i, wedge_b[0], 8), bhi = _mm512_i32gather_pd(i, wedge_b[1], 8);
+        const __m512d ylo = _mm512_add_pd(_mm512_i32gather_pd(i, wedge_a[0], 8), _mm512_mul_pd(_mm512_mask_blend_pd(up, bhi, blo), dU));
+        const __m512d yhi = _mm512_add_pd(_mm512_i32gather_pd(i, wedge_a[1], 8), _mm512_mul_pd(_mm512_mask_blend_pd(up, blo, bhi), dU));
+        const __m512d e = exp_nonpositive_avx512(_mm512_mul_pd(_mm512_mul_pd(_mm512_set1_pd(-0.5), x), x));
+        const __mmask8 tail = (__mmask8)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(i, _mm256_set1_epi32(127))));
+        const __mmask8 kept = _mm512_cmp_pd_mask(yhi, _mm512_sub_pd(e, margin), _CMP_LT_OQ) & (__mmask8)~tail;
+        const __mmask8 not_kept = _mm512_cmp_pd_mask(ylo, _mm512_add_pd(e, margin), _CMP_GT_OQ) & (__mmask8)~tail;
+        /* WEDGE_OPEN, less 2 where kept, less 1 where not kept */
+        const __m128i st = _mm512_cvtepi64_epi8(_mm512_sub_epi64(_mm512_sub_epi64(_mm512_set1_epi64(WEDGE_OPEN),
+                               _mm512_maskz_set1_epi64(kept, 2)), _mm512_maskz_set1_epi64(not_kept, 1)));
+        _mm_storel_epi64((__m128i *)(out + k), st);
+    }
+}
+#endif
+
+int rng_ziggurat_wedge(uint32_t k, uint32_t u)
+{
+    call_once(&batch_once, batch_init);
+#ifdef DPD_HAVE_X86_SIMD
+    if (simd_level() == SIMD_AVX512) {
+        uint32_t kw[8] = {k}, uw[8] = {u};
+        uint8_t out[8];
+        wedge_avx512(1, kw, uw, out);
+        return out[0];
+    }
+#endif
+    (void)k; (void)u;
+    return -1;
+}
+
 /* A pair's sequence from a given word on, as a GSL generator: its first
  * eight words (blocks 0 and 1) in an array, so that a resumed pair's words
  * are read without a test per word; a word past them (1.4e-4 of the pairs of
@@ -355,23 +479,38 @@ static double words_normal(PairWords *c)
 }
 
 /* One pair whose variate v0 the ziggurat did not accept at once: variates
- * 0 ... v0 - 1 (in z already) took its first v0 words; GSL draws variate v0
- * from word v0 on (not testing it first: a test known to fail is a branch the
- * predictor gets wrong), and the later variates resume where GSL stopped. They
- * are nearly always accepted at once (97.2 % each): their first steps are all
- * taken before any is tested, and one test decides (one predictable branch,
- * where a loop of its own per variate was one wrong guess per pair: the
- * number of variates left is v0's, random). */
-static void pair_resume_one(PairWords *c, int v0, int nvar, double *z, int q)
+ * 0 ... v0 - 1 (in z already) took its first v0 words. Where the batch's
+ * wedge test settled variate v0 (wedge_avx512), it is z's value (kept: the
+ * first step's x, as GSL returns it) or GSL's next attempt (not kept: the
+ * word after U1, nearly always accepted at once); where it did not, GSL draws
+ * it from word v0 on (not testing that word first: a test known to fail is a
+ * branch the predictor gets wrong). The later variates resume where variate
+ * v0 stopped; they too are nearly always accepted at once (97.2 % each): all
+ * their first steps are taken before one test decides (one predictable
+ * branch, where a loop of its own per variate was one wrong guess per pair:
+ * the number of variates left is v0's, random). Anything else (one pair in
+ * about 30) goes to GSL variate by variate. */
+static void pair_resume_one(PairWords *c, int v0, int nvar, double *z, int q, int wedge)
 {
-    c->pos = v0;
-    const double first = words_normal(c);
-    if (nvar == 1) { z[q] = first; return; }
-    double t[4];   /* t[u]: variate v0 + u, t[0] GSL's */
-    t[0] = first;
-    unsigned all = 1;
+    double t[4];   /* t[u]: variate v0 + u */
+    unsigned all;
+    int pos;
+    if (__builtin_expect(wedge == WEDGE_OPEN, 0)) {
+        c->pos = v0;
+        t[0] = words_normal(c);
+        pos = c->pos;
+        all = 1;
+    } else {   /* no branch on which: kept and not kept are even odds */
+        const unsigned again = wedge == WEDGE_NOT_KEPT;
+        double x;
+        const unsigned ok = (unsigned)zig_accept(c->w[v0 + 2 < 8 ? v0 + 2 : 7], &x) & (unsigned)(v0 + 2 < c->lim);
+        const double kept = z[v0 * RNG_BATCH + q];
+        t[0] = again ? x : kept;
+        all = (unsigned)!again | ok;
+        pos = v0 + 2 + (int)again;
+    }
     for (int u = 1; u < 4; u++) {   /* the next three words' first steps (a word past the eight: GSL below) */
-        const int p = c->pos + u - 1, needed = v0 + u < nvar;
+        const int p = pos + u - 1, needed = v0 + u < nvar;
         all &= (unsigned)(zig_accept(c->w[p < 8 ? p : 7], &t[u]) & (p < c->lim)) | (unsigned)!needed;
     }
     if (__builtin_expect(all, 1)) {   /* stores at indices, not branches on v0 (the fastest of three forms) */
@@ -381,10 +520,10 @@ static void pair_resume_one(PairWords *c, int v0, int nvar, double *z, int q)
         for (int v = 0; v < nvar; v++) z[v * RNG_BATCH + q] = zz[v];
         return;
     }
-    z[v0 * RNG_BATCH + q] = first;
-    for (int v = v0 + 1; v < nvar; v++) {   /* rare: a later variate not accepted at once either */
+    c->pos = v0;   /* rare: from variate v0 on, variate by variate */
+    for (int v = v0; v < nvar; v++) {
         double x;
-        if (c->pos < c->lim && zig_accept(c->w[c->pos], &x)) { c->pos++; z[v * RNG_BATCH + q] = x; }
+        if (v > v0 && c->pos < c->lim && zig_accept(c->w[c->pos], &x)) { c->pos++; z[v * RNG_BATCH + q] = x; }
         else z[v * RNG_BATCH + q] = words_normal(c);
     }
 }
@@ -405,6 +544,21 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
     /* one variate rarely reaches the second block (its first has four words) */
     const int next = nvar > 1;
     if (next) philox_lanes(nbad, seed, STREAM_PAIR_NOISE, (uint32_t)step, (uint32_t)(step >> 32) + (1u << 24), lo, hi, w1);
+    /* the wedge test of each pair's variate v0, all pairs at once: its word and U1's */
+    uint8_t wedge[RNG_BATCH + 8];
+    memset(wedge, WEDGE_OPEN, (size_t)nbad);
+#ifdef DPD_HAVE_X86_SIMD
+    if (simd_level() == SIMD_AVX512) {
+        uint32_t kw[RNG_BATCH + 8], uw[RNG_BATCH + 8];
+        for (int k = 0; k < nbad; k++) {
+            const int q = bad[k], v = v0[k];
+            kw[k] = w[v][q];
+            uw[k] = v + 1 < 4 ? w[v + 1 < 4 ? v + 1 : 3][q] : w1[0][k];   /* nvar 1: v = 0 */
+        }
+        for (int k = nbad; k < ((nbad + 7) & ~7); k++) kw[k] = uw[k] = 0;
+        wedge_avx512(nbad, kw, uw, wedge);
+    }
+#endif
     PairWords c;   /* rng_pair_start's counter and key */
     c.ctr.v[0] = (uint32_t)step; c.ctr.v[1] = (uint32_t)(step >> 32);
     c.key.v[0] = seed; c.key.v[1] = STREAM_PAIR_NOISE;
@@ -413,7 +567,7 @@ static void pair_normals_resume(uint32_t seed, uint64_t step, const uint32_t *id
         const int q = bad[k];
         c.ctr.v[2] = lo[k]; c.ctr.v[3] = hi[k];
         for (int u = 0; u < 4; u++) { c.w[u] = w[u][q]; c.w[4 + u] = next ? w1[u][k] : 0; }
-        pair_resume_one(&c, v0[k], nvar, z, q);
+        pair_resume_one(&c, v0[k], nvar, z, q, wedge[k]);
     }
 }
 

@@ -108,5 +108,12 @@ void rng_pair_normals_ordered(uint32_t seed, uint64_t step, int m, const uint32_
 /* The ziggurat's first step on one word (GSL's gsl_ran_gaussian_ziggurat for a
  * 32-bit generator): 1 and the variate in *z if it accepts the word at once. */
 int rng_ziggurat_fast(uint32_t k, double *z);
+/* The heights of GSL's strips that the batch path's wedge test has bracketed
+ * to less than width (of 128; strip 0's, 1, is not probed). */
+int rng_ziggurat_wedge_brackets(double width);
+/* The batch path's wedge test of a word k not accepted at once, U1 from the
+ * word u: 0 kept, 1 not kept, 2 left to GSL; -1 where it is not used (no
+ * AVX-512). For the tests. */
+int rng_ziggurat_wedge(uint32_t k, uint32_t u);
 
 #endif
