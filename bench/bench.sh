@@ -228,16 +228,42 @@ if [ "${ROTATION:-1}" = 1 ]; then
     done
     ratio=$(printf '%s\n' $ratios | median)
     range=$(printf '%s\n' $ratios | sort -g | awk 'NR==1{lo=$1} {hi=$1} END{printf "%.2f-%.2f", lo, hi}')
+    # A second estimator of the same ratio: both runs at once, one on each CPU, then swapped
+    # (the standard twin with 3000 production steps, so that the two end at about the same
+    # time). Both see the host's same moment, and the CPUs' speeds cancel in
+    # sqrt((S1 / P0) (S0 / P1)) (P: Pan, S: standard, 0 and 1: the CPU). Median of REPEAT.
+    conc=""
+    if command -v taskset >/dev/null && [ "$(nproc)" -ge 2 ]; then
+        rot_on() {  # CPU DIR [--set ...] -> production particle-steps per CPU second, pinned
+            local c=$1 d=$2; shift 2
+            taskset -c "$c" "$DPD" run bench/pan-fluid.cfg --out "$out/$d" --threads 1 --quiet "$@" >/dev/null
+            awk -F'\t' '$1=="production_particle_steps_per_second_cpu"{print $2}' "$out/$d/summary.tsv"
+        }
+        twin=(--set rotation=false --set 'pairs.[0].gamma_shear=0.0' --set steps=3000)
+        for k in $(seq "$REPEAT"); do
+            rot_on 0 rot-p0 > "$out/rot-p0.rate" & rot_on 1 rot-s1 "${twin[@]}" > "$out/rot-s1.rate"; wait
+            rot_on 1 rot-p1 > "$out/rot-p1.rate" & rot_on 0 rot-s0 "${twin[@]}" > "$out/rot-s0.rate"; wait
+            conc+="$(awk -v p0="$(cat "$out/rot-p0.rate")" -v p1="$(cat "$out/rot-p1.rate")" -v s0="$(cat "$out/rot-s0.rate")" \
+                -v s1="$(cat "$out/rot-s1.rate")" 'BEGIN{print sqrt((s1 / p0) * (s0 / p1))}') "
+        done
+        cratio=$(printf '%s\n' $conc | median); crange=$(printf '%s\n' $conc | range)
+    fi
     echo
     echo "rotating particles (Pan 2008 fluid, 3000 particles, 1 thread, particle-steps per CPU second):"
     awk -v a="$with" -v b="$without" -v r="$ratio" -v g="$range" -v n="$REPEAT" \
         'BEGIN{printf "  with shear + rotational terms %.4g, without %.4g (best of %d): cost ratio %.2f (median of %d alternating pairs, %s; target < 1.5, issue 25)\n", a, b, n, r, n, g}'
+    if [ -n "$conc" ]; then
+        printf '  the same, both at once on the two CPUs and swapped: %.2f (median of %d, %s)\n' "$cratio" "$REPEAT" "$crange"
+    fi
     # machine-readable copy for paper.md ({{bench:rotation.tsv:ROW:value}}), with its date and commit
     {
         printf 'measure\tvalue\tnote\n'
         printf 'particle-steps per CPU second, rotation\t%.4g\tbench/pan-fluid.cfg, 3000 particles, 1 thread, best of %d\n' "$with" "$REPEAT"
         printf 'particle-steps per CPU second, standard\t%.4g\tthe same with rotation = false, gamma_shear = 0, best of %d\n' "$without" "$REPEAT"
         printf 'cost ratio, rotation / standard\t%.2f\tmedian of %d alternating pairs (range %s); target < 1.5 (issue 25; < 2, issue 6)\n' "$ratio" "$REPEAT" "$range"
+        if [ -n "$conc" ]; then
+            printf 'cost ratio, both at once on two CPUs, swapped\t%.2f\tmedian of %d (range %s): sqrt((S1 / P0) (S0 / P1)), the same moment of the host for both, the CPUs cancel\n' "$cratio" "$REPEAT" "$crange"
+        fi
         printf 'date, commit\t%s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
     } > "$out/rotation.tsv"
     cp "$out/rotation.tsv" bench/rotation.tsv
