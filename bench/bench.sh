@@ -34,6 +34,14 @@ peer_once() {  # L threads -> rate of one LAMMPS run
 # median of the numbers on stdin (one per line)
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 range() { sort -g | awk 'NR == 1 { lo = $1 } { hi = $1 } END { printf "%.2f-%.2f", lo, hi }'; }
+# the commit of the tsv files, "-dirty" if the sources differ from it; the bench's own tsv files,
+# rewritten section by section, do not count (they made every section after the first "dirty")
+stamp() {
+    local c
+    c=$(git describe --always 2>/dev/null || echo unknown)
+    git diff --quiet HEAD -- . ':(exclude)bench/*.tsv' 2>/dev/null || c+=-dirty
+    echo "$c"
+}
 
 # The machine's own ceiling for 2 threads: two independent one-thread runs at
 # once (no shared data, no barriers), aggregate rate over the rate of one run
@@ -126,7 +134,7 @@ if [ "${THREADS:-1}" = 1 ]; then
           for p in "${policies[@]}"; do printf 'load %s\t3000\t%s\t%s\n' "$N" "${p%%|*}" "$(thr_ratio 10 1000 "${p#*|}")"; done
           kill $(jobs -p) 2>/dev/null; wait 2>/dev/null || true
       done
-      printf 'date, commit\t%s\t%s\t\t\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
+      printf 'date, commit\t%s\t%s\t\t\n' "$(date -u +%Y-%m-%d)" "$(stamp)"
     } > "$out/threads.tsv"
     cp "$out/threads.tsv" bench/threads.tsv
     echo
@@ -201,7 +209,7 @@ if [ "${TARGETS:-1}" = 1 ]; then
             IFS=$'\t' read -r m g a b < <(tg_pairs cpu "tg_rate bench/standard.cfg 32.18 100 200 1 GOMP_SPINCOUNT=3000 taskset -c 1" "tg_rate bench/standard.cfg 32.18 100 200 1 GOMP_SPINCOUNT=3000 taskset -c 0")
             printf 'one thread on CPU 1 / on CPU 0, 1e5 particles (the hardware)\t%s\t%s\t%s\t%s\t-\n' "$m" "$g" "$a" "$b"
         fi
-        printf 'date, commit\t%s\t%s\t\t\t\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
+        printf 'date, commit\t%s\t%s\t\t\t\n' "$(date -u +%Y-%m-%d)" "$(stamp)"
     } > "$out/targets.tsv"
     cp "$out/targets.tsv" bench/targets.tsv
     echo
@@ -264,7 +272,7 @@ if [ "${ROTATION:-1}" = 1 ]; then
         if [ -n "$conc" ]; then
             printf 'cost ratio, both at once on two CPUs, swapped\t%.2f\tmedian of %d (range %s): sqrt((S1 / P0) (S0 / P1)), the same moment of the host for both, the CPUs cancel\n' "$cratio" "$REPEAT" "$crange"
         fi
-        printf 'date, commit\t%s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)"
+        printf 'date, commit\t%s\t%s\n' "$(date -u +%Y-%m-%d)" "$(stamp)"
     } > "$out/rotation.tsv"
     cp "$out/rotation.tsv" bench/rotation.tsv
 fi
@@ -347,7 +355,7 @@ if [ "${MODULES:-1}" = 1 ]; then
                     "$(val "$db" time_${ph}_seconds)" "$(val "$db" time_force_seconds)"
             done
         done
-        printf 'date, commit\t%s\t%s\t-\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" "$(uname -m), $(nproc --all) cores"
+        printf 'date, commit\t%s\t%s\t-\t%s\n' "$(date -u +%Y-%m-%d)" "$(stamp)" "$(uname -m), $(nproc --all) cores"
     } > "$out/modules.tsv"
     cp "$out/modules.tsv" bench/modules.tsv
     echo
@@ -400,7 +408,7 @@ if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
                 "$(awk -v a="$ib" -v b="$in" 'BEGIN{print b / a}')" \
                 "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)"
         done
-        printf 'date, commits\t%s\t%s\t-\tbase %s\t%s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" \
+        printf 'date, commits\t%s\t%s\t-\tbase %s\t%s\n' "$(date -u +%Y-%m-%d)" "$(stamp)" \
             "$("$BASE" --version 2>/dev/null | head -1 || echo unknown)" "$(uname -m), $(nproc --all) cores"
     } > "$out/refactor.tsv"
     cp "$out/refactor.tsv" bench/refactor.tsv
@@ -446,7 +454,7 @@ if [ -n "${BASE:-}" ] && [ "${SPEEDUP:-0}" = 1 ]; then
             done
             printf '%s\t%.3f\t%s\t%s\n' "$c" "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)" "$(class_args $c | cut -d' ' -f1)"
         done
-        printf 'date, commits\t%s\t%s\tbase %s\n' "$(date -u +%Y-%m-%d)" "$(git describe --always --dirty 2>/dev/null || echo unknown)" \
+        printf 'date, commits\t%s\t%s\tbase %s\n' "$(date -u +%Y-%m-%d)" "$(stamp)" \
             "$("$BASE" --version 2>/dev/null | head -1 || echo unknown)"
     } > "$out/speedup.tsv"
     cp "$out/speedup.tsv" bench/speedup.tsv
