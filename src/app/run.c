@@ -327,7 +327,7 @@ static void production_starts(Run *r)
  * a failed solve); at once after a step that made a velocity non-finite
  * (integrate_correct counts them) or computed the virial. Spins can run away
  * within a few steps: in between, their temperature alone on every step (the
- * translational checks every step were 2 % of the Pan 2008 fluid's run).
+ * translational checks every step were 1.7 % of the Pan 2008 fluid's run).
  * CHECK_NONE, CHECK_SPINS or CHECK_FULL. */
 enum { CHECK_NONE, CHECK_SPINS, CHECK_FULL };
 static int check_due(const Run *r)

@@ -36,7 +36,8 @@ static int find_nonfinite_position(const System *s, Instability *u)
  * runs), and in every run the largest displacement per step of a mobile
  * particle against half the smallest box side (beyond it the minimum image
  * and the pair forces lose their meaning; m = 0 runs have no temperature), and
- * after a step that made a position or velocity non-finite, that value. */
+ * after a step that made a position or velocity non-finite, that value.
+ * spins_only: the rotational temperature alone. */
 static int check_stable(const System *s, const RunConfig *rc, Instability *u, int spins_only)
 {
     const double kT = s->kBT > 0 ? s->kBT : 1.0;

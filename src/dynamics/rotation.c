@@ -30,12 +30,12 @@ int rotation_alloc(System *s)
     return 0;
 }
 
-/* Called inside integrate_predict after the positions: same scheme as the
- * velocities, Omega_pred = Omega + lambda dt T / I, Omega += dt T / (2 I). */
 /* One type, not frozen (the Pan 2008 fluids): the loops below component by
  * component, with their expressions, so the same bits; they vectorise. */
 static int one_free_type(const System *s) { return s->ntypes == 1 && !s->types[0].frozen; }
 
+/* Called inside integrate_predict after the positions: same scheme as the
+ * velocities, Omega_pred = Omega + lambda dt T / I, Omega += dt T / (2 I). */
 void rotation_predict(System *s)
 {
     const double dt = s->dt, lam = s->lambda;
