@@ -171,6 +171,26 @@ static void pair_sequence_theta_then_xi(void **state)
     CHECK_ABS("corr(xi_1, xi_2)", corr(p4_2, p4_3), 0.0, tol);
 }
 
+/* The batch's variates z (variate v of pair q at z[v * RNG_BATCH + q]) against
+ * one pair at a time (ids a[q], b[q] in either order), bit for bit; the
+ * first difference is reported with what (the caller's case). 1 if none. */
+static int batch_as_one_at_a_time(uint64_t step, int m, const uint32_t *a, const uint32_t *b, int nvar,
+                                  const double *z, const char *what)
+{
+    for (int q = 0; q < m; q++) {
+        CounterRng c;
+        rng_pair_start(&c, SEED, step, b[q], a[q]);
+        for (int v = 0; v < nvar; v++) {
+            const double one = rng_counter_normal(&c);
+            if (memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) == 0) continue;
+            CHECK_TRUE(0, "%s: variate %d of pair %d (%d per pair, step %llu) %.17g != %.17g one at a time",
+                       what, v, q, nvar, (unsigned long long)step, z[v * RNG_BATCH + q], one);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* The batch path of the pair driver (rng_pair_normals: Philox lanes, GSL's
  * strip tables read out of GSL) gives what one pair at a time gives, bit for
  * bit: 1 and 4 variates per pair, batches of 1 ... RNG_BATCH pairs, ids in
@@ -208,15 +228,7 @@ static void batch_isa(int cap)
             double z[4 * RNG_BATCH];
             if (ordered) rng_pair_normals_ordered(SEED, step, m, lo, hi, nvar, z);
             else rng_pair_normals(SEED, step, m, a, b, nvar, z);
-            for (int q = 0; q < m; q++) {
-                CounterRng c;
-                rng_pair_start(&c, SEED, step, b[q], a[q]);
-                for (int v = 0; v < nvar; v++) {
-                    const double one = rng_counter_normal(&c);
-                    CHECK_TRUE(memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) == 0,
-                               "batch variate %d of pair %d (%d per pair, ordered %d) %.17g != %.17g one at a time", v, q, nvar, ordered, z[v * RNG_BATCH + q], one);
-                }
-            }
+            batch_as_one_at_a_time(step, m, a, b, nvar, z, ordered ? "batch, ordered ids" : "batch");
         }
     }
     const double p = (double)fast / words;
@@ -265,16 +277,9 @@ static void batch_past_its_words(void **state)
             if (simd_cap(cap) != cap) continue;
             double z[4 * RNG_BATCH];
             rng_pair_normals_ordered(SEED, step, m, lo, hi, nvar, z);
-            for (int q = 0; q < m; q++) {
-                CounterRng c;
-                rng_pair_start(&c, SEED, step, lo[q], hi[q]);
-                for (int v = 0; v < nvar; v++) {
-                    const double one = rng_counter_normal(&c);
-                    CHECK_TRUE(memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) == 0,
-                               "level %d: variate %d of pair %d (%d words) %.17g != %.17g one at a time",
-                               cap, v, q, words_taken(step, lo[q], hi[q], nvar), z[v * RNG_BATCH + q], one);
-                }
-            }
+            char what[64];
+            snprintf(what, sizeof what, "level %d, sequences past %d words", cap, held);
+            batch_as_one_at_a_time(step, m, lo, hi, nvar, z, what);
         }
     }
     simd_cap(best);
@@ -301,20 +306,11 @@ static void wedge_same_as_gsl(void **state)
         for (int q = 0; q < m; q++) { lo[q] = (uint32_t)tu_next(&st) >> 1; hi[q] = lo[q] + 1 + (uint32_t)(tu_next(&st) % 1000); }
         double z[4 * RNG_BATCH];
         rng_pair_normals_ordered(SEED, step, m, lo, hi, nvar, z);
-        for (int q = 0; q < m; q++) {
-            CounterRng c;
-            rng_pair_start(&c, SEED, step, lo[q], hi[q]);
+        if (!batch_as_one_at_a_time(step, m, lo, hi, nvar, z, "wedge")) return;
+        for (int q = 0; q < m; q++) {   /* the pairs not accepted at once: those the wedge saw */
+            const philox4x32_ctr_t w = rng_block(SEED, STREAM_PAIR_NOISE, step, lo[q], hi[q]);
             int fast = 1;
-            for (int v = 0; v < nvar; v++) {
-                const double one = rng_counter_normal(&c);
-                double x;
-                fast &= rng_ziggurat_fast(rng_block(SEED, STREAM_PAIR_NOISE, step, lo[q], hi[q]).v[v], &x);
-                if (memcmp(&one, &z[v * RNG_BATCH + q], sizeof one) != 0) {
-                    CHECK_TRUE(0, "variate %d of pair %d (%d per pair, batch %d) %.17g != %.17g one at a time",
-                               v, q, nvar, rep, z[v * RNG_BATCH + q], one);
-                    return;
-                }
-            }
+            for (int v = 0; v < nvar; v++) { double x; fast &= rng_ziggurat_fast(w.v[v], &x); }
             bad += !fast;
         }
     }
