@@ -202,12 +202,17 @@ static double probe_get_double(void *vs) { return probe_get(vs) * (1.0 / 4294967
 static void probe_set(void *vs, unsigned long seed) { (void)vs; (void)seed; }
 static const gsl_rng_type probe_type = {"ziggurat-probe", 0xffffffffUL, 0, sizeof(ZigProbe),
                                         &probe_set, &probe_get, &probe_get_double};
-static int probe(uint32_t i, uint32_t j, double *x)
+/* GSL's variate from the words first, second, then 0x81...: the words it took */
+static int probe_words(uint32_t first, uint32_t second, double *x)
 {
-    ZigProbe p = {(j << 8) | 0x80u | i, 0x81u, 0};
+    ZigProbe p = {first, second, 0};
     gsl_rng r = {&probe_type, &p};
     *x = gsl_ran_gaussian_ziggurat(&r, 1.0);
-    return p.calls == 1;
+    return p.calls;
+}
+static int probe(uint32_t i, uint32_t j, double *x)
+{
+    return probe_words((j << 8) | 0x80u | i, 0x81u, x) == 1;
 }
 
 /* GSL's wedge test, for a word k = (j << 8 | 0x80 | i) of strip i < 127 not
@@ -223,10 +228,8 @@ static int probe(uint32_t i, uint32_t j, double *x)
 static double wedge_a[2][128], wedge_b[2][128];
 static int wedge_kept(uint32_t i, uint32_t j, uint32_t u)
 {
-    ZigProbe p = {(j << 8) | 0x80u | i, u, 0};
-    gsl_rng r = {&probe_type, &p};
-    (void)gsl_ran_gaussian_ziggurat(&r, 1.0);
-    return p.calls == 2;   /* k and U1: kept by the wedge; more: a new attempt */
+    double x;
+    return probe_words((j << 8) | 0x80u | i, u, &x) == 2;   /* k and U1: kept by the wedge; more: a new attempt */
 }
 static void wedge_bracket(uint32_t i, uint32_t u, double *lo_y, double *hi_y)
 {
@@ -273,10 +276,8 @@ static void zig_init(void)
         /* j = 1: x = wtab[i], accepted at once or, in a strip that never is
          * (strip 0, the top one: zig_k = 0), kept by the wedge test with
          * U1 = 0 (y = ytab[1] < exp(-wtab[0]^2 / 2)) */
-        ZigProbe p = {(1u << 8) | 0x80u | i, 0u, 0};
-        gsl_rng r = {&probe_type, &p};
-        const double x = gsl_ran_gaussian_ziggurat(&r, 1.0);
-        zig_w[i] = p.calls <= 2 ? x : NAN;   /* NAN: the wedge test then stays open (GSL's) */
+        double x;
+        zig_w[i] = probe_words((1u << 8) | 0x80u | i, 0u, &x) <= 2 ? x : NAN;   /* NAN: the wedge test then stays open (GSL's) */
     }
 }
 
