@@ -52,6 +52,17 @@ figures: $(BIN)
 check:
 	@tools/check --tier $(TIER)
 
+# the committed record of the verdicts (results/verdicts.tsv: one row per experiment, from the tier
+# its numbers come from) and of every band row behind them (results/checks.tsv), so that a commit
+# that changes a band, the decision rule or a result shows which verdicts moved
+verdicts:
+	@tools/check --verdicts --tier auto > results/verdicts.tsv
+	@tail -n +2 results/verdicts.tsv | while IFS=$$'\t' read -r id t _; do \
+	    [ "$$t" = - ] || tools/check --tsv --tier "$$t" "$$id" | awk -F '\t' -v t="$$t" -v OFS='\t' \
+	        '{ print $$1, t, $$2, $$3, $$4, $$5, $$6, $$7, $$9 }'; done | \
+	    { printf 'experiment\ttier\tquantity\tvalue\tstderr\tlo\thi\tk_sigma\toutcome\n'; cat; } > results/checks.tsv
+	@echo "verdicts: wrote results/verdicts.tsv and results/checks.tsv"
+
 reproduce:
 	$(MAKE) figures TIER=paper
 	$(MAKE) check TIER=paper || true
@@ -71,4 +82,4 @@ build/cost.tsv: $(BIN) tools/cost tools/plan $(wildcard bench/speedup.tsv experi
                 $(wildcard results/*/*/paper/provenance.tsv results/*/*/reduced/provenance.tsv)
 	@mkdir -p build && tools/cost table paper > $@.part && mv $@.part $@
 
-.PHONY: results plots figures check reproduce paper
+.PHONY: results plots figures check verdicts reproduce paper
