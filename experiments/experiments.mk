@@ -59,8 +59,8 @@ verdicts:
 	@tools/check --verdicts --tier auto > results/verdicts.tsv
 	@tail -n +2 results/verdicts.tsv | while IFS=$$'\t' read -r id t _; do \
 	    [ "$$t" = - ] || tools/check --tsv --tier "$$t" "$$id" | awk -F '\t' -v t="$$t" -v OFS='\t' \
-	        '{ print $$1, t, $$2, $$3, $$4, $$5, $$6, $$7, $$9 }'; done | \
-	    { printf 'experiment\ttier\tquantity\tvalue\tstderr\tlo\thi\tk_sigma\toutcome\n'; cat; } > results/checks.tsv
+	        '{ print $$1, t, $$2, $$13, $$3, $$4, $$5, $$6, $$7, $$9 }'; done | \
+	    { printf 'experiment\ttier\tquantity\tkind\tvalue\tstderr\tlo\thi\tk_sigma\toutcome\n'; cat; } > results/checks.tsv
 	@echo "verdicts: wrote results/verdicts.tsv and results/checks.tsv"
 
 reproduce:

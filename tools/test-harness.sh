@@ -22,9 +22,10 @@ lacks() { if grep -q -e "$2" "$root/out"; then bad "$1: unexpected match for '$2
 in_file() { if grep -q -e "$3" "$2"; then ok "$1"; else bad "$1: no '$3' in ${2#"$root"/}" "$2"; fi; }
 
 tab() { local IFS=$'\t'; printf '%s\n' "$*"; }
-mkexp() { # mkexp ID ; bands rows on stdin (TSV)
+BANDS_HEADER=$(tab quantity tier kind lo hi k_sigma resolution paper source expect)
+mkexp() { # mkexp ID ; bands rows on stdin (TSV: quantity tier kind lo hi k_sigma resolution paper source [expect])
     mkdir -p "$root/experiments/$1"
-    { tab quantity tier lo hi k_sigma paper source; cat; } > "$root/experiments/$1/bands.tsv"
+    { echo "$BANDS_HEADER"; cat; } > "$root/experiments/$1/bands.tsv"
 }
 mkres() { # mkres ID TIER CPU ; summary rows on stdin
     local d="$root/results/$1/$2"
@@ -36,9 +37,9 @@ mkres() { # mkres ID TIER CPU ; summary rows on stdin
 
 # ---------------------------------------------------------------- fixture
 mkexp x/y <<EOF2
-$(tab eta quick 28.5 30.5 0 29.08 'fixture: paper +- 5 %')
-$(tab eta paper 28.5 30.5 2 29.08 'fixture')
-$(tab ratio paper 3 inf 0 3.65 'one-sided')
+$(tab eta quick claim 28.5 30.5 - - 29.08 'fixture: paper +- 5 %')
+$(tab eta paper claim 28.5 32.5 - - 29.08 'fixture')
+$(tab ratio paper claim 3 inf - - 3.65 'one-sided')
 EOF2
 mkres x/y quick 1.5 <<EOF2
 $(tab eta 29.3170 0.25)
@@ -47,48 +48,86 @@ mkres x/y paper 4321.5 <<EOF2
 $(tab eta 30.9 0.3)
 $(tab ratio 3.71 0)
 EOF2
-mkexp x/out  <<< "$(tab q quick 1 2 0 1.5 fixture)"
+mkexp x/out  <<< "$(tab q quick claim 1 2 - - 1.5 fixture)"
 mkres x/out quick 2 <<< "$(tab q 5.5 0.1)"
 mkexp x/miss <<EOF2
-$(tab a quick 1 2 0 - fixture)
-$(tab b quick 1 2 0 - fixture)
+$(tab a quick claim 1 2 - - - fixture)
+$(tab b quick claim 1 2 - - - fixture)
 EOF2
 mkres x/miss quick 3 <<< "$(tab a 1.75 0)"
-mkexp x/kappa <<EOF2
-$(tab k2 quick 1 2 2 - 'inside only with 2 sigma')
-$(tab k1 quick 1 2 1 - 'outside with 1 sigma')
-$(tab klo quick 1 2 2 - 'below, inside with 2 sigma')
+# the decision rule of a claim: value +- 2 se inside the band, wholly outside, or neither
+mkexp x/rule <<EOF2
+$(tab in quick claim 1 2 - - - '[1.1, 1.9] inside')
+$(tab edge quick claim 1 2 - - - '[1.7, 2.1] straddles: factor (2 0.1 / 0.1)^2 = 4')
+$(tab out quick claim 1 2 - - - '[2.1, 2.5] outside')
+$(tab outwide quick claim 1 2 - - - '[1.9, 2.7]: passed under the old k = 2 widening, now unresolved')
+$(tab lowside quick claim 3 inf - - - 'one-sided: [3.02, 3.18] inside')
+$(tab nose quick claim 1 2 - - - 'no standard error: unresolved')
 EOF2
-mkres x/kappa quick 4 <<EOF2
-$(tab k2 2.3 0.2)
-$(tab k1 2.3 0.2)
-$(tab klo 0.65 0.2)
+mkres x/rule quick 4 <<EOF2
+$(tab in 1.5 0.2)
+$(tab edge 1.9 0.1)
+$(tab out 2.3 0.1)
+$(tab outwide 2.3 0.2)
+$(tab lowside 3.1 0.04)
+$(tab nose 1.5 nan)
 EOF2
 mkexp x/nan <<EOF2
-$(tab vnan quick -inf inf 0 - 'nan value')
-$(tab vinf quick -inf inf 0 - 'inf value')
-$(tab senan quick 1 2 3 - 'nan stderr counts as 0')
-$(tab senan_out quick 1 2 3 - 'nan stderr counts as 0')
+$(tab vnan quick claim 0 1 - - - 'nan value')
+$(tab vinf quick claim 0 1 - - - 'inf value')
 EOF2
 mkres x/nan quick 5 <<EOF2
 $(tab vnan nan 0.1)
 $(tab vinf inf 0)
-$(tab senan 1.5 nan)
-$(tab senan_out 2.01 nan)
 EOF2
-mkexp x/nores <<< "$(tab q quick 0 1 0 - fixture)"
-mkexp x/incomplete <<< "$(tab q quick 0 1 0 - fixture)"
+mkexp x/nores <<< "$(tab q quick claim 0 1 - - - fixture)"
+mkexp x/incomplete <<< "$(tab q quick claim 0 1 - - - fixture)"
 mkres x/incomplete quick 6 <<< "$(tab q 0.5 0)"
 touch "$root/results/x/incomplete/quick/INCOMPLETE"
 mkexp x/wide <<EOF2
-$(tab tight quick 0.9 1.1 2 1 'band 0.2 wide, error 0.5: unresolved')
-$(tab zero quick 0 0 3 0 'zero-width band: a test at any error')
+$(tab tight quick claim 0.9 1.1 - - 1 'band 0.2 wide, error 0.5: unresolved')
+$(tab zero quick gate 0 0 3 1 0 'an exact gate: |0.1| <= 3 x 0.5, se 0.5 <= resolution 1')
 EOF2
 mkres x/wide quick 2 <<EOF2
 $(tab tight 1.0 0.5)
 $(tab zero 0.1 0.5)
 EOF2
-mkexp x/paperonly <<< "$(tab q paper 0 1 0 - fixture)"
+# gates: a range gate by the claims' rule, exact gates by k se with a resolution
+mkexp x/gates <<EOF2
+$(tab t quick gate 0.99 1.01 - - 1 'temperature: [0.997, 1.005] inside')
+$(tab z quick gate 0 0 3 0.1 0 'exact: |0.05| <= 3 x 0.02, 0.02 <= 0.1')
+$(tab zres quick gate 0 0 3 0.01 0 'exact: se 0.02 above the resolution 0.01: undecided')
+$(tab c quick claim 1 2 - - 1.5 'a claim that passes')
+EOF2
+mkres x/gates quick 3 <<EOF2
+$(tab t 1.001 0.002)
+$(tab z 0.05 0.02)
+$(tab zres 0.05 0.02)
+$(tab c 1.5 0.1)
+EOF2
+# regression references never enter the verdict
+mkexp x/reg <<EOF2
+$(tab r quick regression 2.5 2.5 4 0.2 - 'regression reference: quick tier at abc1234')
+$(tab c quick claim 1 2 - - 1.5 'unresolved')
+EOF2
+mkres x/reg quick 3 <<EOF2
+$(tab r 2.6 0.05)
+$(tab c 1.9 0.1)
+EOF2
+# rows that break the format
+mkexp x/badrow <<EOF2
+$(tab zw quick claim 1 1 3 0.1 1 'a claim of zero width')
+$(tab gx quick gate 0.9 1.1 - - 1 'a gate marked expect fail' fail)
+$(tab kk quick foo 0 1 - - - 'an unknown kind')
+$(tab kw quick claim 1 2 2 - - 'a claim band widened by k')
+EOF2
+mkres x/badrow quick 1 <<EOF2
+$(tab zw 1 0.01)
+$(tab gx 1 0.01)
+$(tab kk 0.5 0.01)
+$(tab kw 1.5 0.01)
+EOF2
+mkexp x/paperonly <<< "$(tab q paper claim 0 1 - - - fixture)"
 mkres x/paperonly paper 7 <<EOF2
 $(tab q 0.5 0)
 $(tab q_tol1e-10 0.25 0.05)
@@ -154,47 +193,71 @@ EOF2
 # ---------------------------------------------------------------- check
 C="$tools/check"
 T "check: value inside band passes" 0 "$C" x/y
-has "check: PASS row for eta" '^x/y  *eta .*PASS'
-has "check: final count line" '^1 passed, 0 failed$'
-T "check: paper tier (k_sigma=2 widens band, one-sided inf band)" 0 "$C" --tier paper x/y
-has "check: paper tier counted" '^2 passed, 0 failed$'
+has "check: PASS row for eta" '^x/y  *eta .*claim .*PASS'
+has "check: final count line" '^claims: 1 passed, 0 failed, 0 unresolved; gates: 0 of 0 passed; regression references: 0 of 0 passed$'
+T "check: paper tier (one-sided band)" 0 "$C" --tier paper x/y
+has "check: paper tier counted" '^claims: 2 passed, 0 failed, 0 unresolved'
 T "check: TIER env picks the tier" 0 env TIER=paper "$C" x/y
-has "check: TIER env count" '^2 passed, 0 failed$'
+has "check: TIER env count" '^claims: 2 passed'
 T "check: value outside band fails" 1 "$C" x/out
 has "check: FAIL row" 'q .*FAIL'
-has "check: count for failure" '^0 passed, 1 failed$'
+has "check: count for failure" '^claims: 0 passed, 1 failed, 0 unresolved'
+has "check: a failure is named" '^FAILED: 1 row'
 T "check: quantity missing from summary.tsv" 1 "$C" x/miss
 has "check: MISSING row" '^x/miss  *b .*MISSING'
-has "check: MISSING counts as failure" '^1 passed, 1 failed$'
-T "check: k_sigma applied" 1 "$C" x/kappa
-has "check: 2.3+-0.2 in [1,2] at k=2 passes" 'k2 .*PASS'
-has "check: 2.3+-0.2 in [1,2] at k=1 fails" 'k1 .*FAIL'
-has "check: 0.65+-0.2 in [1,2] at k=2 passes (low side)" 'klo .*PASS'
+has "check: MISSING fails" '^FAILED: 1 row'
+T "check: the decision rule (a claim FAIL fails)" 1 "$C" x/rule
+has "check: value +- 2 se inside: PASS" 'x/rule  *in .*PASS'
+has "check: straddling an edge: UNRESOLVED" 'x/rule  *edge .*UNRESOLVED'
+has "check: the run length that decides it: (2 se / d)^2" 'x/rule  *edge .*a run 4 times as long would decide it'
+has "check: wholly outside: FAIL" 'x/rule  *out  .*FAIL'
+has "check: inside the band widened by 2 se is no longer a pass" 'x/rule  *outwide .*UNRESOLVED'
+has "check: one-sided band" 'x/rule  *lowside .*PASS'
+has "check: no standard error decides nothing" 'x/rule  *nose .*UNRESOLVED'
+has "check: rule counts" '^claims: 2 passed, 1 failed, 3 unresolved'
 T "check: nan / inf handling" 1 "$C" x/nan
 has "check: nan value fails" 'vnan .*FAIL'
-has "check: inf value fails even in (-inf, inf)" 'vinf .*FAIL'
-has "check: nan stderr counts as 0 (inside)" 'senan  .*PASS'
-has "check: nan stderr counts as 0 (outside)" 'senan_out .*FAIL'
+has "check: inf value fails" 'vinf .*FAIL'
 T "check: no summary.tsv" 1 "$C" x/nores
 has "check: no summary -> MISSING" 'nores .*MISSING'
 T "check: INCOMPLETE result rejected" 1 "$C" experiments/x/incomplete/
 has "check: INCOMPLETE -> MISSING" 'incomplete .*MISSING .*INCOMPLETE'
 T "check: no bands for tier does not fail" 0 "$C" --tier quick x/paperonly
 has "check: no-bands note" '(no bands for tier quick)'
-has "check: zero count" '^0 passed, 0 failed$'
-T "check: an unresolved row does not fail" 0 "$C" x/wide
+has "check: zero count" '^claims: 0 passed, 0 failed, 0 unresolved'
+T "check: an unresolved claim does not fail" 0 "$C" x/wide
 has "check: error wider than the band is UNRESOLVED" 'x/wide  *tight .*UNRESOLVED'
-has "check: zero-width band stays a test" 'x/wide  *zero .*PASS'
-has "check: unresolved counted apart" '^1 passed, 0 failed, 1 unresolved'
+has "check: an exact gate within k se and its resolution" 'x/wide  *zero .*gate .*PASS'
+T "check: a gate its run cannot resolve fails check" 1 "$C" x/gates
+has "check: range gate by the claims' rule" 'x/gates  *t  .*gate .*PASS'
+has "check: exact gate" 'x/gates  *z  .*\[0, 0\] +-3 sigma, se <= 0.1 .*PASS'
+has "check: exact gate above its resolution: UNRESOLVED" 'x/gates  *zres .*UNRESOLVED .*above the resolution'
+has "check: gates counted apart" '^claims: 1 passed, 0 failed, 0 unresolved; gates: 2 of 3 passed'
+T "check: a regression reference" 0 "$C" x/reg
+has "check: regression row" 'x/reg  *r  .*regression .*PASS'
+has "check: regressions counted apart" 'regression references: 1 of 1 passed'
+T "check: malformed band rows fail" 1 "$C" x/badrow
+has "check: a claim of zero width is BAD" 'x/badrow  *zw .*BAD .*nonzero width'
+has "check: expect = fail on a gate is BAD" 'x/badrow  *gx .*BAD .*never a gate'
+has "check: an unknown kind is BAD" 'x/badrow  *kk .*BAD .*bad kind'
+has "check: a claim widened by k is BAD" "x/badrow  *kw .*BAD .*never widened"
 T "check: unknown experiment fails" 1 "$C" x/nonesuch
 T "check: all experiments by default" 1 "$C"
 has "check: default run lists x/y" '^x/y '
-has "check: default run count" '^6 passed, 8 failed, 1 unresolved'
 lacks "check: no awk errors" 'awk:'
 T "check: bad option" 2 "$C" --bogus
 T "check --tsv: the band rows, exit 0 on a failure" 0 "$C" --tsv x/out
-has "check --tsv: a row as lib/bands.awk gives it" "^x/out	q	5.5	0.1	1	2	0	1.5	FAIL	"
+has "check --tsv: a row as lib/bands.awk gives it" "^x/out	q	5.5	0.1	1	2	-	1.5	FAIL	"
 lacks "check --tsv: no table" 'passed'
+T "check --verdicts" 0 "$C" --verdicts --tier auto x/y x/out x/rule x/gates x/reg x/wide x/nores x/badrow
+has "check --verdicts: [Re] from the paper tier" '^x/y	paper	\[Re\]	2	0	0	0	0	0	0	0	-	'
+has "check --verdicts: every claim fails: [¬Re]" '^x/out	quick	\[¬Re\]	0	1	0	0	'
+has "check --verdicts: pass and fail: [~Re], the decide factor" '^x/rule	quick	\[~Re\]	2	1	3	0	0	0	0	0	inf	'
+has "check --verdicts: a gate not passing: invalid" '^x/gates	quick	invalid	1	0	0	0	2	3	'
+has "check --verdicts: regression references do not count" '^x/reg	quick	unresolved	0	0	1	0	0	0	1	1	4	'
+has "check --verdicts: unresolved" '^x/wide	quick	unresolved	0	0	1	0	1	1	'
+has "check --verdicts: not run" '^x/nores	-	not run	'
+has "check --verdicts: bad bands" '^x/badrow	quick	bad bands	'
 
 # ---------------------------------------------------------------- the paper filter
 # M [-i IN] [-o OUT.md]: tools/render-paper's markdown output of the filter (default OUT: $G),
@@ -214,17 +277,17 @@ if [ -f "$G" ]; then
     in_file "paper-filter: a quick-tier number not computed here is marked" "$G" '^Quick: \*(quick tier: run `make figures`)\*; committed 0.5 +- 0\.$'
     in_file "paper-filter: placeholders replaced" "$G" '^| experiment | verdict'
     if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "paper-filter: placeholder left over" "$G"; else ok "paper-filter: no placeholder left"; fi
-    in_file "paper-filter: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | \*\*paper\*\* |'
+    in_file "paper-filter: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | 2 / 0 / 0 | none | \*\*paper\*\* |'
     in_file "paper-filter: summary cpu seconds from provenance" "$G" '^| `x/y` .*| 4321.5 | - |$'
-    in_file "paper-filter: summary [~Re] for partly passing" "$G" '^| `x/miss` | \[~Re\] (1/2) | \*\*quick\*\*'
-    in_file "paper-filter: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\]'
-    in_file "paper-filter: summary distance of the failure" "$G" '^| `x/out` .*| 8 | 2 | - |$'
+    in_file "paper-filter: summary: a missing claim value" "$G" '^| `x/miss` | missing | 1 / 0 / 0 (1 missing) | none | \*\*quick\*\*'
+    in_file "paper-filter: summary [¬Re] for failing" "$G" '^| `x/out` | \[¬Re\] | 0 / 1 / 0 | none | \*\*quick\*\* | - | 2 | - |$'
     in_file "paper-filter: summary not run" "$G" '^| `x/nores` | not run |'
     in_file "paper-filter: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "paper-filter: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
-    in_file "paper-filter: inline verdicts computed from the bands" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier); miss \*\*\[~Re\] (1/2)\*\* (quick tier); out \*\*\[¬Re\] (0/1)\*\* (quick tier)\.$'
-    in_file "paper-filter: inline CPU seconds from provenance, tier named unless paper" "$G" '^CPU: y 4322 s; out 2 (quick tier) s\.$'
-    in_file "paper-filter: an unresolved row is not a pass" "$G" '^| `x/wide` | \[~Re\] (1/2) |'
+    in_file "paper-filter: inline verdicts name their claims" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier: 2 of 2 claims pass); miss \*\*missing\*\* (quick tier: pass `a`); out \*\*\[¬Re\]\*\* (quick tier: fail `q`)\.$'
+    in_file "paper-filter: summary [~Re], with the run length that decides" "$G" '^| `x/rule` | \[~Re\] | 2 / 1 / 3 | none | \*\*quick\*\* | inf |'
+    in_file "paper-filter: an unresolved claim is not a pass" "$G" '^| `x/wide` | unresolved | 0 / 0 / 1 | 1 of 1 | \*\*quick\*\* | ×100 |'
+    in_file "paper-filter: a gate not passing makes the result invalid" "$G" '^| `x/gates` | invalid | 1 / 0 / 0 | 2 of 3 |'
     in_file "paper-filter: inline value from the paper tier" "$G" '^Values: 30.9 +- 0.3; '
     in_file "paper-filter: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
     in_file "paper-filter: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
@@ -253,24 +316,24 @@ if [ -f "$G" ]; then
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
     in_file "paper-filter: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
     # every number of the summary table traced to the files: the CPU seconds to the tier's
-    # provenance.tsv, the pass count and the worst distance to the bands evaluated on its
-    # summary.tsv (lib/bands.awk); then every provenance CPU changed: every CPU cell follows
+    # provenance.tsv, the claim and gate counts to the bands evaluated on its summary.tsv
+    # (lib/bands.awk); then every provenance CPU changed: every CPU cell follows
     trace_summary() { # trace_summary GEN.md -> "rows bad" on stdout, a line per mismatch on stderr
         ( . "$tools/lib/common.sh"
           awk '/^\| experiment \| verdict/ { t = 1; next } t && !/^\|/ { exit } t && /^\| `/' "$1" |
-          while IFS='|' read -r _ id verdict tier worst cpu _; do
-            id=$(echo "$id" | tr -d ' `'); tier=$(echo "$tier" | tr -d ' *'); worst=$(echo "$worst" | tr -d ' ')
-            cpu=$(echo "$cpu" | tr -d ' '); verdict=$(echo "$verdict" | sed 's/^ *//; s/ *$//')
+          while IFS='|' read -r _ id verdict claims gates tier decide cpu _; do
+            id=$(echo "$id" | tr -d ' `'); tier=$(echo "$tier" | tr -d ' *'); claims=$(echo "$claims" | sed 's/^ *//; s/ *$//')
+            gates=$(echo "$gates" | sed 's/^ *//; s/ *$//'); cpu=$(echo "$cpu" | tr -d ' ')
             [ "$tier" = "-" ] && { echo "row"; continue; }
             want_cpu=$(provenance "$id" "$tier" cpu_seconds)
-            read -r n p w < <(evaluate "$id" "$tier" | awk -F '\t' '{ n++; if ($9 == "PASS") p++
-                if ($10 == "inf" || $10 == "-") inf = 1; else if ($10 + 0 > m) m = $10 + 0 }
-                END { printf "%d %d %s\n", n, p, inf ? "inf" : sprintf("%.3g", m) }')
-            case $verdict in "[Re]") vp=$n ;; "[¬Re] (0/$n)") vp=0 ;; *"($p/$n)") vp=$p ;; *) vp=x ;; esac
+            want=$(evaluate "$id" "$tier" | awk -F '\t' '
+                $9 == "BAD" { next }
+                $13 == "claim" { if ($9 == "PASS") p++; else if ($9 == "FAIL" || $9 == "XFAIL") f++; else if ($9 == "UNRESOLVED") u++; else m++ }
+                $13 == "gate" { g++; if ($9 == "PASS") gp++ }
+                END { printf "%d / %d / %d%s|%s\n", p, f, u, m ? sprintf(" (%d missing)", m) : "", g ? sprintf("%d of %d", gp, g) : "none" }')
             echo "row"
             [ "$cpu" = "$want_cpu" ] || echo "bad $id cpu $cpu vs provenance $want_cpu" >&2
-            [ "$worst" = "$w" ] || echo "bad $id worst $worst vs bands $w" >&2
-            [ "$vp" = "$p" ] || echo "bad $id verdict '$verdict' vs $p/$n passing" >&2
+            [ "$claims|$gates" = "$want" ] || echo "bad $id claims/gates '$claims|$gates' vs bands '$want'" >&2
           done ) 2>&1 | awk '/^row$/ { r++ } /^bad/ { b++; print > "/dev/stderr" } END { printf "%d %d\n", r, b + 0 }'
     }
     read -r nrows nbad < <(trace_summary "$G" 2> "$root/trace.err")
@@ -281,13 +344,13 @@ if [ -f "$G" ]; then
     read -r nrows nbad < <(trace_summary "$root/traced.md" 2> "$root/trace.err")
     awk '/^\| experiment \| verdict/ { t = 1; next } t && !/^\|/ { exit } t && /^\| `/' "$root/traced.md" > "$root/traced.rows"
     ncpu=$(grep -c '| 9876.5 | [^|]* |$' "$root/traced.rows")
-    nrun=$(grep -vc '| - | - | - |$' "$root/traced.rows")
+    nrun=$(grep -vc '| - | - | - | - | - | - |$' "$root/traced.rows")
     if [ "$nbad" = 0 ] && [ "$ncpu" = "$nrun" ] && [ "$ncpu" -gt 0 ]; then ok "paper-filter: changed provenance CPU shows in every row ($ncpu)"
     else bad "paper-filter: CPU cells did not follow provenance ($ncpu of $nrun rows, $nbad mismatches)" "$root/trace.err"; fi
     for p in "$root"/results/*/*/*/provenance.tsv; do mv "$p.keep" "$p"; done
-    in_file "paper-filter: results row, paper tier value" "$G" '^| `eta` | 29.08 | 30.9 ± 0.3 | \[28.5, 30.5\] ± 2 σ | paper | pass |'
-    in_file "paper-filter: results row, quick tier value" "$G" '^| `eta` | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
-    in_file "paper-filter: results one-sided row" "$G" '`ratio` | 3.65 | 3.71 ± 0 | \[3, inf\]'
+    in_file "paper-filter: results row, paper tier value" "$G" '^| `eta` | claim | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | paper | pass |'
+    in_file "paper-filter: results row, quick tier value" "$G" '^| `eta` | claim | 29.08 | 29.317 ± 0.25 | \[28.5, 30.5\] | quick | pass |'
+    in_file "paper-filter: results one-sided row" "$G" '`ratio` | claim | 3.65 | 3.71 ± 0 | \[3, inf\]'
     in_file "paper-filter: results cpu per tier" "$G" 'CPU time: paper 4321.5 s, quick 1.5 s'
     in_file "paper-filter: table header drops the verdict marker" "$G" '^| row | ours | verdict |$'
     in_file "paper-filter: table verdict of a banded quantity" "$G" '^| 1 | 30.9 +- 0.3 | pass |$'
@@ -519,7 +582,7 @@ emit_from b q q_b
 EOF2
 chmod +x "$rx/fake-dpd" "$rx/experiments/t/e/run.sh"
 echo 'x = 1;' > "$rx/experiments/t/e/s.cfg"
-{ tab quantity tier lo hi k_sigma paper source; tab q_a quick 1 2 0 - fixture; tab q_b quick 1 2 0 - fixture; } > "$rx/experiments/t/e/bands.tsv"
+{ echo "$BANDS_HEADER"; tab q_a quick claim 1 2 - - - fixture; tab q_b quick claim 1 2 - - - fixture; } > "$rx/experiments/t/e/bands.tsv"
 log="$root/fake.log"
 RX() { env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$@"; }
 ( cd "$rx" && git init -q . 2>/dev/null ) || true
@@ -744,11 +807,11 @@ mv "$rx/results/t/e.away" "$rx/results/t/e"
 # a paper tier never run whose reduced tier is committed: NOTRUN, not a failure; a paper tier
 # that was started and left incomplete still fails (MISSING)
 mkdir -p "$root/experiments/x/nr"
-{ tab quantity tier lo hi k_sigma paper source; tab q paper 1 2 0 1.5 fixture; tab q reduced 1 2 1 1.5 fixture; } > "$root/experiments/x/nr/bands.tsv"
+{ echo "$BANDS_HEADER"; tab q paper claim 1 2 - - 1.5 fixture; tab q reduced claim 1 2 - - 1.5 fixture; } > "$root/experiments/x/nr/bands.tsv"
 mkres x/nr reduced 1 <<< "$(tab q 1.6 0.1)"
 T "check: paper tier not run, reduced committed: exit 0" 0 "$C" --tier paper x/nr
 has "check: NOTRUN shown" "NOTRUN"
-has "check: NOTRUN counted apart" "1 not run"
+has "check: NOTRUN counted apart" "1 rows not run"
 T "check: the reduced tier itself" 0 "$C" --tier reduced x/nr
 mkdir -p "$root/results/x/nr/paper"; : > "$root/results/x/nr/paper/INCOMPLETE"
 T "check: a paper tier left incomplete fails" 1 "$C" --tier paper x/nr
@@ -757,13 +820,13 @@ rm -rf "$root/results/x/nr/paper"
 
 # known non-reproductions: expect = fail (8th column) -> XFAIL, not a failure; XPASS is one
 mkdir -p "$root/experiments/x/xf" "$root/experiments/x/xp"
-{ tab quantity tier lo hi k_sigma paper source expect; tab q quick 0 inf 0 '>0' 'paper claim' fail; } > "$root/experiments/x/xf/bands.tsv"
+{ echo "$BANDS_HEADER"; tab q quick claim 0 inf - - '>0' 'paper claim' fail; } > "$root/experiments/x/xf/bands.tsv"
 mkres x/xf quick 1 <<< "$(tab q -3.2 1.0)"
 T "check: known non-reproduction (expect fail) is XFAIL, exit 0" 0 "$C" x/xf
 has "check: XFAIL shown" "XFAIL"
-has "check: XFAIL counted apart" "1 known non-reproductions"
-{ tab quantity tier lo hi k_sigma paper source expect; tab q quick 0 inf 0 '>0' 'paper claim' fail; } > "$root/experiments/x/xp/bands.tsv"
-mkres x/xp quick 1 <<< "$(tab q 3.2 1.0)"
+has "check: XFAIL counted apart" "1 of them known non-reproductions"
+{ echo "$BANDS_HEADER"; tab q quick claim 0 inf - - '>0' 'paper claim' fail; } > "$root/experiments/x/xp/bands.tsv"
+mkres x/xp quick 1 <<< "$(tab q 3.2 0.5)"
 T "check: a known non-reproduction that passes is XPASS, exit 1" 1 "$C" x/xp
 has "check: XPASS shown" "XPASS"
 

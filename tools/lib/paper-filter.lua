@@ -50,7 +50,8 @@
 -- NAME-quick.png) while results/P/E/quick holds neither summary.tsv nor INCOMPLETE (never committed;
 -- `make figures` computes it) is no error: it reads "*(quick tier: run `make figures`)*", and one
 -- stderr line counts them. An unpinned placeholder that finds no result stays an error.
--- Verdicts come from tools/check --tsv (tools/lib/bands.awk: one source of truth with make check);
+-- Verdicts come from tools/check --verdicts and --tsv (tools/lib/verdict.awk and bands.awk: one source
+-- of truth with make check and results/verdicts.tsv);
 -- the summary table's inputs column from build/freshness.tsv (tools/verify-results).
 -- env: DPD_ROOT (default the repository top), MKPAPER_ALLOW_MISSING, MKPAPER_FRESHNESS
 --      (default $DPD_ROOT/build/freshness.tsv)
@@ -215,30 +216,53 @@ local function experiment_ids()
     return ids
 end
 
--- verdict of an experiment from the bands of the tier its numbers come from
--- (paper if its results exist, else reduced, else quick): verdict, tier ('-' if none), worst, cpu
+-- the verdicts of every experiment (tools/check --verdicts --tier auto, lib/verdict.awk: one source
+-- with make check and results/verdicts.tsv), by experiment: tier ('-' if none), verdict, counts of
+-- claims passed / failed / unresolved / missing, gates passed / total, regression references,
+-- decide (the run-length factor that would decide the unresolved claims), worst, cpu
+local verdict_cache
 local function verdict_of(id)
-    local v = { tier = '-', worst = '-', cpu = '-' }
-    if not exists(ROOT .. '/experiments/' .. id) then v.verdict = 'not yet built'; return v end
-    for _, t in ipairs(TIERS) do if valid_result(id, t) then v.tier = t; break end end
-    if v.tier == '-' then v.verdict = 'not run'; return v end
-    local rows = band_rows(id, v.tier)
-    if #rows == 0 then v.verdict = 'no bands for tier ' .. v.tier
-    else
-        local npass, worst, inf = 0, 0, false
-        for _, r in ipairs(rows) do
-            if r[9] == 'PASS' then npass = npass + 1 end
-            if r[10] == 'inf' or r[10] == '-' then inf = true
-            elseif awk_number(r[10]) > worst then worst = awk_number(r[10]) end
+    if not verdict_cache then
+        verdict_cache = {}
+        local cmd = 'DPD_ROOT=' .. shell_quote(ROOT) .. ' ' .. shell_quote(TOOLS .. '/check') .. ' --verdicts --tier auto'
+        local lines, ok = command_lines(cmd)
+        if not ok then problem('tools/check --verdicts', 'failed (it gives every verdict)') end
+        for i, l in ipairs(lines) do
+            local f = split(l, '\t')
+            if i > 1 and #f >= 14 then
+                verdict_cache[f[1]] = { tier = f[2], verdict = f[3], cp = tonumber(f[4]), cf = tonumber(f[5]),
+                    cu = tonumber(f[6]), cm = tonumber(f[7]), gp = tonumber(f[8]), gt = tonumber(f[9]),
+                    rp = tonumber(f[10]), rt = tonumber(f[11]), decide = f[12], worst = f[13], cpu = f[14] }
+            end
         end
-        v.worst = inf and 'inf' or string.format('%.3g', worst)
-        if npass == #rows then v.verdict = '[Re]'
-        elseif npass > 0 then v.verdict = string.format('[~Re] (%d/%d)', npass, #rows)
-        else v.verdict = string.format('[¬Re] (0/%d)', #rows) end
     end
-    local cpu = provenance(id, v.tier, 'cpu_seconds')
-    v.cpu = cpu ~= '' and cpu or '-'
-    return v
+    local v = verdict_cache[id]
+    if v then return v end
+    if not exists(ROOT .. '/experiments/' .. id) then
+        return { tier = '-', verdict = 'not yet built', cp = 0, cf = 0, cu = 0, cm = 0, gp = 0, gt = 0, rp = 0, rt = 0, decide = '-', worst = '-', cpu = '-' }
+    end
+    return { tier = '-', verdict = 'not run', cp = 0, cf = 0, cu = 0, cm = 0, gp = 0, gt = 0, rp = 0, rt = 0, decide = '-', worst = '-', cpu = '-' }
+end
+
+-- the claims of ID at TIER by outcome: PASS, FAIL (with XFAIL), UNRESOLVED; each a list of names
+local function claims_by_outcome(id, tier)
+    local by = { PASS = {}, FAIL = {}, UNRESOLVED = {} }
+    for _, r in ipairs(band_rows(id, tier)) do
+        if r[13] == 'claim' then
+            local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
+            if by[o] then table.insert(by[o], r[2]) end
+        end
+    end
+    return by
+end
+
+-- "name, name, ... and N more" (at most SHOWN names, in code font)
+local function name_list(names, shown)
+    local t = {}
+    for i = 1, math.min(#names, shown) do t[i] = '`' .. names[i] .. '`' end
+    local s = table.concat(t, ', ')
+    if #names > shown then s = s .. string.format(' and %d more', #names - shown) end
+    return s
 end
 
 -- the inputs column of the summary table (build/freshness.tsv from tools/verify-results)
@@ -256,10 +280,14 @@ end
 -- ---------------------------------------------------------------- block placeholders (markdown out)
 
 local SUMMARY_CAPTION = table.concat({
-    ': Reproduction status. Verdict from the bands of the tier shown (paper if its results exist, else reduced, else quick):',
-    '[Re] all quantities inside their bands, [~Re] some, [¬Re] none.',
-    "Worst distance: largest |value - band centre| / (band half-width + k stderr) over the experiment's",
-    'quantities, so at most 1 means inside; for one-sided bands 1 + excess/|bound|; inf for a non-finite or missing value.',
+    ': Reproduction status, from the bands of the tier shown (paper if its results exist, else reduced, else quick).',
+    'Each row of a bands.tsv is a *claim* (a number or shape the paper states, or theory with a stated tolerance)',
+    'or a *gate* (a check that the set-up is right). A claim passes when value ± 2 stderr lies inside its band',
+    '(the paper\'s number with its tolerance, never widened by the run\'s error), fails when it lies wholly outside,',
+    'and is unresolved otherwise. Verdict, from the claims only: [Re] every claim passes, [¬Re] every claim fails,',
+    '[~Re] some pass and some fail, *unresolved* when the run cannot decide; *invalid* when a gate does not pass',
+    '(the result is then no evidence either way). Decide: how many times longer the run must be to decide its',
+    'unresolved claims (the largest over them, if the value stays where it is and the error falls as 1/√length).',
     'CPU s: cpu_seconds from provenance.tsv.',
     'Inputs (tools/verify-results, run by make paper): *reanalysed* -- the analysis, redone by the current run.sh',
     'from the kept simulation outputs, reproduces every table, and every simulation it asks for was made with',
@@ -286,13 +314,17 @@ local function paper_cpu_line(ids)
 end
 
 local function summary_table()
-    local out = { '', '| experiment | verdict | tier | worst distance | CPU s | inputs |', '|:---|:---|:---|---:|---:|:---|' }
+    local out = { '', '| experiment | verdict | claims pass / fail / unresolved | gates | tier | decide | CPU s | inputs |',
+                  '|:---|:---|:---|:---|:---|---:|---:|:---|' }
     local ids = experiment_ids()
     for _, id in ipairs(ids) do
         local v = verdict_of(id)
         local tier = v.tier ~= '-' and '**' .. v.tier .. '**' or '-'
-        out[#out + 1] = string.format('| `%s` | %s | %s | %s | %s | %s |', id, v.verdict, tier, v.worst, v.cpu,
-                                      freshness_of(id, v.tier))
+        local claims = v.tier == '-' and '-' or string.format('%d / %d / %d', v.cp, v.cf, v.cu) .. (v.cm > 0 and string.format(' (%d missing)', v.cm) or '')
+        local gates = v.tier == '-' and '-' or (v.gt == 0 and 'none' or string.format('%d of %d', v.gp, v.gt))
+        local decide = (v.decide ~= '-' and v.decide ~= 'inf') and string.format('×%s', v.decide) or v.decide
+        out[#out + 1] = string.format('| `%s` | %s | %s | %s | %s | %s | %s | %s |', id, v.verdict, claims, gates, tier,
+                                      decide, v.cpu, freshness_of(id, v.tier))
     end
     out[#out + 1] = ''; out[#out + 1] = SUMMARY_CAPTION; out[#out + 1] = ''
     return table.concat(out, '\n') .. '\n' .. paper_cpu_line(ids)
@@ -312,9 +344,12 @@ local function results_table(ph, arg)
             any = true
             for _, r in ipairs(band_rows(id, t)) do
                 local ours = r[3] == '-' and 'missing' or fmt_if_number('%.6g', r[3]) .. ' ± ' .. fmt_if_number('%.2g', r[4])
-                local band = '[' .. r[5] .. ', ' .. r[6] .. ']' .. (awk_number(r[7]) > 0 and ' ± ' .. r[7] .. ' σ' or '')
-                rows[#rows + 1] = string.format('| `%s` | %s | %s | %s | %s | %s |', r[2], pipe_escape(r[8]),
-                                                pipe_escape(ours), pipe_escape(band), t, verdict_cell(r[9]))
+                local band = '[' .. r[5] .. ', ' .. r[6] .. ']'
+                if r[5] == r[6] then band = band .. ' ± ' .. r[7] .. ' σ' .. ((r[14] or '-') ~= '-' and ', σ ≤ ' .. r[14] or '') end
+                local outcome = verdict_cell(r[9])
+                if r[9] == 'UNRESOLVED' and r[13] == 'claim' and (r[15] or '-') ~= '-' then outcome = outcome .. ' (×' .. r[15] .. ' run)' end
+                rows[#rows + 1] = string.format('| `%s` | %s | %s | %s | %s | %s | %s |', r[2], r[13] or '-', pipe_escape(r[8]),
+                                                pipe_escape(ours), pipe_escape(band), t, outcome)
             end
             local c = provenance(id, t, 'cpu_seconds')
             cpus[#cpus + 1] = t .. ' ' .. (c ~= '' and c or '?') .. ' s'
@@ -324,12 +359,14 @@ local function results_table(ph, arg)
     local out = { '' }
     if #rows == 0 then out[#out + 1] = '*No bands for the tiers that have results.*'
     else
-        out[#out + 1] = '| quantity | paper | ours ± stderr | band | tier | verdict |'
-        out[#out + 1] = '|:---|---:|---:|:---|:---|:---|'
+        out[#out + 1] = '| quantity | kind | paper | ours ± stderr | band | tier | outcome |'
+        out[#out + 1] = '|:---|:---|---:|---:|:---|:---|:---|'
         for _, r in ipairs(rows) do out[#out + 1] = r end
     end
     out[#out + 1] = ''
-    out[#out + 1] = ': `' .. id .. '`: our values against the tolerance bands (band widened by k × stderr). CPU time: '
+    out[#out + 1] = ': `' .. id .. '`: our values against the bands. A claim passes when value ± 2 stderr lies inside its band'
+        .. ' and fails when it lies wholly outside (×N: a run N times as long would decide an unresolved one); a gate'
+        .. ' of one value passes when it lies within the σ shown and its stderr is at most the resolution shown. CPU time: '
         .. table.concat(cpus, ', ') .. '.'
     return table.concat(out, '\n') .. '\n\n'
 end
@@ -500,7 +537,19 @@ end
 local function inline_verdict(id)
     local v = verdict_of(id)
     if v.tier == '-' then return missing('{{verdict:' .. id .. '}}', 'no results for ' .. id, 'missing verdict: ' .. id) end
-    return '**' .. v.verdict .. '** (' .. v.tier .. ' tier)'
+    local s = '**' .. v.verdict .. '** (' .. v.tier .. ' tier'
+    if v.verdict == '[Re]' then return s .. string.format(': %d of %d claims pass)', v.cp, v.cp) end
+    if v.verdict == 'invalid' then return s .. string.format(': %d of %d gates pass)', v.gp, v.gt) end
+    if v.cp + v.cf + v.cu == 0 then return s .. ')' end
+    -- every other verdict names its claims
+    local by, parts = claims_by_outcome(id, v.tier), {}
+    if #by.PASS > 0 then parts[#parts + 1] = 'pass ' .. name_list(by.PASS, 6) end
+    if #by.FAIL > 0 then parts[#parts + 1] = 'fail ' .. name_list(by.FAIL, 6) end
+    if #by.UNRESOLVED > 0 then
+        parts[#parts + 1] = 'unresolved ' .. name_list(by.UNRESOLVED, 6)
+            .. ((v.decide ~= '-' and v.decide ~= 'inf') and string.format(' (a run ×%s as long would decide them)', v.decide) or '')
+    end
+    return s .. ': ' .. table.concat(parts, '; ') .. ')'
 end
 
 local function inline_cpu(spec)
