@@ -11,21 +11,30 @@
 # tab02-readings' estimator) at each M, with and without the bodies' momentum in the current
 # (measure.tcaf.include_bodies), against the suspension's shear viscosity at that M.
 . "$DPD_ROOT/tools/lib/exp.sh"
+# the finite-size effect of this 8.077^3 box: our eta_r(0.49) against fig04's and fig05's in 15^3
+needs paper mai-duy-2019/fig04-relative-viscosity-a353
+needs paper mai-duy-2019/fig05-relative-viscosity-a650
 MD=$DPD_ROOT/experiments/mai-duy-2019
 FIG04=$MD/fig04-relative-viscosity-a353 T02=$MD/tab02-effective-viscosity
 lattice_pair 13:7 2                          # tag phi0.49, L = 8.077, count = 2058, geo
 case $TIER in
-    quick) MASSES="6"; AS="3.53 6.50"; CHOICES=""; TCAF_MASSES="6"
+    quick) MASSES="6"; AS="3.53 6.50"; CHOICES=""; SIZES=""; TCAF_MASSES="6"
            run=(--set equilibration=200 --set steps=600); slow=(); tcafrun=(--set equilibration=200 --set steps=1200) ;;
-    paper) MASSES="1 6 24"; AS="3.53 6.50"; CHOICES="dt0.01 rate0.003"; TCAF_MASSES="1 6 24"
+    paper) MASSES="1 6 24"; AS="3.53 6.50"; CHOICES="dt0.01 rate0.003"; SIZES="H100 H1600 d0.35 d0.25"; TCAF_MASSES="1 6 24"
            run=(--set equilibration=2000 --set steps=10000); tcafrun=(--set equilibration=1000 --set steps=8000) ;;
 esac
 # body M with its inertia: the octahedron's sites at d = 0.5 from the centre, I = (2/3) M d^2
 body() { echo --set "colloids.mass=$1" --set "colloids.inertia=$(awk -v m="$1" 'BEGIN { printf "%.10g", m / 6 }')"; }
 rep() { echo --set "pairs.[0].a=$1" --set "pairs.[1].a=$1" --set "pairs.[2].a=$1"; }
-# choice settings: the default (M as given, dt 0.005, rate 0.1) or one varied
+# choice settings: the default (M as given, dt 0.005, rate 0.1, H = 400, d = 0.5) or one varied (issue 37
+# item 5: the spring stiffness H and the octahedron's size d, the two choices that set the colloid's size;
+# d above 0.5 is not possible here, the lattice spacing 1.154 leaving the facing sites of neighbours
+# 1.154 - 2 d apart; the inertia (2/3) M d^2 follows d)
 choice_args() { case $1 in dt0.01) echo --set dt=0.01 --set equilibration=1000 --set steps=5000 ;;
-                          rate0.003) echo --set shear_rate=0.003 --set equilibration=2000 --set steps=60000 ;; esac; }
+                          rate0.003) echo --set shear_rate=0.003 --set equilibration=2000 --set steps=60000 ;;
+                          H*) echo "${run[@]}" --set "colloids.H=${1#H}" ;;
+                          d*) echo "${run[@]}" --set "colloids.site_distance=${1#d}" \
+                                   --set "colloids.inertia=$(awk -v d="${1#d}" 'BEGIN { printf "%.10g", 4 * d * d }')" ;; esac; }
 
 # ---- the simulations
 n=0
@@ -44,6 +53,15 @@ for a in $AS; do
         # shellcheck disable=SC2046
         dpd_run solvent_a${a}_$c "$FIG04/solvent-shear.cfg" --set "box=[$L,$L,$L]" --set "pairs.[0].a=$a" $(choice_args $c) \
             --set "seed=$((47000 + n))"; n=$((n + 1))
+    done
+done
+# the colloid's size: H and d varied one at a time (their solvent is the default one: it has no colloids)
+n=200
+for a in $AS; do
+    for c in $SIZES; do
+        # shellcheck disable=SC2046
+        dpd_run susp_M6_a${a}_$c "$FIG04/suspension-shear.cfg" "${geo[@]}" $(rep $a) $(body 6) $(choice_args $c) \
+            --set "colloids.per_axis=$kq" --set "seed=$((47000 + n))"; n=$((n + 1))
     done
 done
 for M in $TCAF_MASSES; do
@@ -66,12 +84,21 @@ row() {  # NAME(case) SUSP SOLVENT a M
 }
 for M in $MASSES; do for a in $AS; do row M${M}_a$a susp_M${M}_a$a solvent_a$a $a $M; done; done
 for c in $CHOICES; do for a in $AS; do row ${c}_a$a susp_M6_a${a}_$c solvent_a${a}_$c $a 6; done; done
+for c in $SIZES; do for a in $AS; do row ${c}_a$a susp_M6_a${a}_$c solvent_a$a $a 6; done; done
 # the question: does a choice make eta_r rise with a as the paper's does (6.69 - 5.17 = 1.52)?
 for M in $MASSES; do emit_diff eta_r_a6.50_minus_a3.53_M$M . eta_r_M${M}_a6.50 . eta_r_M${M}_a3.53; done
-for c in $CHOICES; do emit_diff eta_r_a6.50_minus_a3.53_$c . eta_r_${c}_a6.50 . eta_r_${c}_a3.53; done
+for c in $CHOICES $SIZES; do emit_diff eta_r_a6.50_minus_a3.53_$c . eta_r_${c}_a6.50 . eta_r_${c}_a3.53; done
 # and how far each moves eta_r from ours (M = 6, dt 0.005, rate 0.1)
 for M in $MASSES; do [ "$M" = 6 ] || for a in $AS; do emit_diff eta_r_change_M${M}_a$a . eta_r_M${M}_a$a . eta_r_M6_a$a; done; done
-for c in $CHOICES; do for a in $AS; do emit_diff eta_r_change_${c}_a$a . eta_r_${c}_a$a . eta_r_M6_a$a; done; done
+for c in $CHOICES $SIZES; do for a in $AS; do emit_diff eta_r_change_${c}_a$a . eta_r_${c}_a$a . eta_r_M6_a$a; done; done
+# the box: ours (M = 6, 7^3 colloids in 8.077^3) against the paper tier's 13^3 in 15^3 (fig04, fig05)
+if [ "$TIER" = paper ]; then
+    for a in $AS; do
+        up=$(upstream mai-duy-2019/fig04-relative-viscosity-a353); [ "$a" = 6.50 ] && up=$(upstream mai-duy-2019/fig05-relative-viscosity-a650)
+        awk -F'\t' '$1 == "eta_r_original_phi0.49" { print "eta_r_box15_a'"$a"'\t" $2 "\t" $3 }' "$up/summary.tsv" >> "$OUT/summary.tsv"
+        emit_diff eta_r_box8.08_minus_box15_a$a . eta_r_M6_a$a . eta_r_box15_a$a
+    done
+fi
 # constrained TCAF eta(k -> 0) (time integral) with and without the bodies, at each M (a = 3.53),
 # and the TCAF eta_r = eta_susp(M) / eta_c(k -> 0)
 printf 'M\tbodies\teta_k0\tse\teta_susp\tse\n' > "$OUT/tcaf.tsv"
