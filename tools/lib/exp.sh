@@ -156,8 +156,26 @@ h5_series() {
     tr -d ' ,' < "$f" | grep .; rm -f "$f"
 }
 
-# emit QUANTITY VALUE STDERR: a row of the experiment summary.
-emit() { printf '%s\t%s\t%s\n' "$1" "$2" "$3" >> "$OUT/summary.tsv"; }
+# tcaf_k0 NAME MODEL BOX -> "value<TAB>stderr": eta(k -> 0) of run NAME's stored C(k,t) by `dpd tcaf-fit
+# --model MODEL` (README "The simulator"), rho the run's tcaf_mass_density, BOX its side; the per-shell
+# eta(k) goes to runs/NAME/tcaf_fit_MODEL.tsv. The suspension experiments of Mai-Duy et al. judge the
+# spring-constrained eta(k -> 0) by MODEL = integral: the time integral of C(k,t)/C(k,0), the
+# zero-frequency viscosity of generalised hydrodynamics, free of the fit window that makes eq. 28's
+# amplitude-1 exponential (the run's own tcaf_eta_k0, the paper's literal method) read the first
+# downswing of an oscillating curve at large phi; two-mode (its slow mode) is their second estimator.
+tcaf_k0() {
+    local rho; rho=$(get "$1" tcaf_mass_density | cut -f1) || return 1
+    "$DPD" tcaf-fit "$OUT/runs/$1/tcaf.tsv" --rho "$rho" --box "$3" --model "$2" --table "$OUT/runs/$1/tcaf_fit_$2.tsv" \
+        > "$OUT/runs/$1/tcaf_fit_$2.out" || { echo "exp.sh: dpd tcaf-fit --model $2 failed on run $1" >&2; return 1; }
+    awk -F'\t' '$1 == "eta_k0" { print $2 "\t" $3; f = 1; exit } END { exit !f }' "$OUT/runs/$1/tcaf_fit_$2.out"
+}
+
+# emit QUANTITY VALUE STDERR, or emit QUANTITY "VALUE<TAB>STDERR" (as get and tcaf_k0 give it): a row
+# of the experiment summary.
+emit() {
+    if [ $# -eq 2 ]; then printf '%s\t%s\n' "$1" "$2" >> "$OUT/summary.tsv"
+    else printf '%s\t%s\t%s\n' "$1" "$2" "$3" >> "$OUT/summary.tsv"; fi
+}
 
 # emit_from NAME QUANTITY [AS]: copy a run quantity into the summary.
 emit_from() {

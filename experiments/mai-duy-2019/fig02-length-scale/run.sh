@@ -17,16 +17,26 @@ dpd_run constrained_bodies constrained.cfg "${tier[@]}" --set "types.[1].count=$
         --set measure.tcaf.include_bodies=true
 np=$(get free particles | cut -f1)
 awk -v c="$count" -v n="$np" 'BEGIN { printf "phi\t%.10g\t0\n", c / n }' >> "$OUT/summary.tsv"
+L=15; [ "$TIER" = quick ] && L=8          # the box's side (the scenes' 15, the quick tier's 8)
+# the constrained eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the
+# two-mode slow mode (second estimator) and eq. 28's amplitude-1 fit (the paper's literal, *_exp)
 emit_from free tcaf_eta_k0 eta_k0_free
-emit_from constrained tcaf_eta_k0 eta_k0_constrained
-emit_diff eta_k0_free_minus_constrained free tcaf_eta_k0 constrained tcaf_eta_k0
-emit_from constrained_bodies tcaf_eta_k0 eta_k0_constrained_with_bodies
-emit_diff eta_k0_free_minus_constrained_with_bodies free tcaf_eta_k0 constrained_bodies tcaf_eta_k0
+for r in constrained constrained_bodies; do
+    w=; [ $r = constrained_bodies ] && w=_with_bodies
+    emit eta_k0_constrained$w "$(tcaf_k0 $r integral "$L")"
+    emit eta_k0_constrained_two_mode$w "$(tcaf_k0 $r two-mode "$L")"
+    emit_from $r tcaf_eta_k0 eta_k0_constrained_exp$w
+    emit_diff eta_k0_free_minus_constrained$w free tcaf_eta_k0 . eta_k0_constrained$w
+    emit_diff eta_k0_free_minus_constrained_two_mode$w free tcaf_eta_k0 . eta_k0_constrained_two_mode$w
+    emit_diff eta_k0_free_minus_constrained_exp$w free tcaf_eta_k0 $r tcaf_eta_k0
+done
 emit_from constrained colloid_spring_extension_rms spring_extension_rms
 emit_from constrained temperature temperature_constrained
 # k_eff: linear interpolation of the free eta(k) between the two shells that bracket the
 # constrained eta(k -> 0); errors of the three values (independent) propagated to first order
-num_awk -F'\t' -v tag=x -v ec="$(get constrained tcaf_eta_k0 | cut -f1)" -v se="$(get constrained tcaf_eta_k0 | cut -f2)" \
-    -f ../tab02-effective-viscosity/keff.awk "$OUT/runs/free/tcaf_eta.tsv" |
-    awk -F'\t' '$1 ~ /^(k|lambda)_eff_x$/ { sub(/_x$/, "", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+for est in "" _exp; do
+    ec=$(get . eta_k0_constrained$est)
+    num_awk -F'\t' -v tag=x -v ec="${ec%	*}" -v se="${ec#*	}" -f ../tab02-effective-viscosity/keff.awk "$OUT/runs/free/tcaf_eta.tsv" |
+        awk -F'\t' -v e="$est" '$1 ~ /^(k|lambda)_eff_x$/ { sub(/_x$/, e, $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+done
 for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done

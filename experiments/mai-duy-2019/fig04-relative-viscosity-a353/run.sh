@@ -2,7 +2,8 @@
 # Figs 4-5 of Mai-Duy et al. 2019: relative viscosity eta_r(phi) of the spring-model suspension
 # under simple shear, eta_susp / eta_solvent with four choices of the solvent viscosity:
 #   original: the solvent's shear viscosity (same box, rate, run length);
-#   TCAF:     eta_eff = the constrained system's eta(k -> 0) (Table 2, tab02-effective-viscosity);
+#   TCAF:     eta_eff = the constrained system's eta(k -> 0) by the time integral of C(k,t) (Table 2,
+#             tab02-effective-viscosity; the two-mode slow mode and eq. 28's amplitude-1 fit beside it);
 #   cube, sphere: the free system's eta(k) at k = 2 pi / lambda, lambda of eq. 31 / eq. 32, from
 #             a short run at dt = 0.001 sampling the axis wave vectors up to past the sphere's k
 #             (the main TCAF runs reach |k| ~ 2 and cannot resolve decays of a few steps);
@@ -98,10 +99,16 @@ for pair in $PAIRS; do
     emit_from susp_$tag colloid_spring_extension_rms spring_extension_rms_$tag
     emit_ratio eta_r_original_$tag susp_$tag viscosity solvent viscosity
     if [[ " $TCAF_PAIRS " == *" $pair "* ]]; then
-        # the TCAF construction of tab02-effective-viscosity at this phi and repulsion
+        # the TCAF construction of tab02-effective-viscosity at this phi and repulsion: the constrained
+        # eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the
+        # two-mode slow mode (second estimator) and eq. 28's amplitude-1 fit (the paper's literal, *_exp_*)
         emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
-        emit_from constrained_$tag tcaf_eta_k0 eta_eff_$tag
-        emit_ratio eta_r_tcaf_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
+        emit eta_eff_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
+        emit eta_eff_two_mode_$tag "$(tcaf_k0 constrained_$tag two-mode "$L")"
+        emit_from constrained_$tag tcaf_eta_k0 eta_eff_exp_$tag
+        emit_ratio eta_r_tcaf_$tag susp_$tag viscosity . eta_eff_$tag
+        emit_ratio eta_r_tcaf_two_mode_$tag susp_$tag viscosity . eta_eff_two_mode_$tag
+        emit_ratio eta_r_tcaf_exp_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
         lc=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", L / k }')                          # eq. 31
         ls=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", (3 / (4 * 3.14159265358979 * k^3 / L^3))^(1/3) }')  # eq. 32
         # eta(k) at the cube and sphere k (the high-k runs), free system and solvent alone in the same box

@@ -33,12 +33,17 @@ for pair in $PAIRS; do lattice_pair "$pair" 4; pair_simulations $i; i=$((i + 1))
 # the analysis
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
+    # the constrained eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37),
+    # eq. 28's amplitude-1 fit (the paper's literal method and its artefact) beside it as *_exp_*
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
-    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
-    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
-    ec=$(get constrained_$tag tcaf_eta_k0)
-    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
-        awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
+    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_exp_$tag
+    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 . eta_k0_constrained_$tag
+    for est in "" exp_; do
+        ec=$(get . eta_k0_constrained_$est$tag)
+        num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$est$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
+            awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    done
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
 done
@@ -48,13 +53,16 @@ F04=; [ "$TIER" = reduced ] && F04=$(upstream_if mai-duy-2019/fig04-relative-vis
 if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
     tag=phi0.4940
     awk -F'\t' -v t="$tag" '$1 == "eta_k0_free_phi0.49" { print "eta_k0_free_" t "\t" $2 "\t" $3 }
-        $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"
+        $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }
+        $1 == "eta_eff_exp_phi0.49" { print "eta_k0_constrained_exp_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"
     num_awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 } END { a = "eta_k0_free_" t; b = "eta_k0_constrained_" t
         num_diff(v[a], s[a], v[b], s[b], o); print num_row("eta_k0_free_minus_constrained_" t, o) }' "$OUT/summary.tsv" > "$OUT/.rows"
     cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
-    ec=$(awk -F'\t' '$1 == "eta_eff_phi0.49" { print $2 "\t" $3 }' "$F04/summary.tsv")
-    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
-        awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    for est in "" exp_; do
+        ec=$(get . eta_k0_constrained_$est$tag)
+        num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$est$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
+            awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    done
     cp "$F04/tcaf_eta_free_phi0.49.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$F04/tcaf_eta_constrained_phi0.49.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
 fi

@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Table 2 of Mai-Duy et al. 2019: at each phi, eta(k) of the free and of the spring-constrained
 # system by TCAF (as fig02-length-scale), the constrained eta(k -> 0) = eta_eff and the free
-# system's k at which eta_free(k) equals it = k_eff (keff.awk).
+# system's k at which eta_free(k) equals it = k_eff (keff.awk). The constrained eta(k -> 0) by the
+# time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the two-mode slow mode beside it
+# (second estimator) and eq. 28's amplitude-1 fit (the paper's literal method, *_exp_*) as well; the
+# free system's eta(k) and eta(k -> 0) by the run's own eq. 28 fit (a simple fluid: the estimators
+# agree there, tab02-readings' consistency rows).
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs paper mai-duy-2019/tab01-wavelengths
 needs any mai-duy-2019/fig01-viscosity-wavenumber@paper
@@ -13,7 +17,7 @@ case $TIER in
                  --set measure.tcaf.window=60 --set measure.tcaf.origin_every=10 --set measure.tcaf.n2max=9) ;;
     paper) PAIRS="3:3 4:4 5:5 6:6 7:7 8:8 9:9 10:10 11:11 12:12 13:13"; tier=() ;;
 esac
-printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\n' > "$OUT/table2_data.tsv"
+printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\tk_eff_exp\tk_eff_exp_se\teta_eff_exp\teta_eff_exp_se\tk_eff_two_mode\tk_eff_two_mode_se\teta_eff_two_mode\teta_eff_two_mode_se\n' > "$OUT/table2_data.tsv"
 # the simulations: free and constrained at each phi
 i=0
 for pair in $PAIRS; do
@@ -35,24 +39,33 @@ for pair in $PAIRS; do
     np=$(get free_$tag particles | cut -f1)
     awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
-    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_$tag
-    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
+    emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
+    emit eta_k0_constrained_two_mode_$tag "$(tcaf_k0 constrained_$tag two-mode "$L")"
+    emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_exp_$tag
+    emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 . eta_k0_constrained_$tag
+    emit_diff eta_k0_free_minus_constrained_exp_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
     emit_from constrained_$tag temperature temperature_constrained_$tag
-    ec=$(get constrained_$tag tcaf_eta_k0)
+    ec=$(get . eta_k0_constrained_$tag)
     num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    ec=$(get . eta_k0_constrained_two_mode_$tag)
+    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="two_mode_$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    ec=$(get constrained_$tag tcaf_eta_k0)
+    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="exp_$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
     awk -F'\t' -v t="$tag" -v kp="$kp" '
         function g(q) { return (q in v) ? v[q] "\t" s[q] : "nan\tnan" }
         { v[$1] = $2; s[$1] = $3 }
-        END { printf "%s\t%s\t%s\t%s\t%s\t%s\n", kp, v["phi_" t], g("k_eff_" t), g("lambda_eff_" t), g("eta_eff_" t), g("eta_k0_free_" t) }' \
+        END { printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", kp, v["phi_" t], g("k_eff_" t), g("lambda_eff_" t), g("eta_eff_" t), g("eta_k0_free_" t),
+                     g("k_eff_exp_" t), g("eta_eff_exp_" t), g("k_eff_two_mode_" t), g("eta_eff_two_mode_" t) }' \
         "$OUT/summary.tsv" >> "$OUT/table2_data.tsv"
 done
 # Table 2 beside the paper's values (rows of the phi run; value +- stderr)
 awk -F'\t' 'NR == FNR { if ($1 !~ /^#/ && $1 != "k") { pk[$1] = $3; pl[$1] = $4; pe[$1] = $5 }; next }
-    FNR == 1 { print "k\tphi\tk_eff\tk_eff, paper\tlambda_eff\tlambda_eff, paper\teta_eff\teta_eff, paper\tfree eta(k -> 0)"; next }
+    FNR == 1 { print "k\tphi\tk_eff\tk_eff, paper\tlambda_eff\tlambda_eff, paper\teta_eff\teta_eff, paper\tfree eta(k -> 0)\teta_eff, two-mode (second estimator)\teta_eff, eq. 28 amplitude 1 (the literal fit of the paper, its artefact)\tk_eff, eq. 28 amplitude 1"; next }
     function pm(v, e) { return v == "nan" ? "none" : sprintf("%.3f +- %.3f", v, e) }
-    { printf "%s\t%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, pm($3, $4), pk[$1], pm($5, $6), pl[$1], pm($7, $8), pe[$1], pm($9, $10) }' \
+    { printf "%s\t%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, pm($3, $4), pk[$1], pm($5, $6), pl[$1], pm($7, $8), pe[$1], pm($9, $10),
+             pm($17, $18), pm($13, $14), pm($11, $12) }' \
     paper-table2.tsv "$OUT/table2_data.tsv" > "$OUT/table2.tsv"
 # Side check (not a reproduction): the paper's (k_eff, eta_eff) pairs against the eta(k) of the
 # pure solvent (n = 4) of fig01-viscosity-wavenumber's committed paper tier, read-only.
