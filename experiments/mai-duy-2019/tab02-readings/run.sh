@@ -116,6 +116,7 @@ at() {
 }
 
 # ---- per repulsion and pair ----
+printf '# a\tphi\tD\tE\tK\tF\tk_eff\tse\teta_eff\tse (grid.awk)\n' > "$OUT/grid_rows.tsv"
 i=0
 for A in $AS; do
     # the solvent's eta(k) for reading (e)
@@ -204,6 +205,12 @@ for A in $AS; do
             v=$(val reading_${rd}_eta_eff_a${A}_$tag) || continue
             put reading_${rd}_eta_r_a${A}_$tag "$(pm over "$(get susp_a${A}_$tag viscosity)" "$v")"
         done
+        # the grid of the open choices (grid.awk): k_eff and eta_eff of every combination, and eta_susp
+        num_awk -F'\t' -v a="$A" -v phi="$tag" -v f_p=1 -v f_s="$(awk -v r="$rho" 'BEGIN { printf "%.12g", 4 / r }')" \
+            -v f_t="$(awk -v a="$rho_tot" -v b="$rho" 'BEGIN { printf "%.12g", a / b }')" \
+            -v c_exp="$(get $cr tcaf_eta_k0)" -v c_two_mode="$c2" -v c_integral="$ci" \
+            -v f0_exp="$(get $fr tcaf_eta_k0)" -v f0_two_mode="$(fq $fr two-mode eta_k0)" -v f0_integral="$fi_" \
+            -f "$HERE/grid.awk" "$fc" "$sc" >> "$OUT/grid_rows.tsv"
         i=$((i + 1))
     done
 done
@@ -354,3 +361,34 @@ if [ "$TIER" = paper ]; then
                   printf "%.4f\t%s\t%.3f +- %.3f\t%s\n", p, pe[t[i]], e0 * (1 - p), s0 * (1 - p), pm("table2_eta_eff_over_eta0_one_minus_phi_" t[i]) } }' \
         "$PAPER2" "$OUT/summary.tsv" > "$OUT/eta0_one_minus_phi.tsv"
 fi
+
+# ---- the grid of the open choices (README, "The grid"): per combination, Table 2's rows (a = 3.53)
+# under the decision rule (value +- 2 se inside the paper's value +- 10 %: pass; wholly outside: fail;
+# else unresolved; none where the curve is not reached: fail), and the TCAF eta_r(0.49) at both a
+num_awk -F'\t' -v GRID="$OUT/grid.tsv" 'FNR == 1 { file++ }
+    file == 1 { if ($1 !~ /^#/ && $1 != "k") { key = sprintf("phi%.4f", $2); pk[key] = $3; pe[key] = $5 }; next }
+    file == 2 { if ($1 ~ /^eta_susp_a/) { es[$1] = $2; ess[$1] = $3 }; next }
+    /^#/ { next }
+    function decide(v, se, p,    lo, hi) { lo = 0.9 * p; hi = 1.1 * p
+        if (num_isnan(v)) return "fail"
+        if (v - 2 * se >= lo && v + 2 * se <= hi) return "pass"
+        if (v + 2 * se < lo || v - 2 * se > hi) return "fail"
+        return "unresolved" }
+    { c = $3 "_" $4 "_" $5 "_" $6
+      if (!(c in seen)) { seen[c] = 1; order[++nc] = c; dd[c] = $3; ee[c] = $4; kk[c] = $5; ff[c] = $6 }
+      if ($1 == "3.53" && ($2 in pe)) { ne[c, decide($9, $10, pe[$2])]++; nk[c, decide($7, $8, pk[$2])]++ }
+      if ($2 == "phi0.4940") {
+          q = "eta_susp_a" $1 "_phi0.4940"
+          if ((q in es) && !num_isnan($9)) num_ratio(es[q], ess[q], $9, $10, o); else { o["v"] = "nan"; o["se"] = "nan" }
+          er[c, $1] = num_pair(o); erf[c, $1] = num_fmt("%.2f", o["v"]) " +- " num_fmt("%.2f", o["se"]); ev[c, $1] = $9; evs[c, $1] = $10 } }
+    END {
+        printf "D\tE\tK\tF\teta_eff rows pass / fail / unresolved (of 11)\tk_eff rows pass / fail / unresolved (of 11)\teta_eff at 0.4940 (paper 15.5091)\teta_r(0.49), a = 3.53 (paper 9.69)\teta_r(0.49), a = 6.50 (paper 12.46)\n" > GRID
+        for (i = 1; i <= nc; i++) { c = order[i]
+            printf "%s\t%s\t%s\t%s\t%d / %d / %d\t%d / %d / %d\t%s\t%s\t%s\n", dd[c], ee[c], kk[c], ff[c],
+                ne[c, "pass"], ne[c, "fail"], ne[c, "unresolved"], nk[c, "pass"], nk[c, "fail"], nk[c, "unresolved"],
+                num_fmt("%.2f", ev[c, "3.53"]) " +- " num_fmt("%.2f", evs[c, "3.53"]), ((c, "3.53") in erf) ? erf[c, "3.53"] : "-", ((c, "6.50") in erf) ? erf[c, "6.50"] : "-" > GRID
+            for (j = 1; j <= 2; j++) { A = j == 1 ? "3.53" : "6.50"
+                if ((c, A) in er) { split(er[c, A], x, "\t"); printf "grid_%s_eta_r_a%s_phi0.4940\t%s\t%s\n", c, A, x[1], x[2] } }
+            printf "grid_%s_table2_eta_eff_rows_pass\t%d\t0\ngrid_%s_table2_k_eff_rows_pass\t%d\t0\n", c, ne[c, "pass"], c, nk[c, "pass"] } }' \
+    "$PAPER2" "$OUT/summary.tsv" "$OUT/grid_rows.tsv" > "$OUT/.rows"
+cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
