@@ -830,6 +830,33 @@ mkres x/xp quick 1 <<< "$(tab q 3.2 0.5)"
 T "check: a known non-reproduction that passes is XPASS, exit 1" 1 "$C" x/xp
 has "check: XPASS shown" "XPASS"
 
+# tools/regression-refs: the quick tier's references from its own result
+mkdir -p "$root/experiments/x/rr"
+{ echo "$BANDS_HEADER"; tab q paper claim 1 4 - - 2.4 'a claim'; tab t quick gate 0.9 1.1 - - 1 'a gate'
+  tab old quick regression 7 7 4 0.2 - 'an earlier reference'; } > "$root/experiments/x/rr/bands.tsv"
+mkres x/rr quick 1 <<EOF3
+$(tab q 2.5 0.1)
+$(tab t 1.0 0.01)
+$(tab old 7.1 0.05)
+$(tab nose 3 0)
+EOF3
+RR=$tools/regression-refs
+T "regression-refs: takes the references" 0 "$RR" x/rr
+has "regression-refs: counts them" 'x/rr: 2 reference'
+in_file "regression-refs: a claim's quantity referenced, k = 4, resolution twice its stderr" "$root/experiments/x/rr/bands.tsv" '^q	quick	regression	2.5	2.5	4	0.2	-	regression reference: the quick tier at commit abc123 (2.5 +- 0.1)'
+in_file "regression-refs: an earlier reference retaken" "$root/experiments/x/rr/bands.tsv" '^old	quick	regression	7.1	7.1	4	0.1	'
+if grep -q '^old	quick	regression	7	7' "$root/experiments/x/rr/bands.tsv"; then bad "regression-refs: the earlier row removed"; else ok "regression-refs: the earlier row removed"; fi
+if grep -q '^t	quick	regression' "$root/experiments/x/rr/bands.tsv"; then bad "regression-refs: a gate's quantity is not referenced"; else ok "regression-refs: a gate's quantity is not referenced"; fi
+T "regression-refs: the tier passes its own references" 0 "$C" x/rr
+has "regression-refs: counted" 'regression references: 2 of 2 passed'
+mkres x/rr quick 1 <<EOF3
+$(tab q 2.95 0.1)
+$(tab t 1.0 0.01)
+$(tab old 7.1 0.05)
+EOF3
+T "regression-refs: a value 4.5 se away fails check" 1 "$C" x/rr
+has "regression-refs: the moved value FAILs" '^x/rr  *q  .*regression .*FAIL'
+
 # tools/cost class: the factor a projected run gets follows the walk it takes (one type in 3D without
 # shear: the AVX-512 evaluators; several types, shear or 2D: the generic walk)
 cc=$tools/cost
