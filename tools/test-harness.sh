@@ -366,6 +366,11 @@ else
     bad "paper-filter: no output $G"
 fi
 
+# a heading glued to the paragraph before it (pandoc reads it as text): refused, named
+printf '# A\n\ntext\n## B glued\n' > "$root/glued.md"
+T "render-paper: a heading without a blank line before it fails" 1 "$tools/render-paper" -i "$root/glued.md" -o "$root/build/glued.html"
+has "render-paper: names the line" 'glued.md:4: ## B glued'
+
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
 rm -f "$G"
