@@ -286,7 +286,7 @@ if [ -f "$G" ]; then
     in_file "paper-filter: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
     in_file "paper-filter: inline verdicts name their claims" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier: 2 of 2 claims pass); miss \*\*missing\*\* (quick tier: pass `a`); out \*\*\[¬Re\]\*\* (quick tier: fail `q`)\.$'
     in_file "paper-filter: summary [~Re], with the run length that decides" "$G" '^| `x/rule` | \[~Re\] | 2 / 1 / 3 | none | \*\*quick\*\* | inf |'
-    in_file "paper-filter: an unresolved claim is not a pass" "$G" '^| `x/wide` | unresolved | 0 / 0 / 1 | 1 of 1 | \*\*quick\*\* | ×100 |'
+    in_file "paper-filter: an unresolved claim is not a pass" "$G" '^| `x/wide` | unresolved | 0 / 0 / 1 | 1 of 1 | \*\*quick\*\* | ×100 (0.056 CPU-h) |'
     in_file "paper-filter: a gate not passing makes the result invalid" "$G" '^| `x/gates` | invalid | 1 / 0 / 0 | 2 of 3 |'
     in_file "paper-filter: inline value from the paper tier" "$G" '^Values: 30.9 +- 0.3; '
     in_file "paper-filter: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '

@@ -286,8 +286,9 @@ local SUMMARY_CAPTION = table.concat({
     '(the paper\'s number with its tolerance, never widened by the run\'s error), fails when it lies wholly outside,',
     'and is unresolved otherwise. Verdict, from the claims only: [Re] every claim passes, [¬Re] every claim fails,',
     '[~Re] some pass and some fail, *unresolved* when the run cannot decide; *invalid* when a gate does not pass',
-    '(the result is then no evidence either way). Decide: how many times longer the run must be to decide its',
-    'unresolved claims (the largest over them, if the value stays where it is and the error falls as 1/√length).',
+    '(the result is then no evidence either way). Decide: how many times longer the runs must be to decide its',
+    'unresolved claims (the largest over them, if the value stays where it is and the error falls as 1/√length),',
+    'and the CPU-hours the experiment would then take (its runs scaled alike).',
     'CPU s: cpu_seconds from provenance.tsv.',
     'Inputs (tools/verify-results, run by make paper): *reanalysed* -- the analysis, redone by the current run.sh',
     'from the kept simulation outputs, reproduces every table, and every simulation it asks for was made with',
@@ -322,7 +323,15 @@ local function summary_table()
         local tier = v.tier ~= '-' and '**' .. v.tier .. '**' or '-'
         local claims = v.tier == '-' and '-' or string.format('%d / %d / %d', v.cp, v.cf, v.cu) .. (v.cm > 0 and string.format(' (%d missing)', v.cm) or '')
         local gates = v.tier == '-' and '-' or (v.gt == 0 and 'none' or string.format('%d of %d', v.gp, v.gt))
-        local decide = (v.decide ~= '-' and v.decide ~= 'inf') and string.format('×%s', v.decide) or v.decide
+        -- the run-length factor that decides the unresolved claims, and what the experiment's runs would
+        -- cost at that length (its CPU time so far times the factor: the runs scaled alike)
+        local decide = v.decide
+        if v.decide ~= '-' and v.decide ~= 'inf' then
+            decide = string.format('×%s', v.decide)
+            if is_number(v.cpu) and awk_number(v.cpu) > 0 then
+                decide = decide .. string.format(' (%.2g CPU-h)', awk_number(v.decide) * awk_number(v.cpu) / 3600)
+            end
+        end
         out[#out + 1] = string.format('| `%s` | %s | %s | %s | %s | %s | %s | %s |', id, v.verdict, claims, gates, tier,
                                       decide, v.cpu, freshness_of(id, v.tier))
     end
