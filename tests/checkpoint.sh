@@ -275,10 +275,10 @@ for _ in $(seq 6000); do [ -e "$out/checkpoint.dpd" ] && break; kill -0 $pid 2>/
 sleep "0.0$((RANDOM % 4))"; kill -KILL $pid; wait $pid
 EOF2
 chmod +x "$rx/experiments/t/e/run.sh" "$rx/crashing-dpd"
-printf 'quantity\ttier\tlo\thi\tk_sigma\tpaper\tsource\n%s\n%s\n%s\n' \
-    $'n_rot\tquick\t384\t384\t0\t-\tparticle count of the scene' \
-    $'n_colloids\tquick\t8\t8\t0\t-\tcolloid count of the scene' \
-    $'n_origins\tquick\t1\t1e9\t0\t-\tat least one origin' > "$rx/experiments/t/e/bands.tsv"
+printf 'quantity\ttier\tkind\tlo\thi\tk_sigma\tresolution\tpaper\tsource\n%s\n%s\n%s\n' \
+    $'n_rot\tquick\tgate\t384\t384\t0\t-\t-\tparticle count of the scene' \
+    $'n_colloids\tquick\tgate\t8\t8\t0\t-\t-\tcolloid count of the scene' \
+    $'n_origins\tquick\tgate\t1\t1e9\t-\t-\t-\tat least one origin' > "$rx/experiments/t/e/bands.tsv"
 RX() { env -u DPD_ROOT -u MAKEFLAGS OMP_NUM_THREADS=1 DPD_JOBS=2 DPD_BIN="$rx/crashing-dpd" REAL_DPD="$(cd "$(dirname "$DPD")" && pwd)/$(basename "$DPD")" \
        CRASH_LOG="$tmp/crash.log" DPD_CHECKPOINT_EVERY=20 DPD_CHECKPOINT_WALL=0 "$@"; }
 part=$rx/results/t/e/.quick.partial/runs
