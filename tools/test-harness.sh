@@ -848,7 +848,7 @@ EOF3
 RR=$tools/regression-refs
 T "regression-refs: takes the references" 0 "$RR" x/rr
 has "regression-refs: counts them" 'x/rr: 2 reference'
-in_file "regression-refs: a claim's quantity referenced, k = 4, resolution twice its stderr" "$root/experiments/x/rr/bands.tsv" '^q	quick	regression	2.5	2.5	4	0.2	-	regression reference: the quick tier at commit abc123 (2.5 +- 0.1)'
+in_file "regression-refs: a claim's quantity referenced, k = 4, resolution twice its stderr" "$root/experiments/x/rr/bands.tsv" '^q	quick	regression	2.5	2.5	4	0.2	-	regression reference: the quick tier at tree , binary abc123 (2.5 +- 0.1)'
 in_file "regression-refs: an earlier reference retaken" "$root/experiments/x/rr/bands.tsv" '^old	quick	regression	7.1	7.1	4	0.1	'
 if grep -q '^old	quick	regression	7	7' "$root/experiments/x/rr/bands.tsv"; then bad "regression-refs: the earlier row removed"; else ok "regression-refs: the earlier row removed"; fi
 if grep -q '^t	quick	regression' "$root/experiments/x/rr/bands.tsv"; then bad "regression-refs: a gate's quantity is not referenced"; else ok "regression-refs: a gate's quantity is not referenced"; fi

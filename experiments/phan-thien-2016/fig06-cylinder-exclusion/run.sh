@@ -5,9 +5,9 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 # run lengths (issue 37): long enough that the symmetry gate on the torque decides at its resolution,
 # 1 % of the flow torque scale (paper tier; stderr 0.039 at 200000 steps, so 16 times as long) and
-# 10 % (quick tier; about 0.17 at 10000 steps, so 3 times as long)
+# 10 % (quick tier; 0.14 at 30000 steps, so 80000)
 case $TIER in
-    quick) tier=(--set equilibration=1000 --set steps=30000) ;;
+    quick) tier=(--set equilibration=1000 --set steps=80000) ;;
     paper) tier=(--set equilibration=2000 --set steps=3200000) ;;
 esac
 dpd_run noflow cylinder.cfg "${tier[@]}"
