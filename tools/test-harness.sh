@@ -891,5 +891,32 @@ T "cost class: shear rate 0 is no shear" 0 "$cc" class "$root/one.cfg" --set she
 sed 's/s = 0.42; //' "$root/one.cfg" > "$root/std.cfg"
 T "cost class: s = 2" 0 "$cc" class "$root/std.cfg"; has "cost class: standard" '^standard$'
 
+# tools/progress: the line of make figures / make reproduce from a projection, the plans and the ledger.
+# A: three projected simulations (100, 100, 200 CPU s), of which a1 and a2 are planned (a3 was kept
+# from an earlier attempt); B: two (50, 50). a1 finishes after two attempts, 150 CPU s, 50 s after the
+# start: 1 of 4, spent 150 s; the cost model's finished share 100 s, so the rest (a2 100, b 100) is
+# scaled by 1.5: 150 + 300 = 450 s = 7.5 CPU-min; ETA: the rest's 200 s at 100 projected per 50 s = 100 s
+PG=$root/progress; PT=$tools/progress; PO=$root/prog-out
+mkdir -p "$PG/plan" "$PO/runs/a1" "$PO/runs/a9"
+printf 'A\nB\n' > "$PG/experiments"; : > "$PG/ledger"
+now=$(date +%s); echo $((now - 50)) > "$PG/t0"
+printf 'A\ta1\t100\nA\ta2\t100\nA\ta3\t200\nB\tb1\t50\nB\tb2\t50\n' > "$PG/jobs"
+printf 'a1\na2\n' > "$PO/.plan"; printf '100\n50\n' > "$PO/runs/a1/.cpu_seconds"
+T "progress: a plan registered" 0 env DPD_PROGRESS="$PG" "$PT" plan A "$PO"
+T "progress: a simulation done" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a1
+# (the tool reads the clock a moment later: either minute)
+has "progress: counts, CPU scaled by the model's error, ETA" "^pool: A a1 done: \[1/4 simulations, 2.5 of 7.5 CPU-min, ETA \($(date -d @$((now + 100)) +%H:%M)\|$(date -d @$((now + 110)) +%H:%M)\)\]$"
+T "progress: B finished without running (its projection no longer waited for)" 0 env DPD_PROGRESS="$PG" "$PT" finish B
+printf 'a9\n' > "$PO/.plan"; printf '120\n' > "$PO/runs/a9/.cpu_seconds"
+DPD_PROGRESS="$PG" "$PT" plan A "$PO"
+# a9, a later round's, counts at A's mean projection (400 / 3): spent 270 of 270 + (100 x 270 / 233.3)
+T "progress: a later round's simulation" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a9
+has "progress: it counts, B does not" '^pool: A a9 done: \[2/3 simulations, 4.5 of 6.4 CPU-min, ETA '
+rm -f "$PG/jobs"
+T "progress: before the projection is there" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a9
+has "progress: says so" '^pool: A a9 done: \[3 simulations, 390 CPU-s; projecting the total\]$'
+T "progress: without DPD_PROGRESS, nothing" 0 env -u DPD_PROGRESS "$PT" done A "$PO" a9
+if [ -s "$root/out" ]; then bad "progress: printed without DPD_PROGRESS" "$root/out"; else ok "progress: silent without DPD_PROGRESS"; fi
+
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
