@@ -31,7 +31,7 @@ OBJ := $(patsubst %.c,$(BUILD)/%.o,$(notdir $(SRC)))
 vpath %.c $(SRC_DIRS)
 BIN := bin/dpd
 
-.PHONY: all deps test test-slurm figures check reproduce paper paper-pdf bench bench-peer clean
+.PHONY: all deps test test-slurm test-paper figures check reproduce paper paper-pdf bench bench-peer clean
 all: $(BIN)
 
 # Install any missing Debian package (idempotent, fast when all present).
@@ -94,6 +94,12 @@ include experiments/experiments.mk
 paper-pdf: paper
 	@tools/deps pdf
 	@weasyprint -q build/paper.html build/paper.pdf && echo "paper-pdf: wrote build/paper.pdf"
+
+# build/paper.html (make paper) in headless Chromium, at a phone's and a laptop's width, with
+# screenshots into build/ (tests/browser.sh; Chromium installed on first use: tools/deps browser)
+test-paper:
+	@tools/deps browser
+	@tests/browser.sh
 
 # the Slurm engine against a real Slurm: a one-node cluster started here (tools/slurm-local)
 test-slurm: $(BIN)

@@ -43,10 +43,18 @@ plots:
 
 # EXPERIMENTS="paper/exp ..." selects experiments (default: all)
 EXPERIMENTS ?= $(EXP_IDS)
+# One progress line over them all as simulations finish, "[12/401 simulations, 3.2 of 45 CPU-h,
+# ETA 18:40]" (tools/progress: a ledger in build/progress-TIER, the cost model's projection of the
+# experiments whose results are out of date, which `make -n` names: tools/run-experiment says so)
+PROGRESS = DPD_PROGRESS='$(CURDIR)/build/progress-$(TIER)' DPD_PROGRESS_SLOTS=$(JOBS)
+PROGRESS_START = $(PROGRESS) tools/progress start $(TIER) $$($(MAKE) -n --no-print-directory \
+    $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv) 2>/dev/null | awk '$$1 == "tools/run-experiment" { print $$2 }')
 results: $(BIN)
-	+@$(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv)
+	+@$(PROGRESS_START)
+	+@$(PROGRESS) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv)
 figures: $(BIN)
-	+@$(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),figures/$(e)/.stamp-$(TIER))
+	+@$(PROGRESS_START)
+	+@$(PROGRESS) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),figures/$(e)/.stamp-$(TIER))
 	@echo "figures ($(TIER)) in figures/; check with: make check TIER=$(TIER)"
 
 check:

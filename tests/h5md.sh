@@ -6,10 +6,12 @@
 #    particles group's box (dimension, boundary, edges as a time series of
 #    D x D matrices), position / velocity / image (frames x N x D) sharing
 #    step and time, species; the measured series in /series (step, time,
-#    value), not in /observables, which MDAnalysis reads frame by frame;
+#    value), not in /observables, which MDAnalysis reads frame by frame (only
+#    the time between frames is there, sampled with the frames);
 #  - by MDAnalysis's H5MDReader (Debian 12's python3-mdanalysis 2.4.2):
 #    n_atoms, n_frames, frame 0's positions and velocities against the file,
-#    box dimensions, times, every frame read. The units are DPD reduced units,
+#    box dimensions, times, every frame read, dt (the time between frames, which
+#    MDAnalysis reads from /observables/dt: without it, 1.0 and a warning). The units are DPD reduced units,
 #    which H5MD leaves without a unit attribute, so MDAnalysis opens the file
 #    with convert_units=False (as its documentation says for such files) and,
 #    run.h5 holding no topology, with the minimal one of n_atoms particles;
@@ -86,8 +88,20 @@ if ok_e:
     check("box edges value: frames x D x D", ev.shape == (F, D, D), ev.shape)
     check("box edges step and time = position's", np.array_equal(e["step"][()], pos["step"][()])
           and np.array_equal(e["time"][()], pos["time"][()]))
-# MDAnalysis reads /observables/NAME/value[frame]: only data sampled with the frames may be there
-check("no /observables (the measured series are not sampled with the frames)", "observables" not in f)
+# MDAnalysis reads /observables/NAME/value[frame]: only data sampled with the frames may be there,
+# and the one such is dt, the time between frames, which is where MDAnalysis reads a dt from
+obs = f.get("observables")
+check("/observables: only series sampled with the frames (their step = position's)", obs is not None and all(
+      isinstance(o, h5py.Group) and "step" in o and np.array_equal(o["step"][()], pos["step"][()]) for o in obs.values()),
+      None if obs is None else list(obs))
+if obs is not None and "dt" in obs:
+    t = pos["time"][()]
+    dtv = obs["dt"]["value"][()]
+    check("/observables/dt: the time between frames, one per frame", dtv.shape == (F,)
+          and (F < 2 or np.allclose(dtv, np.diff(t).mean(), rtol=1e-9)) and np.allclose(np.diff(t), dtv[1:], rtol=1e-6),
+          (dtv[:3], np.diff(t)[:3]))
+else:
+    check("/observables/dt: the time between frames, one per frame", False, "absent")
 if "series" in f:
     bad = [k for k, o in f["series"].items()
            if not (isinstance(o, h5py.Group) and all(x in o for x in ("step", "time", "value"))
@@ -128,6 +142,18 @@ if kind != "2d":
               and np.allclose(ts.dimensions[3:5], 90.0) and abs(ts.dimensions[5] - angle) < 1e-3, ts.dimensions)
         times = [t.time for t in u.trajectory]
         check("MDAnalysis times = file, every frame read", np.allclose(times, g["position/time"][()]), times)
+        # dt: MDAnalysis says 1.0 with a warning ("Reader has no dt information") unless the file gives it
+        ft = g["position/time"][()]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            u.trajectory[0]
+            dt_read = u.trajectory.dt
+            total = u.trajectory.totaltime
+        said = [str(w.message) for w in caught if "dt" in str(w.message)]
+        if len(ft) > 1:
+            check("MDAnalysis dt = the time between frames, no warning", abs(dt_read - (ft[1] - ft[0])) < 1e-9 * abs(ft[1])
+                  and not said, (dt_read, ft[1] - ft[0], said))
+            check("MDAnalysis totaltime = last time - first", abs(total - (ft[-1] - ft[0])) < 1e-9 * abs(ft[-1]), (total, ft[-1] - ft[0]))
         f.close()
 EOF
 

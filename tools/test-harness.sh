@@ -274,7 +274,9 @@ chmod +x "$M"
 T "paper-filter: builds the fixture paper" 0 "$M"
 has "paper-filter: counts the placeholder awaiting the quick tier" '^paper-filter: 1 placeholder(s) await the quick tier of 1 experiment(s)'
 if [ -f "$G" ]; then
-    in_file "paper-filter: a quick-tier number not computed here is marked" "$G" '^Quick: \*(quick tier: run `make figures`)\*; committed 0.5 +- 0\.$'
+    in_file "paper-filter: a quick-tier number not computed here is marked" "$G" '^Quick: \[---\]{\.quick-pending title="quick tier: run make figures"}; committed 0.5 +- 0\.$'
+    in_file "paper-filter: its section gets the notice" "$G" '^This section quotes quick-tier numbers, which a fresh clone does not have: run `make figures`'
+    if grep -q 'table-wrap' "$G"; then bad "paper-filter: the table wrapper is for HTML only" "$G"; else ok "paper-filter: no table wrapper in markdown"; fi
     in_file "paper-filter: placeholders replaced" "$G" '^| experiment | verdict'
     if grep -q '<!-- \(summary-table\|results:\|figure:\|tsv:\|table:\|environment\)' "$G"; then bad "paper-filter: placeholder left over" "$G"; else ok "paper-filter: no placeholder left"; fi
     in_file "paper-filter: summary x/y [Re] on paper tier" "$G" '^| `x/y` | \[Re\] | 2 / 0 / 0 | none | \*\*paper\*\* |'
@@ -422,7 +424,7 @@ lacks "paper-filter: no quick-tier count without such placeholders" 'await the q
 
 # the quick tier, never committed: x/paperonly has a paper tier and no quick tier; what names
 # that quick tier is marked and counted, not an error; what is filled from it once it exists
-QM='\*(quick tier: run `make figures`)\*'
+QM='\[---\]{\.quick-pending title="quick tier: run make figures"}'
 cat > "$root/quick.md" <<'EOF2'
 a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}} c {{diff:x/paperonly@quick:q-q_tol1e-10}} d {{sigmas:x/paperonly:q_tol1e-10-x/paperonly@quick#q}}.
 e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}} f {{calc:%.2f:[x/paperonly@quick:q]*2+[x/paperonly:q]}} g {{calc:%.2f:[tsv:results/x/paperonly/quick/cells.tsv:1:eta]/[x/y:eta]}}.
@@ -441,6 +443,18 @@ in_file "paper-filter: quick tsv cell and calc operands marked" "$QG" "^e $QM f 
 in_file "paper-filter: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
 in_file "paper-filter: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
 in_file "paper-filter: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
+# the notice: once per section that holds a mark (from its heading to the next), right after its heading
+n_notice=$(grep -c '^This section quotes quick-tier numbers' "$QG")
+if [ "$n_notice" = 1 ]; then ok "paper-filter: one notice for a document without headings"; else bad "paper-filter: notices without headings" "$n_notice in $QG"; fi
+printf '%s\n' '# A' '' 'a {{x/paperonly@quick:q}} and {{cpu:x/paperonly@quick}}.' '' 'b {{x/paperonly:q}}.' '' \
+    '# B' '' 'c {{x/paperonly:q}}.' '' '## C' '' '<!-- figure: x/paperonly/plot-quick.png -->' '' '# D' '' \
+    '| x | y |' '|---|---|' '| {{x/paperonly@quick:q}} | 1 |' > "$root/qsec.md"
+T "paper-filter: quick marks under headings" 0 "$M" -i "$root/qsec.md" -o "$root/build/qsec.gen.md"
+awk '/^#/ { h = $0 } /^This section quotes quick-tier/ { printf "%s|", h } END { print "" }' "$root/build/qsec.gen.md" > "$root/qsec.notices"
+if [ "$(cat "$root/qsec.notices")" = '# A|## C|# D|' ]; then ok "paper-filter: one notice in each section with a mark (a paragraph, a figure, a table), none elsewhere"
+else bad "paper-filter: notices per section" "$(cat "$root/qsec.notices") in $root/build/qsec.gen.md"; fi
+if awk '/^# A/ { getline; getline; ok = /^::: quick-notice/ } END { exit !ok }' "$root/build/qsec.gen.md"; then ok "paper-filter: the notice follows its heading"
+else bad "paper-filter: the notice's place" "$root/build/qsec.gen.md"; fi
 T "paper-filter: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
 has "paper-filter: draft counts them" '^paper-filter: 10 placeholder(s) await the quick tier'
 if grep -q 'missing' "$QG"; then bad "paper-filter: draft calls a quick placeholder missing" "$QG"; else ok "paper-filter: draft does not call them missing"; fi
@@ -547,7 +561,10 @@ if command -v pandoc >/dev/null; then
         in_file "render-paper: title from front matter" "$H" '<title>Fixture paper</title>'
         in_file "render-paper: image embedded" "$H" 'data:image/png;base64'
         in_file "render-paper: table rendered" "$H" '<table'
-        in_file "render-paper: quick-tier mark rendered" "$H" '<em>(quick tier: run <code>make figures</code>)</em>'
+        in_file "render-paper: quick-tier mark rendered" "$H" '<span class="quick-pending" title="quick tier: run make figures">—</span>'
+        in_file "render-paper: its notice rendered" "$H" '<div class="quick-notice">'
+        in_file "render-paper: a table in its scrolling wrapper" "$H" '<div class="table-wrap">'
+        if grep -q '(quick tier: run' "$H"; then bad "render-paper: the old in-sentence mark left" "$H"; else ok "render-paper: no in-sentence mark"; fi
     else bad "render-paper: no $H"; fi
 else
     echo "skip - render-paper (no pandoc)"
@@ -873,6 +890,33 @@ T "cost class: shear by --set" 0 "$cc" class "$root/one.cfg" --set shear_rate=0.
 T "cost class: shear rate 0 is no shear" 0 "$cc" class "$root/one.cfg" --set shear_rate=0.0; has "cost class: pow (rate 0)" '^pow$'
 sed 's/s = 0.42; //' "$root/one.cfg" > "$root/std.cfg"
 T "cost class: s = 2" 0 "$cc" class "$root/std.cfg"; has "cost class: standard" '^standard$'
+
+# tools/progress: the line of make figures / make reproduce from a projection, the plans and the ledger.
+# A: three projected simulations (100, 100, 200 CPU s), of which a1 and a2 are planned (a3 was kept
+# from an earlier attempt); B: two (50, 50). a1 finishes after two attempts, 150 CPU s, 50 s after the
+# start: 1 of 4, spent 150 s; the cost model's finished share 100 s, so the rest (a2 100, b 100) is
+# scaled by 1.5: 150 + 300 = 450 s = 7.5 CPU-min; ETA: the rest's 200 s at 100 projected per 50 s = 100 s
+PG=$root/progress; PT=$tools/progress; PO=$root/prog-out
+mkdir -p "$PG/plan" "$PO/runs/a1" "$PO/runs/a9"
+printf 'A\nB\n' > "$PG/experiments"; : > "$PG/ledger"
+now=$(date +%s); echo $((now - 50)) > "$PG/t0"
+printf 'A\ta1\t100\nA\ta2\t100\nA\ta3\t200\nB\tb1\t50\nB\tb2\t50\n' > "$PG/jobs"
+printf 'a1\na2\n' > "$PO/.plan"; printf '100\n50\n' > "$PO/runs/a1/.cpu_seconds"
+T "progress: a plan registered" 0 env DPD_PROGRESS="$PG" "$PT" plan A "$PO"
+T "progress: a simulation done" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a1
+# (the tool reads the clock a moment later: either minute)
+has "progress: counts, CPU scaled by the model's error, ETA" "^pool: A a1 done: \[1/4 simulations, 2.5 of 7.5 CPU-min, ETA \($(date -d @$((now + 100)) +%H:%M)\|$(date -d @$((now + 110)) +%H:%M)\)\]$"
+T "progress: B finished without running (its projection no longer waited for)" 0 env DPD_PROGRESS="$PG" "$PT" finish B
+printf 'a9\n' > "$PO/.plan"; printf '120\n' > "$PO/runs/a9/.cpu_seconds"
+DPD_PROGRESS="$PG" "$PT" plan A "$PO"
+# a9, a later round's, counts at A's mean projection (400 / 3): spent 270 of 270 + (100 x 270 / 233.3)
+T "progress: a later round's simulation" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a9
+has "progress: it counts, B does not" '^pool: A a9 done: \[2/3 simulations, 4.5 of 6.4 CPU-min, ETA '
+rm -f "$PG/jobs"
+T "progress: before the projection is there" 0 env DPD_PROGRESS="$PG" "$PT" done A "$PO" a9
+has "progress: says so" '^pool: A a9 done: \[3 simulations, 390 CPU-s; projecting the total\]$'
+T "progress: without DPD_PROGRESS, nothing" 0 env -u DPD_PROGRESS "$PT" done A "$PO" a9
+if [ -s "$root/out" ]; then bad "progress: printed without DPD_PROGRESS" "$root/out"; else ok "progress: silent without DPD_PROGRESS"; fi
 
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -20,8 +20,14 @@ if lmp_runs; then
 fi
 
 mkdir -p "$PEER"
+# progress on the caller's stderr, which the log's tee does not take (make bench-peer sends this
+# script's output to /dev/null: the build takes minutes and would otherwise say nothing)
+exec 3>&2
+t_start=$(date +%s)
+step() { printf 'build-lammps: [%s] %s (%d s so far; log %s)\n' "$1" "$2" $(( $(date +%s) - t_start )) "$LOG" >&3; }
 exec > >(tee -a "$LOG") 2>&1
 echo "=== build-lammps.sh started $(date -u +%FT%TZ) ==="
+step 1/4 "LAMMPS for make bench-peer: Debian's source package and its build tools"
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -88,6 +94,7 @@ fi
 mkdir -p "$SRC"
 srcdir="$(find "$SRC" -mindepth 1 -maxdepth 1 -type d -name 'lammps-*' | head -n1 || true)"
 if [ -z "$srcdir" ] || [ ! -f "$srcdir/cmake/CMakeLists.txt" ]; then
+    step 2/4 "fetching and unpacking the lammps source package (apt-get source lammps)"
     ( cd "$SRC" && apt-get source lammps )
     srcdir="$(find "$SRC" -mindepth 1 -maxdepth 1 -type d -name 'lammps-*' | head -n1)"
 fi
@@ -118,13 +125,28 @@ CMAKE_ARGS=(
     -D WITH_FFMPEG=off
 )
 echo "build-lammps: cmake ${CMAKE_ARGS[*]}"
+step 3/4 "configuring (cmake: DPD-BASIC and OPENMP, no MPI)"
 cmake "${CMAKE_ARGS[@]}"
 
 echo "build-lammps: compiler flags used:"
 grep -E '^CMAKE_CXX_COMPILER:|^CMAKE_CXX_FLAGS(_RELEASE)?:|^CMAKE_BUILD_TYPE:' "$BLD/CMakeCache.txt" || true
 find "$BLD" -name flags.make -path '*lammps.dir*' -exec grep -H 'CXX_FLAGS' {} \; || true
 
-make -C "$BLD" -j"$JOBS"
+# the compilation, the long part: make's "[ NN%]" lines become a line on fd 3 at every 5 %, with
+# the time the rest should take at the pace so far
+step 4/4 "compiling with $JOBS jobs"
+t_make=$(date +%s) last=-5
+# (a shell loop, not awk: mawk reads a pipe in blocks, and would print the lines at the end)
+make -C "$BLD" -j"$JOBS" 2>&1 | while IFS= read -r line; do
+    printf '%s\n' "$line"
+    [[ $line =~ ^\[\ *([0-9]+)%\] ]] || continue
+    p=${BASH_REMATCH[1]}
+    if [ "$p" -ge $((last + 5)) ] || { [ "$p" = 100 ] && [ "$last" != 100 ]; }; then
+        last=$p el=$(( $(date +%s) - t_make ))
+        left=; [ "$p" -ge 5 ] && left=", about $(( (el * (100 - p) / p + 59) / 60 )) min left"
+        printf 'build-lammps: [4/4] compiling LAMMPS: %d %% after %d min %02d s%s\n' "$p" $((el / 60)) $((el % 60)) "$left" >&3
+    fi
+done
 
 bin="$BLD/lmp"
 [ -x "$bin" ] || { echo "build-lammps: no binary at $bin" >&2; exit 1; }
@@ -132,3 +154,4 @@ ln -sf "cmake-build/lmp" "$LMP"
 "$LMP" -h | sed -n '1,40p' | grep -iE 'LAMMPS|OS:|Compiler|C\+\+ standard|OpenMP|Installed packages' -A2 || true
 lmp_runs || { echo "build-lammps: $LMP does not run" >&2; exit 1; }
 echo "=== build-lammps.sh done $(date -u +%FT%TZ): $LMP ==="
+step done "built $LMP"

@@ -188,7 +188,7 @@ static int run_open(Run *r)
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
     }
-    if (output_open(&r->out, opt->outdir, s, r->rc.trajectory_every > 0)) {
+    if (output_open(&r->out, opt->outdir, s, r->rc.trajectory_every)) {
         fprintf(stderr, "dpd: cannot create the HDF5 file in '%s' (disk full or not writable?)\n", opt->outdir);
         return 4;
     }

@@ -243,6 +243,15 @@ static int traj_create(hid_t file, const System *s, hid_t h[TRAJ_SETS])
         H5Lcreate_hard(file, "/particles/all/position/time", g, "time", H5P_DEFAULT, H5P_DEFAULT);
         H5Gclose(g);
     }
+    /* the time between frames as an observable sampled with the frames: MDAnalysis's H5MD reader
+     * (2.4) takes a trajectory's dt only from /observables/dt/value[frame] (else it warns and says
+     * 1.0); a time series with position's step and time, as H5MD asks of an observable */
+    hid_t og = ensure_group(file, "/observables/dt");
+    if (og < 0) return -1;
+    h[TRAJ_DT] = extensible(og, "value", H5T_NATIVE_DOUBLE, 0, 1);
+    H5Lcreate_hard(file, "/particles/all/position/step", og, "step", H5P_DEFAULT, H5P_DEFAULT);
+    H5Lcreate_hard(file, "/particles/all/position/time", og, "time", H5P_DEFAULT, H5P_DEFAULT);
+    H5Gclose(og);
     for (int k = 0; k < TRAJ_SETS; k++) if (h[k] < 0) return -1;
     return 0;
 }
@@ -252,8 +261,9 @@ static void traj_close(hid_t h[TRAJ_SETS])
     for (int k = 0; k < TRAJ_SETS; k++) if (h[k] > 0) { H5Dclose(h[k]); h[k] = -1; }
 }
 
-int output_open(Output *o, const char *dir, const System *s, int trajectory)
+int output_open(Output *o, const char *dir, const System *s, int trajectory_every)
 {
+    const int trajectory = trajectory_every > 0;
     memset(o, 0, sizeof *o);
     for (int k = 0; k < TRAJ_SETS; k++) o->traj[k] = o->seg[k] = -1;
     o->seg_file = -1;
@@ -268,6 +278,7 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     if (o->file < 0) return -1;
     if (h5md_header(o->file)) return -1;
     o->traj_on = trajectory;
+    o->frame_every = trajectory_every;
     o->segmented = trajectory;
     if (trajectory && traj_create(o->file, s, o->traj)) return -1;
     return 0;
@@ -303,12 +314,13 @@ static int read_frame(hid_t d, hid_t type, long long frame, int cols, int dim, v
 
 static const char *SET_PATH[TRAJ_SETS] = {
     "/particles/all/position/value", "/particles/all/velocity/value", "/particles/all/image/value",
-    "/particles/all/box/edges/value", "/particles/all/position/step", "/particles/all/position/time"};
+    "/particles/all/box/edges/value", "/particles/all/position/step", "/particles/all/position/time",
+    "/observables/dt/value"};
 
 /* Rows of one frame of each set (0: a scalar per frame), and its type. */
 static int set_rows(int q, const System *s)
 {
-    return q == TRAJ_BOX ? s->box.dim : q == TRAJ_STEP || q == TRAJ_TIME ? 0 : s->n;
+    return q == TRAJ_BOX ? s->box.dim : q == TRAJ_STEP || q == TRAJ_TIME || q == TRAJ_DT ? 0 : s->n;
 }
 static hid_t set_type(int q)
 {
@@ -357,6 +369,8 @@ int output_frame(Output *o, const System *s)
     long long st = (long long)s->step;
     rc |= append(h[TRAJ_STEP], H5T_NATIVE_LLONG, at, 0, 1, &st);
     rc |= append(h[TRAJ_TIME], H5T_NATIVE_DOUBLE, at, 0, 1, &s->time);
+    const double frame_dt = o->frame_every * s->dt;
+    rc |= append(h[TRAJ_DT], H5T_NATIVE_DOUBLE, at, 0, 1, &frame_dt);
     free(buf); free(ib);
     o->frames++;
     if (o->segmented) o->seg_frames++;

@@ -8,8 +8,8 @@
 #include "system.h"
 
 /* trajectory datasets: position, velocity, image (frames x n x dim), box edges
- * (frames x dim x dim), step, time (frames) */
-enum { TRAJ_POS, TRAJ_VEL, TRAJ_IMG, TRAJ_BOX, TRAJ_STEP, TRAJ_TIME, TRAJ_SETS };
+ * (frames x dim x dim), step, time, and the time between frames (frames) */
+enum { TRAJ_POS, TRAJ_VEL, TRAJ_IMG, TRAJ_BOX, TRAJ_STEP, TRAJ_TIME, TRAJ_DT, TRAJ_SETS };
 
 /* A run with a trajectory writes its frames into segment files
  * DIR/trajectory-NNNN.h5 (each a valid H5MD file, written as
@@ -23,6 +23,7 @@ typedef struct {
     hid_t traj[TRAJ_SETS];
     long long frames;         /* frames written (all segments included) */
     int traj_on;
+    int frame_every;          /* steps between frames (output_open's trajectory_every) */
     int segmented;
     hid_t seg_file, seg[TRAJ_SETS];
     int nseg;                 /* complete segment files */
@@ -34,7 +35,8 @@ typedef struct {
     char value[512];
 } ProvItem;
 
-int  output_open(Output *o, const char *dir, const System *s, int trajectory);
+/* trajectory_every > 0: an H5MD trajectory with a frame every that many steps */
+int  output_open(Output *o, const char *dir, const System *s, int trajectory_every);
 int  output_frame(Output *o, const System *s);
 /* Close the open trajectory segment and rename it complete (before a checkpoint). */
 int  output_segment_commit(Output *o);

@@ -48,8 +48,11 @@
 -- pandoc exits 1 writing nothing. MKPAPER_ALLOW_MISSING=1 (drafts): warnings, the gap marked in the
 -- output, exit 0. A placeholder that names the quick tier (@quick, results/P/E/quick/..., a figure
 -- NAME-quick.png) while results/P/E/quick holds neither summary.tsv nor INCOMPLETE (never committed;
--- `make figures` computes it) is no error: it reads "*(quick tier: run `make figures`)*", and one
+-- `make figures` computes it) is no error: it reads as an unobtrusive mark (an em dash, span
+-- .quick-pending), its section gets one notice after its heading (div .quick-notice: "This section
+-- quotes quick-tier numbers, which a fresh clone does not have: run `make figures`"), and one
 -- stderr line counts them. An unpinned placeholder that finds no result stays an error.
+-- In HTML every table sits in a div .table-wrap, which scrolls sideways (tools/lib/paper.css).
 -- Verdicts come from tools/check --verdicts and --tsv (tools/lib/verdict.awk and bands.awk: one source
 -- of truth with make check and results/verdicts.tsv);
 -- the summary table's inputs column from build/freshness.tsv (tools/verify-results).
@@ -62,7 +65,12 @@ local ROOT = os.getenv('DPD_ROOT') or (TOOLS .. '/..')
 local ALLOW = os.getenv('MKPAPER_ALLOW_MISSING') == '1'
 local FRESHNESS = os.getenv('MKPAPER_FRESHNESS') or (ROOT .. '/build/freshness.tsv')
 local TIERS = { 'paper', 'reduced', 'quick' }
-local QUICK_MARK = '*(quick tier: run `make figures`)*'
+-- a number of a quick tier not computed here: an unobtrusive mark in the sentence (a span, so that
+-- its section gets one notice, QUICK_NOTICE, after its heading: quick_notices below)
+local QUICK_CLASS = 'quick-pending'
+local QUICK_MARK = '[—]{.' .. QUICK_CLASS .. ' title="quick tier: run make figures"}'
+local QUICK_NOTICE = 'This section quotes quick-tier numbers, which a fresh clone does not have: run `make figures`'
+    .. ' (until then each shows as —).'
 
 -- ---------------------------------------------------------------- strings and numbers
 
@@ -955,6 +963,42 @@ local function fill_raw_block(block)
     return read_markdown(md)
 end
 
+-- one notice per section (the blocks from a heading to the next heading) that holds a quick-tier
+-- mark, right after its heading (before the first heading: at the top)
+local function holds_quick_mark(block)
+    local found = false
+    pandoc.walk_block(pandoc.Div({ block }), { Span = function(sp)
+        if sp.classes:includes(QUICK_CLASS) then found = true end
+    end })
+    return found
+end
+local function quick_notices(doc)
+    if npend == 0 then return nil end
+    local out, start, marked = pandoc.List(), 1, false
+    local function close_section()
+        if marked then
+            out:insert(start, pandoc.Div(read_markdown(QUICK_NOTICE), pandoc.Attr('', { 'quick-notice' })))
+        end
+        marked = false
+    end
+    for _, b in ipairs(doc.blocks) do
+        if b.t == 'Header' then close_section(); out:insert(b); start = #out + 1
+        else
+            out:insert(b)
+            marked = marked or holds_quick_mark(b)
+        end
+    end
+    close_section()
+    doc.blocks = out
+    return doc
+end
+
+-- HTML: every table in a box of its own that scrolls sideways (paper.css .table-wrap), so that a
+-- table wider than a phone's screen does not widen the page (tests/browser.py)
+local function wrap_table(t)
+    if FORMAT:match('html') then return pandoc.Div({ t }, pandoc.Attr('', { 'table-wrap' })) end
+end
+
 -- at the end: a placeholder the walk did not reach (a heading, metadata) is an error, not left as is
 local function report_leftovers(doc)
     local text = pandoc.write(doc, 'markdown', MARKDOWN_OUT) .. '\n' .. pandoc.utils.stringify(doc.meta)
@@ -968,7 +1012,7 @@ local function finish(doc)
     if npend > 0 then
         local n = 0; for _ in pairs(pending_ids) do n = n + 1 end
         io.stderr:write(string.format('%s: %d placeholder(s) await the quick tier of %d experiment(s), which is not committed: '
-            .. 'marked "(quick tier: run `make figures`)"; `make figures` computes it\n', NAME, npend, n))
+            .. 'marked — with a notice in their sections; `make figures` computes it\n', NAME, npend, n))
     end
     if nerr > 0 then
         io.stderr:write(string.format('%s: %d placeholder(s) could not be filled; no output written\n', NAME, nerr))
@@ -979,5 +1023,7 @@ end
 
 return {
     { RawBlock = fill_raw_block, Para = fill_inlines, Plain = fill_inlines },
+    { Pandoc = quick_notices },
+    { Table = wrap_table },
     { Pandoc = finish },
 }
