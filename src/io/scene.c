@@ -494,6 +494,18 @@ int scene_load(Scene *sc, const char *file, char *const *overrides, int noverrid
         fclose(m);
         rewind(fp);
     }
+    /* a NUL byte would end a string where libconfig reads it (a name "w\0x" becomes "w") */
+    const char *nul = raw ? memchr(raw, '\0', rawlen) : NULL;
+    if (nul) {
+        int line = 1;
+        for (const char *p = raw; p < nul; p++) line += *p == '\n';
+        snprintf(sc->error, sizeof sc->error, "%s:%d: a NUL byte (at byte %zu): a scene is text, and a string "
+                 "would end there; remove it", file, line, (size_t)(nul - raw));
+        free(raw);
+        fclose(fp);
+        sc->failed = 1;
+        return -1;
+    }
     char lit[64];
     const int bad_line = raw ? int_overflow_line(raw, lit, sizeof lit) : 0;
     free(raw);
