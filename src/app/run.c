@@ -182,7 +182,19 @@ static int run_open(Run *r)
     const int nbins = r->m.prof_on ? r->m.prof_bins : 0;
     r->pv = (PairVirial){.bin_axis = r->m.prof_axis, .nbins = nbins};
     od_init(&r->od);
-    if (neighbor_init(&r->nl, s, r->rc.skin) || forces_init(&r->fw, s, nbins) || measure_init(&r->m, s)
+    if (neighbor_init(&r->nl, s, r->rc.skin) == NEIGHBOR_TOO_MANY_CELLS) {
+        const Box *b = &s->box;
+        const double cut = s->rc_max + r->rc.skin;
+        double cells = 1.0;
+        for (int d = 0; d < b->dim; d++) cells *= floor(b->L[d] / cut);
+        fprintf(stderr, "dpd: %s: key 'box': the box %g x %g", opt->scene, b->L[0], b->L[1]);
+        if (b->dim == 3) fprintf(stderr, " x %g", b->L[2]);
+        fprintf(stderr, " needs %.3g neighbour cells of side >= the largest rc + skin = %g, more than the %zu "
+                "a cell list indexes; use a smaller box (or fewer, larger cells would be needed)\n",
+                cells, cut, NEIGHBOR_MAX_CELLS);
+        return 2;
+    }
+    if (forces_init(&r->fw, s, nbins) || measure_init(&r->m, s)
         || neighbor_build(&r->nl, s) || od_stats_init(&r->ods_stats, s->n)
         || (nbins > 0 && !(r->pv.Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double))))) {
         fprintf(stderr, "dpd: out of memory\n");
