@@ -266,10 +266,16 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory)
     if (!getenv("DPD_HDF5_DEBUG")) H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     o->file = H5Fcreate(o->tmp_path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (o->file < 0) return -1;
-    if (h5md_header(o->file)) return -1;
     o->traj_on = trajectory;
     o->segmented = trajectory;
-    if (trajectory && traj_create(o->file, s, o->traj)) return -1;
+    if (h5md_header(o->file) || (trajectory && traj_create(o->file, s, o->traj))) {
+        /* nothing of it stays open (the caller never closes an Output it could not open):
+         * the datasets first, or the file would stay open behind its id (H5F_CLOSE_WEAK) */
+        traj_close(o->traj);
+        H5Fclose(o->file);
+        o->file = -1;
+        return -1;
+    }
     return 0;
 }
 
