@@ -174,6 +174,12 @@ static int run_open(Run *r)
         fprintf(stderr, "dpd: cannot create or write the output directory '%s': %s\n", opt->outdir, strerror(errno));
         return 4;
     }
+    /* an earlier result goes first (no byte of it may stay beside a run that fails; this also
+     * frees its space for the marker); then the marker */
+    if (output_remove_results(opt->outdir)) {
+        fprintf(stderr, "dpd: cannot remove the earlier result in '%s': %s\n", opt->outdir, strerror(errno));
+        return 4;
+    }
     if (write_file_atomic(opt->outdir, "INCOMPLETE", "run started\n", 12)) {
         fprintf(stderr, "dpd: cannot write in '%s': %s\n", opt->outdir, strerror(errno));
         return 4;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 #include <fcntl.h>
 #include <dirent.h>
+#include <errno.h>
 #include "output.h"
 
 static hid_t ensure_group(hid_t file, const char *path)
@@ -524,6 +525,29 @@ int output_close(Output *o, int complete)
     int fd = open(o->tmp_path, O_RDONLY);
     if (fd >= 0) { fsync(fd); close(fd); }
     return rename(o->tmp_path, o->path);
+}
+
+/* Every file a complete run leaves (run_output.c, the modules' tables): a new run removes them
+ * before its first step, so that a run that then fails leaves no part of an older result beside
+ * its INCOMPLETE (tests/io_errors.sh runs scenes with every table and checks that none is left). */
+static const char *const RESULT_FILES[] = {
+    "summary.tsv", "provenance.tsv", "run.h5",
+    "profile.tsv", "profile_blocks.tsv", "com.tsv", "rdf.tsv", "msd.tsv",                /* measure.c */
+    "around.tsv", "density_map.tsv", "force_map.tsv",                                     /* measure_field.c */
+    "tcaf.tsv", "tcaf_eta.tsv", "tcaf_extrapolation.tsv",                                 /* tcaf.c */
+    "colloid_around.tsv", "colloid_rdf.tsv", "colloid_msd.tsv",                           /* bonds.c */
+    "solver.tsv"};                                                                        /* overdamped.c */
+
+int output_remove_results(const char *dir)
+{
+    int bad = 0;
+    for (size_t k = 0; k < sizeof RESULT_FILES / sizeof RESULT_FILES[0]; k++) {
+        char path[1100];
+        snprintf(path, sizeof path, "%s/%s", dir, RESULT_FILES[k]);
+        if (unlink(path) && errno != ENOENT) bad = 1;
+    }
+    if (!bad) fsync_path(dir, 1);
+    return bad ? -1 : 0;
 }
 
 int write_file_atomic(const char *dir, const char *name, const char *text, size_t len)

@@ -61,6 +61,11 @@ int  output_series(Output *o, const char *name, const double *v, size_t n, long 
                    double dt);
 int  output_close(Output *o, int complete);
 
+/* Remove the files of an earlier complete run from dir (summary.tsv, provenance.tsv, run.h5,
+ * the tables): 0, or -1 (errno) if one could not be removed. Checkpoints and trajectory
+ * segments stay (a resumed run needs them). */
+int  output_remove_results(const char *dir);
+
 /* Write text to dir/name atomically (temp file, fsync, rename). */
 int  write_file_atomic(const char *dir, const char *name, const char *text, size_t len);
 
