@@ -16,7 +16,11 @@
 #     files beside INCOMPLETE: a run removes them when it starts (for scenes
 #     writing every table: each file of the finished run must be gone, or be
 #     one a failed run keeps: INCOMPLETE, its checkpoint, run.h5.part); a
-#     resumed run keeps its checkpoint and completes.
+#     resumed run keeps its checkpoint and completes;
+#   - two writers on one --out: the second is refused (status 4) with a message
+#     naming the holder (pid, host, start time), also with
+#     HDF5_USE_FILE_LOCKING=FALSE (the lock is dpd's own, not HDF5's), and the
+#     first completes untouched; a lock left by a SIGKILLed run is free again.
 # Without unprivileged namespaces the tmpfs checks are reported as SKIP and
 # counted as skipped, not passed: "N passed, M failed, 1 skipped" (tests/skips.sh).
 # DPD selects the binary. Prints "N passed, M failed[, K skipped]".
@@ -63,6 +67,26 @@ for entry in tests/checkpoint-overdamped.cfg tests/checkpoint-colloids2d.cfg tes
     "$DPD" run "${a[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
     rerun_leaves_no_result "rerun of $(basename "${a[0]}") refused at its checkpoint (finished run had: $before)" "$d" $st 2
 done
+
+# two writers on one output directory
+for locking in default FALSE; do
+    d=$tmp/two-$locking
+    env_lock=(); [ $locking = FALSE ] && env_lock=(HDF5_USE_FILE_LOCKING=FALSE)
+    env "${env_lock[@]}" "$DPD" run "$scene" --out "$d" --quiet --set steps=6000 2>"$tmp/err1" & pid=$!
+    wait_for "$d/INCOMPLETE" $pid
+    env "${env_lock[@]}" "$DPD" run "$scene" --out "$d" --quiet --set steps=10 2>"$tmp/err2"; st2=$?
+    wait $pid; st1=$?
+    if [ $st2 -eq 4 ] && grep -q "dpd: '$d' is in use by another run: pid $pid on $(hostname) since 20[0-9-]*T[0-9:]*Z" "$tmp/err2" \
+       && [ $st1 -eq 0 ] && [ "$(awk -F'\t' '$1 == "steps" { print $2 }' "$d/summary.tsv")" = 6000 ] && [ ! -e "$d/INCOMPLETE" ]; then
+        ok "second writer on one --out (HDF5 file locking $locking): refused naming the holder; the first completes"
+    else bad "second writer on one --out (HDF5 file locking $locking)" "first: status $st1 $(head -2 "$tmp/err1"); second: status $st2 $(head -2 "$tmp/err2"); $(ls -A "$d" | tr '\n' ' ')"; fi
+done
+d=$tmp/killed
+"$DPD" run "$scene" --out "$d" --quiet --set steps=200000 2>/dev/null & pid=$!
+wait_for "$d/INCOMPLETE" $pid; kill -KILL $pid; wait $pid 2>/dev/null
+"$DPD" run "$scene" --out "$d" --quiet 2>"$tmp/err"; st=$?
+if [ $st -eq 0 ] && [ -s "$d/summary.tsv" ]; then ok "the lock of a SIGKILLed run is free again"
+else bad "the lock of a SIGKILLed run is free again" "status $st: $(cat "$tmp/err")"; fi
 
 if ! unshare -rm true 2>/dev/null; then
     echo "SKIP tmpfs checks: no unprivileged user/mount namespaces here (read-only file system, disk full at every stage, checkpoint and trajectory on a full disk)"

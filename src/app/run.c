@@ -19,6 +19,7 @@
 #endif
 #include "run_context.h"
 #include "integrator.h"
+#include "dirlock.h"
 
 static int mkdir_p(const char *dir)
 {
@@ -174,6 +175,17 @@ static int run_open(Run *r)
         fprintf(stderr, "dpd: cannot create or write the output directory '%s': %s\n", opt->outdir, strerror(errno));
         return 4;
     }
+    /* one writer per directory (two would mix their files, and with HDF5_USE_FILE_LOCKING=FALSE
+     * both could end with status 0) */
+    char holder[600];
+    r->lock = dirlock_take(opt->outdir, holder, sizeof holder);
+    if (r->lock == -1) {
+        fprintf(stderr, "dpd: '%s' is in use by another run: %s (lock %s/%s); wait for it to end, or stop it\n",
+                opt->outdir, holder, opt->outdir, DIRLOCK_FILE);
+        return 4;
+    }
+    if (r->lock == -2)
+        fprintf(stderr, "dpd: warning: running without the output directory's lock (%s)\n", holder);
     /* an earlier result goes first (no byte of it may stay beside a run that fails; this also
      * frees its space for the marker); then the marker */
     if (output_remove_results(opt->outdir)) {
@@ -421,6 +433,7 @@ static int run_finish(Run *r, int status)
         unlink(f);   /* the run is complete: nothing to resume */
         output_segments_remove(&r->out);
     }
+    dirlock_release(dir, r->lock);
     free(r->pv.Wbin);
     od_free(&r->od);
     od_stats_free(&r->ods_stats);
@@ -449,6 +462,7 @@ int run_scene(const RunOptions *opt)
     Run *r = calloc(1, sizeof *r);
     if (!r) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     r->opt = opt;
+    r->lock = -1;
     r->show = !opt->quiet && isatty(2);
     int status = run_load(r);
     if (status == 0 && opt->dry_run) { print_plan(r); status = run_finish(r, 0); free(r); return status; }

@@ -48,6 +48,7 @@ typedef struct {
     int virial_step;          /* the last inertial step computed the virial (a measurement step) */
     int loaded, set_up, opened;   /* what run_free releases: scene, system and buffers, output */
     int wrote_summary;        /* summary.tsv written: removed again if the run then fails */
+    int lock;                 /* the output directory's lock (dirlock.h; -1: none) */
 } Run;
 
 /* run_output.c: summary.tsv, provenance.tsv, solver.tsv, the trajectory and
