@@ -256,7 +256,8 @@ static int run_resume(Run *r)
     if (r->opt->resume) {
         const int k = checkpoint_read(r->opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, &r->cx, err, sizeof err);
         if (k < 0) { fprintf(stderr, "dpd: %s\n", err); return 2; }
-        if (k == 0 && output_segments_resume(&r->out, r->cx.trajectory_segments, r->cx.trajectory_frames, err, sizeof err)) {
+        if (k == 0 && output_segments_resume(&r->out, r->cx.trajectory_segments, r->cx.trajectory_frames,
+                                             r->cx.trajectory_sums, err, sizeof err)) {
             fprintf(stderr, "dpd: %s\n", err);
             return 2;
         }
@@ -273,7 +274,7 @@ static int run_resume(Run *r)
             return 0;
         }
     }
-    if (output_segments_resume(&r->out, 0, 0, err, sizeof err)) { fprintf(stderr, "dpd: %s\n", err); return 2; }
+    if (output_segments_resume(&r->out, 0, 0, NULL, err, sizeof err)) { fprintf(stderr, "dpd: %s\n", err); return 2; }
     return 0;
 }
 
@@ -313,11 +314,15 @@ static int save_checkpoint(Run *r)
     }
     cx->trajectory_segments = out->nseg;
     cx->trajectory_frames = out->frames;
+    free(cx->trajectory_sums);   /* a resumed run's, read from its checkpoint: Output has them now */
+    cx->trajectory_sums = out->seg_sum;
     cx->cpu_used = cpu_now() - st->cpu0;
     cx->wall_used = wall_now() - st->wall0;
     cx->prod_wall_used = (long long)r->s.step > r->rc.equilibration ? wall_now() - st->prod_wall0 : 0.0;
     cx->steps_done = st->steps_done;
-    if (checkpoint_write(opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, cx, err, sizeof err)) {
+    const int bad = checkpoint_write(opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, cx, err, sizeof err);
+    cx->trajectory_sums = NULL;   /* the Output's */
+    if (bad) {
         fprintf(stderr, "dpd: %s\n", err);
         return -1;
     }
@@ -434,6 +439,7 @@ static int run_finish(Run *r, int status)
         output_segments_remove(&r->out);
     }
     dirlock_release(dir, r->lock);
+    free(r->cx.trajectory_sums);
     free(r->pv.Wbin);
     od_free(&r->od);
     od_stats_free(&r->ods_stats);

@@ -164,7 +164,11 @@ int run_write_results(Run *r)
     r->wrote_summary = status == 0;
     if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
     if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
-    if (status == 0 && output_segments_merge(&r->out, &r->s)) status = 4;   /* the trajectory */
+    char err[1400];
+    if (status == 0 && output_segments_merge(&r->out, &r->s, err, sizeof err)) {   /* the trajectory */
+        fprintf(stderr, "dpd: %s\n", err);
+        status = 4;
+    }
     /* the step of the first sample: production step 0, which the inertial loop first
      * reaches after a step, so never when there is no equilibration */
     const long long first = r->rc.equilibration + (r->rc.equilibration == 0 && !r->rc.overdamped ? r->m.every : 0);

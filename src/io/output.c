@@ -8,6 +8,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include "output.h"
+#include "checkpoint.h"
 
 static hid_t ensure_group(hid_t file, const char *path)
 {
@@ -376,6 +377,51 @@ static void fsync_path(const char *path, int dir)
     if (fd >= 0) { fsync(fd); close(fd); }
 }
 
+/* The checksum of a file's bytes (FNV-1a, checkpoint_hash); 0 or -1 if it cannot be read. */
+static int file_checksum(const char *path, uint64_t *sum)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return -1;
+    unsigned char buf[1 << 16];
+    uint64_t h = 0;
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0) h = checkpoint_hash(buf, got, h);
+    const int bad = ferror(f);
+    fclose(f);
+    *sum = h;
+    return bad ? -1 : 0;
+}
+
+/* Segment k against its recorded checksum; 0, or -1 with err set. */
+static int segment_verify(const Output *o, int k, char *err, size_t errlen)
+{
+    char path[1100];
+    segment_path(o, k, 0, path, sizeof path);
+    uint64_t sum;
+    if (file_checksum(path, &sum)) {
+        snprintf(err, errlen, "trajectory segment %s is missing or unreadable", path);
+        return -1;
+    }
+    if (sum != o->seg_sum[k]) {
+        snprintf(err, errlen, "trajectory segment %s does not match its checksum (written %016llx, now "
+                 "%016llx): the file changed after it was closed", path, (unsigned long long)o->seg_sum[k],
+                 (unsigned long long)sum);
+        return -1;
+    }
+    return 0;
+}
+
+static int seg_sum_room(Output *o, int n)
+{
+    if (n <= o->seg_cap) return 0;
+    const int cap = n + n / 2 + 16;
+    uint64_t *p = realloc(o->seg_sum, (size_t)cap * sizeof *p);
+    if (!p) return -1;
+    o->seg_sum = p;
+    o->seg_cap = cap;
+    return 0;
+}
+
 int output_segment_commit(Output *o)
 {
     if (!o->segmented || o->seg_file < 0) return 0;
@@ -387,6 +433,8 @@ int output_segment_commit(Output *o)
     segment_path(o, o->nseg, 0, path, sizeof path);
     if (c < 0) { unlink(part); return -1; }
     fsync_path(part, 0);
+    /* the checksum of the bytes as closed: a resume and the final assembly compare it */
+    if (seg_sum_room(o, o->nseg + 1) || file_checksum(part, &o->seg_sum[o->nseg])) return -1;
     if (rename(part, path)) return -1;
     fsync_path(o->dir, 1);
     o->nseg++;
@@ -427,7 +475,7 @@ static long long segment_frames(const char *path)
     return n;
 }
 
-int output_segments_resume(Output *o, int nseg, long long frames, char *err, size_t errlen)
+int output_segments_resume(Output *o, int nseg, long long frames, const uint64_t *sums, char *err, size_t errlen)
 {
     if (!o->segmented) return 0;
     /* segments written after the checkpoint (and any partial one) are stale */
@@ -445,10 +493,16 @@ int output_segments_resume(Output *o, int nseg, long long frames, char *err, siz
         }
         closedir(dp);
     }
+    if (seg_sum_room(o, nseg)) { snprintf(err, errlen, "out of memory"); return -1; }
+    for (int k = 0; k < nseg; k++) o->seg_sum[k] = sums[k];
     long long total = 0;
     for (int k = 0; k < nseg; k++) {
         char path[1100];
         segment_path(o, k, 0, path, sizeof path);
+        if (access(path, F_OK) == 0 && segment_verify(o, k, err, errlen)) {
+            snprintf(err + strlen(err), errlen - strlen(err), "; delete %s/checkpoint.dpd to start afresh", o->dir);
+            return -1;
+        }
         const long long n = segment_frames(path);
         if (n < 0) {
             snprintf(err, errlen, "trajectory segment %s of the checkpoint is missing or unreadable; "
@@ -467,10 +521,12 @@ int output_segments_resume(Output *o, int nseg, long long frames, char *err, siz
     return 0;
 }
 
-int output_segments_merge(Output *o, const System *s)
+int output_segments_merge(Output *o, const System *s, char *err, size_t errlen)
 {
     if (!o->segmented) return 0;
-    if (output_segment_commit(o)) return -1;
+    if (output_segment_commit(o)) { snprintf(err, errlen, "closing the last trajectory segment failed (disk full?)"); return -1; }
+    for (int k = 0; k < o->nseg; k++)
+        if (segment_verify(o, k, err, errlen)) return -1;
     const int n = s->n, dim = s->box.dim;
     double *buf = malloc((3 * (size_t)n + 9) * sizeof(double));   /* a frame, or the 3 x 3 edges */
     int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
@@ -499,7 +555,11 @@ int output_segments_merge(Output *o, const System *s)
         H5Fclose(f);
     }
     free(buf); free(ib);
-    return rc || at != o->frames ? -1 : 0;
+    if (rc || at != o->frames) {
+        snprintf(err, errlen, "copying the trajectory segments into run.h5 failed (disk full?)");
+        return -1;
+    }
+    return 0;
 }
 
 void output_segments_remove(Output *o)
@@ -513,6 +573,9 @@ void output_segments_remove(Output *o)
 
 int output_close(Output *o, int complete)
 {
+    free(o->seg_sum);
+    o->seg_sum = NULL;
+    o->seg_cap = 0;
     if (o->traj_on) traj_close(o->traj);
     if (o->seg_file >= 0) { traj_close(o->seg); H5Fclose(o->seg_file); o->seg_file = -1; }
     if (o->segmented) {   /* a failed run: its open segment is no part of any checkpoint */
