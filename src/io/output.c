@@ -613,6 +613,16 @@ int output_remove_results(const char *dir)
     return bad ? -1 : 0;
 }
 
+int output_write_tables(const char *dir, const Tables *ts, const char **failed)
+{
+    for (int k = 0; k < ts->n; k++)
+        if (write_file_atomic(dir, ts->t[k]->name, ts->t[k]->text ? ts->t[k]->text : "", ts->t[k]->len)) {
+            *failed = ts->t[k]->name;
+            return -1;
+        }
+    return 0;
+}
+
 int write_file_atomic(const char *dir, const char *name, const char *text, size_t len)
 {
     char tmp[1024], path[1024];

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <hdf5.h>
 #include "system.h"
+#include "table.h"
 
 /* trajectory datasets: position, velocity, image (frames x n x dim), box edges
  * (frames x dim x dim), step, time (frames) */
@@ -71,6 +72,10 @@ int  output_close(Output *o, int complete);
  * the tables): 0, or -1 (errno) if one could not be removed. Checkpoints and trajectory
  * segments stay (a resumed run needs them). */
 int  output_remove_results(const char *dir);
+
+/* Every table of ts into dir, each atomically (write_file_atomic). 0, or -1 with the
+ * name of the table that failed in *failed. */
+int  output_write_tables(const char *dir, const Tables *ts, const char **failed);
 
 /* Write text to dir/name atomically (temp file, fsync, rename). */
 int  write_file_atomic(const char *dir, const char *name, const char *text, size_t len);
