@@ -214,7 +214,9 @@ static int run_open(Run *r)
     }
     if (forces_init(&r->fw, s, nbins) || measure_init(&r->m, s)
         || neighbor_build(&r->nl, s) || od_stats_init(&r->ods_stats, s->n)
-        || (nbins > 0 && !(r->pv.Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double))))) {
+        || (nbins > 0 && !(r->pv.Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double))))
+        || (r->rc.max_thermal_ratio > 0.0 && !r->rc.overdamped
+            && !(r->thermal_cells = malloc((r->thermal_ncells = run_thermal_cells(s, s->rc_max + r->rc.skin)) * 5 * sizeof(double))))) {
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
     }
@@ -440,6 +442,7 @@ static int run_finish(Run *r, int status)
     }
     dirlock_release(dir, r->lock);
     free(r->cx.trajectory_sums);
+    free(r->thermal_cells);
     free(r->pv.Wbin);
     od_free(&r->od);
     od_stats_free(&r->ods_stats);
