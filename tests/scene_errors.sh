@@ -84,5 +84,17 @@ rm -rf "$tmp/out"
 if (cd "$tmp/special" && "$DPD" run inc.cfg --out "$tmp/out" --quiet >/dev/null 2>"$tmp/err") && [ -s "$tmp/out/summary.tsv" ]; then
     ok "@include of a regular file (control)"
 else bad "@include of a regular file (control)" "$(cat "$tmp/err")"; fi
+# steps = 0 (and steps below measure.every): no sample is taken; decided: the run is no error
+# (an equilibration alone, e.g. for its final state or its cost), and its summary has the run's
+# cost rows only and no measured quantity, never rows of nan; a note on stderr says so
+for st in 0 5; do
+    rm -rf "$tmp/out"
+    "$DPD" run tests/good-scene.cfg --set steps=$st --out "$tmp/out" --quiet >/dev/null 2>"$tmp/err"; rc=$?
+    if [ $rc -eq 0 ] && [ -s "$tmp/out/summary.tsv" ] && ! grep -qi 'nan' "$tmp/out/summary.tsv" \
+       && ! grep -q '^temperature' "$tmp/out/summary.tsv" && grep -q '^particles' "$tmp/out/summary.tsv" \
+       && grep -q "no sample was taken (steps = $st, measure.every = 10)" "$tmp/err"; then
+        ok "steps = $st: no sample, a summary of the run's cost only (no nan), and a note"
+    else bad "steps = $st" "status $rc; summary: $(tr '\n' '|' < "$tmp/out/summary.tsv" 2>/dev/null | head -c 300)"; fi
+done
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -147,11 +147,17 @@ static int summary_text(Run *r, char **sum, size_t *len, Tables *ts)
     FILE *f = open_memstream(sum, len);
     if (!f) return 4;
     fprintf(f, "quantity\tvalue\tstderr\n");
-    if (measure_write(&r->m, &r->s, f, r->opt->outdir)) status = 4;
-    if (r->rc.colloids) colloid_write(r->rc.colloids, &r->s, f, r->m.nblocks);
-    if (r->rc.bonds && bonds_write(r->rc.bonds, &r->s, f, ts)) status = 4;
+    /* a run whose production took no sample (steps = 0, an equilibration alone, or steps below
+     * measure.every) measured nothing: its summary has the run's cost alone, not rows of nan */
+    const int measured = r->m.temperature.n > 0;
+    if (!measured)
+        fprintf(stderr, "dpd: note: no sample was taken (steps = %lld, measure.every = %d): the summary "
+                "has the run's cost and no measured quantity\n", r->rc.steps, r->m.every);
+    if (measured && measure_write(&r->m, &r->s, f, r->opt->outdir)) status = 4;
+    if (measured && r->rc.colloids) colloid_write(r->rc.colloids, &r->s, f, r->m.nblocks);
+    if (measured && r->rc.bonds && bonds_write(r->rc.bonds, &r->s, f, ts)) status = 4;
     summary_cost(f, r);
-    if (r->rc.overdamped && od_stats_write(&r->ods_stats, f, ts, r->m.nblocks)) status = 4;
+    if (measured && r->rc.overdamped && od_stats_write(&r->ods_stats, f, ts, r->m.nblocks)) status = 4;
     return fclose(f) || status ? 4 : 0;
 }
 

@@ -197,11 +197,6 @@ int setup_measure(Scene *sc, const System *s, Measure *m, long long steps)
         if (scene_int(sc, g, "blocks", &v, 20, 2, MAX_BLOCKS, 0) < 0) return -1;
         m->nblocks = (int)v;
     }
-    /* a run measures every `every` production steps: fewer steps give no sample, and a summary of
-     * nothing but nan (steps = 0 included: an equilibration alone has no result to report) */
-    if (steps < m->every)
-        return scene_fail(sc, config_lookup(&sc->cfg, "steps"), "value %lld gives no sample: the run measures "
-                          "every measure.every = %d production steps; allowed %d or more", steps, m->every, m->every);
     m->nsamples_expected = steps / m->every + 1;
     if (read_field(sc, g, s, &m->field_par)) return -1;
     m->prod_steps = steps;
