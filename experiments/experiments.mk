@@ -14,12 +14,17 @@ JOBS ?= $(if $(filter slurm,$(ENGINE)),200,$(shell nproc))
 export DPD_ENGINE := $(ENGINE)
 # a -j of our own unless the caller gave one (then we share its jobserver)
 POOL_J = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
+# the sub-make and each tools/run-experiment end with the make that started them (SIGTERM when it
+# ends, even by SIGKILL: prctl PR_SET_PDEATHSIG through util-linux's setpriv); run-experiment's
+# own children end with it in turn (tools/lib/pdeath.sh), so a killed `make figures` leaves no
+# experiment, pool, run-simulation or simulator running beside the next one
+PDEATH := $(shell setpriv --pdeathsig TERM true >/dev/null 2>&1 && echo setpriv --pdeathsig TERM)
 
 # results are files we keep, never intermediate ones that make may delete after plotting
 .SECONDARY: $(RESULTS)
 .SECONDEXPANSION:
 results/%/$(TIER)/summary.tsv: $$(wildcard experiments/%/*) tools/run-experiment tools/run-simulation tools/lib/exp.sh $(BIN)
-	+@tools/run-experiment $* $(TIER)
+	+@$(PDEATH) tools/run-experiment $* $(TIER)
 
 # the dependencies between experiments, declared once in each run.sh (`needs`, tools/lib/exp.sh)
 build/needs.mk: $(wildcard experiments/*/*/run.sh) tools/lib/needs.awk
@@ -51,10 +56,10 @@ PROGRESS_START = $(PROGRESS) tools/progress start $(TIER) $$($(MAKE) -n --no-pri
     $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv) 2>/dev/null | awk '$$1 == "tools/run-experiment" { print $$2 }')
 results: $(BIN)
 	+@$(PROGRESS_START)
-	+@$(PROGRESS) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv)
+	+@$(PROGRESS) $(PDEATH) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),results/$(e)/$(TIER)/summary.tsv)
 figures: $(BIN)
 	+@$(PROGRESS_START)
-	+@$(PROGRESS) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),figures/$(e)/.stamp-$(TIER))
+	+@$(PROGRESS) $(PDEATH) $(MAKE) --no-print-directory $(POOL_J) $(foreach e,$(EXPERIMENTS),figures/$(e)/.stamp-$(TIER))
 	@echo "figures ($(TIER)) in figures/; check with: make check TIER=$(TIER)"
 
 check:
@@ -72,9 +77,9 @@ verdicts:
 	@echo "verdicts: wrote results/verdicts.tsv and results/checks.tsv"
 
 reproduce:
-	$(MAKE) figures TIER=paper
-	$(MAKE) check TIER=paper || true
-	$(MAKE) paper
+	$(PDEATH) $(MAKE) figures TIER=paper
+	$(PDEATH) $(MAKE) check TIER=paper || true
+	$(PDEATH) $(MAKE) paper
 
 # verify-results: every result must still be what its current inputs give (it fails on a stale one)
 paper: $(BIN)

@@ -6,7 +6,9 @@
 # the reason. Cases: inertial fluid at far too large a dt (kinetic temperature),
 # spins with far too small an inertia (rotational temperature), a massless (m = 0)
 # colloid with far too stiff springs (displacement per step). Controls: the same
-# scenes at a small dt complete (so each check has power). Pairs at r -> 0: two
+# scenes at a small dt complete (so each check has power). The default limit: the fluid at
+# dt = 0.15 (12.8 kBT) stops on its thermal temperature, while a driven start-up flow whose
+# whole-system kinetic temperature is 13 kBT completes. Pairs at r -> 0: two
 # particles at the same position, and 1e-12 apart, give finite results (inertial
 # and m = 0). A run far past its limit stops at once (no hang on huge coordinates). A nan
 # position or velocity put into a checkpoint stops the resumed run at its first step. DPD selects the binary. Prints "N passed, M failed".
@@ -97,7 +99,18 @@ else bad "fluid: checkpoint" "$(ls -a "$tmp/fluid")"; fi
 t0=$(date +%s)
 blowup far "$tmp/fluid.cfg" "(kinetic temperature|largest displacement per step)" --set dt=1.0 --set 'pairs.[0].gamma=45.0' --set output.trajectory_every=0
 if [ $(( $(date +%s) - t0 )) -lt 30 ]; then ok "far: stopped within 30 s"; else bad "far" "took $(( $(date +%s) - t0 )) s"; fi
-blowup jump "$tmp/fluid.cfg" "largest displacement per step" --set dt=0.25 --set output.trajectory_every=0
+# (the thermal check off, as a scene that sets the ratio: the displacement check alone)
+blowup jump "$tmp/fluid.cfg" "largest displacement per step" --set dt=0.25 --set output.trajectory_every=0 --set max_temperature_ratio=100.0
+# the default limit: the fluid at dt = 0.15 settles at 12.8 kBT (with the former default of
+# 100 kBT it ran to the end and wrote a summary); now its thermal temperature stops it
+blowup too-hot "$tmp/fluid.cfg" "thermal temperature" --set dt=0.15 --set output.trajectory_every=0
+# control: a driven flow whose whole-system kinetic temperature is far above that limit (the
+# start-up Couette flow of phan-thien-2016 fig04 at U = 10: 13 kBT) runs to the end, its
+# thermal temperature (velocities relative to the local flow) staying near kBT
+control start-up-flow experiments/phan-thien-2016/fig04-dynamic-response/m1.cfg --set steps=1000 --set equilibration=500
+T=$(awk -F'\t' '$1 == "temperature" { print $2 }' "$tmp/start-up-flow/summary.tsv" 2>/dev/null)
+if awk -v t="${T:-0}" 'BEGIN { exit !(t > 5) }'; then ok "start-up-flow: its kinetic temperature ($T kBT) is above the default thermal limit: the control has power"
+else bad "start-up-flow: kinetic temperature" "'$T', want > 5"; fi
 control spins-ok "$tmp/spins.cfg"
 blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
 control colloid-ok "$tmp/colloid.cfg"

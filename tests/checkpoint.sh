@@ -148,7 +148,8 @@ check "checkpoint of another scene: message" grep -q 'written for another scene'
 # (version 3 keeps the MSD per particle group), nor a version 3 one of an m = 0
 # scene (version 4 keeps the solver's CPU time per step) or of a sheared scene
 # (version 4 counts the offset's wraps in the image counters), nor one of a
-# future format (reseal: tests/shlib.sh)
+# future format (reseal: tests/shlib.sh); version 5 only adds the trajectory
+# segments' checksums (a version 4 one of a trajectory scene is refused below)
 sed '/msd = {/d; s/rdf = { rmax = 1.0; bins = 20; every = 10; };/&  };/' "$scene" > "$tmp/plain.cfg"
 still=(--set shear_rate=0.0)
 "$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/plain-ref" --threads 1 --quiet 2>"$tmp/err"
@@ -156,13 +157,13 @@ check "plain scene (no MSD, no shear): reference run" test $? -eq 0
 rm -rf "$tmp/old"
 "$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/old" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/old/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-for v in 4 3 2 1; do
+for v in 5 4 3 2 1; do
     rm -rf "$tmp/v$v"; cp -r "$tmp/old" "$tmp/v$v"
     reseal "$tmp/v$v/checkpoint.dpd" $v
     "$DPD" run "$tmp/plain.cfg" "${still[@]}" --out "$tmp/v$v" --threads 1 --quiet --resume 2>"$tmp/err"
 done
-check "reseal control: the rewritten version 4 checkpoint resumes (checksum right)" same_run "$tmp/plain-ref" "$tmp/v4"
-for v in 3 2 1; do
+check "reseal control: the rewritten version 5 checkpoint resumes (checksum right)" same_run "$tmp/plain-ref" "$tmp/v5"
+for v in 4 3 2 1; do
     check "version $v checkpoint of a scene without MSD, shear or m = 0: resumes, bit for bit" same_run "$tmp/plain-ref" "$tmp/v$v"
 done
 # refused_version NAME SCENE DIR VERSION: the checkpoint in DIR resealed as VERSION is refused
@@ -170,7 +171,7 @@ refused_version() {
     reseal "$3/checkpoint.dpd" $4
     "$DPD" run "$2" --out "$3" --quiet --resume 2>"$tmp/err"; st=$?
     check "version $4 checkpoint of $1: status 2, no result" test $st -eq 2 -a ! -e "$3/summary.tsv"
-    check "version $4 checkpoint of $1: message" grep -q "format version $4, which this dpd (format 4) cannot resume" "$tmp/err"
+    check "version $4 checkpoint of $1: message" grep -q "format version $4, which this dpd (format 5) cannot resume" "$tmp/err"
 }
 rm -rf "$tmp/v2m"; cp -r "$tmp/foreign" "$tmp/v2m"
 refused_version "an MSD scene" "$scene" "$tmp/v2m" 2
@@ -183,15 +184,15 @@ rm -rf "$tmp/v3s"
 "$DPD" run "$tmp/plain.cfg" --out "$tmp/v3s" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v3s/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
 refused_version "a sheared scene" "$tmp/plain.cfg" "$tmp/v3s" 3
-rm -rf "$tmp/v1r" "$tmp/v5"
+rm -rf "$tmp/v1r" "$tmp/v6"
 "$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v1r" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$tmp/v1r/checkpoint.dpd" $pid; kill -TERM $pid; wait $pid
-cp -r "$tmp/v1r" "$tmp/v5"
+cp -r "$tmp/v1r" "$tmp/v6"
 refused_version "a rotation scene" tests/checkpoint-rotation.cfg "$tmp/v1r" 1
-reseal "$tmp/v5/checkpoint.dpd" 5
-"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v5" --quiet --resume 2>"$tmp/err"; st=$?
-check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v5/summary.tsv"
-check "future checkpoint format: message" grep -q 'format version 5' "$tmp/err"
+reseal "$tmp/v6/checkpoint.dpd" 6
+"$DPD" run tests/checkpoint-rotation.cfg --out "$tmp/v6" --quiet --resume 2>"$tmp/err"; st=$?
+check "future checkpoint format: status 2, no result" test $st -eq 2 -a ! -e "$tmp/v6/summary.tsv"
+check "future checkpoint format: message" grep -q 'format version 6' "$tmp/err"
 
 # trajectory output (H5MD) across interruptions: frames go to segment files
 # closed at each checkpoint and are copied into run.h5 when the run completes
@@ -228,15 +229,45 @@ rm -f "$d/trajectory-0000.h5"
 "$DPD" run "$scene" "${traj[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
 check "trajectory: missing segment: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
 check "trajectory: missing segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 of the checkpoint is missing' "$tmp/err"
+# a segment of the checkpoint with one value changed in its last bit (the kind of silent corruption
+# HDF5 reads without complaint): the resume refuses it, and so does the final assembly when it
+# happens while the run goes on; never status 0 with it in run.h5
+flip_position() {   # FILE: the first position value's lowest bit flipped, in place
+    local v; v=$(h5dump -m %.17g -d '/particles/all/position/value[0,0,0;;1,1,1]' "$1" | sed -n 's/^ *([0-9, ]*): //p' | tr -d ' ,')
+    perl -e 'local $/; open my $f, "+<:raw", $ARGV[0] or die; my $b = <$f>; my $p = pack("d<", $ARGV[1]);
+             my $at = index($b, $p); die "value not found\n" if $at < 0;
+             substr($b, $at, 1) = chr(ord(substr($b, $at, 1)) ^ 1); seek $f, 0, 0; print $f $b; close $f' "$1" "$v"
+}
+d=$tmp/traj-flip
+"$DPD" run "$scene" "${traj[@]}" --out "$d" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
+pid=$!; wait_for "$d/trajectory-0001.h5" $pid; kill -TERM $pid; wait $pid
+flip_position "$d/trajectory-0000.h5"
+"$DPD" run "$scene" "${traj[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+check "trajectory: flipped bit in a segment: resume refused (status 2), no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: flipped bit in a segment: message" grep -q 'trajectory segment .*trajectory-0000.h5 does not match its checksum' "$tmp/err"
+d=$tmp/traj-flip-live
+"$DPD" run "$scene" "${traj[@]}" --set steps=3000 --out "$d" --threads 1 --quiet --checkpoint-every 20 2>"$tmp/err" &
+pid=$!; wait_for "$d/trajectory-0000.h5" $pid
+flip_position "$d/trajectory-0000.h5"
+wait $pid; st=$?
+check "trajectory: segment flipped while the run goes on: the assembly fails (status 4), no result" test $st -eq 4 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: segment flipped while the run goes on: message" grep -q 'trajectory segment .*trajectory-0000.h5 does not match its checksum' "$tmp/err"
 # a format 3 checkpoint of a trajectory scene (without shear, which alone refuses it): its segments
 # have no box edges per frame, refused
 d=$tmp/traj-v3
 "$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --threads 1 --quiet --checkpoint-every 20 2>/dev/null &
 pid=$!; wait_for "$d/trajectory-0000.h5" $pid; kill -TERM $pid; wait $pid
+cp -r "$d" "$d-v4"
 reseal "$d/checkpoint.dpd" 3
 "$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
 check "trajectory: format 3 checkpoint: status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
-check "trajectory: format 3 checkpoint: message" grep -q 'format version 3, which this dpd (format 4) cannot resume' "$tmp/err"
+check "trajectory: format 3 checkpoint: message" grep -q 'format version 3, which this dpd (format 5) cannot resume' "$tmp/err"
+# a format 4 one: no checksums of its segments, which cannot then be verified: refused
+d=$d-v4
+reseal "$d/checkpoint.dpd" 4
+"$DPD" run "$scene" "${traj[@]}" --set shear_rate=0.0 --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+check "trajectory: format 4 checkpoint (no segment checksums): status 2, no result" test $st -eq 2 -a ! -e "$d/summary.tsv" -a ! -e "$d/run.h5"
+check "trajectory: format 4 checkpoint: message" grep -q 'format version 4, which this dpd (format 5) cannot resume' "$tmp/err"
 
 # the harness with the real simulator: tools/run-experiment of an experiment with a rotation, a
 # 3D colloid and a TCAF run (tools/lib/exp.sh dpd_run; the local pool runs them at once, each

@@ -31,7 +31,7 @@ for p in /usr/bin/python3 python3; do
 done
 if [ -z "$py" ]; then
     echo "SKIP h5md.sh: MDAnalysis and h5py are not installed for python3 (Debian: python3-mdanalysis python3-h5py, which tools/deps installs)"
-    echo "0 passed, 0 failed"
+    echo "0 passed, 0 failed, 1 skipped"
     exit 0
 fi
 

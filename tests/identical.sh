@@ -31,7 +31,7 @@ bad() { fail=$((fail + 1)); echo "FAIL $1: $2"; }
 # scene | overrides (short runs; measurement steps included)
 scenes=(
   "bench/standard.cfg|--set box=[6.0,6.0,6.0] --set steps=200 --set equilibration=50 --set measure.every=10"
-  "bench/pan-fluid.cfg|--set steps=60 --set equilibration=20"
+  "bench/pan-fluid.cfg|--set steps=60 --set equilibration=20 --set measure.every=10"
   "bench/mai-duy-solvent.cfg|--set box=[8.0,8.0,8.0] --set steps=60 --set equilibration=20 --set measure.every=10"
   "tests/checkpoint-shear.cfg|"
   "tests/checkpoint-rotation.cfg|"

@@ -10,9 +10,20 @@
 #     file of a text result; at least three distinct failure messages (stages)
 #     must be seen, so the sweep has power;
 #   - a checkpoint that does not fit: status 4, "cannot write the checkpoint",
-#     no half-written checkpoint left.
-# Without unprivileged namespaces the tmpfs checks are reported as SKIP (not
-# counted). DPD selects the binary. Prints "N passed, M failed".
+#     no half-written checkpoint left;
+#   - a failed rerun into a directory that holds a finished result (unstable,
+#     SIGTERM, a refused checkpoint, disk full) leaves none of the old result
+#     files beside INCOMPLETE: a run removes them when it starts (for scenes
+#     writing every table: each file of the finished run must be gone, or be
+#     one a failed run keeps: INCOMPLETE, its checkpoint, run.h5.part); a
+#     resumed run keeps its checkpoint and completes;
+#   - two writers on one --out: the second is refused (status 4) with a message
+#     naming the holder (pid, host, start time), also with
+#     HDF5_USE_FILE_LOCKING=FALSE (the lock is dpd's own, not HDF5's), and the
+#     first completes untouched; a lock left by a SIGKILLed run is free again.
+# Without unprivileged namespaces the tmpfs checks are reported as SKIP and
+# counted as skipped, not passed: "N passed, M failed, 1 skipped" (tests/skips.sh).
+# DPD selects the binary. Prints "N passed, M failed[, K skipped]".
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh io-errors
@@ -24,9 +35,62 @@ touch "$tmp/file"
 if [ $st -eq 4 ] && grep -q "cannot create or write the output directory '$tmp/file/out'" "$tmp/err"; then ok "out below a file: status 4, named"
 else bad "out below a file" "status $st: $(cat "$tmp/err")"; fi
 
+# a failed rerun over a finished result
+result_files() { ls -A "$1" 2>/dev/null | grep -vxE 'INCOMPLETE|checkpoint\.dpd|run\.h5\.part|\.dpd-run\.lock' || true; }
+rerun_leaves_no_result() {   # NAME DIR STATUS WANT: the rerun into DIR exited STATUS, WANT expected
+    local left; left=$(result_files "$2" | tr '\n' ' ')
+    if [ "$3" -eq "$4" ] && [ -e "$2/INCOMPLETE" ] && [ -z "$left" ]; then ok "$1: status $4, INCOMPLETE, no old result file"
+    else bad "$1" "status $3 (want $4), INCOMPLETE $([ -e "$2/INCOMPLETE" ] && echo present || echo missing), left: $left"; fi
+}
+d=$tmp/rerun
+"$DPD" run "$scene" --out "$d" --quiet 2>"$tmp/err" || bad "rerun: first run" "$(cat "$tmp/err")"
+"$DPD" run "$scene" --out "$d" --quiet --set dt=0.5 --set steps=2000 2>"$tmp/err"; st=$?
+rerun_leaves_no_result "unstable rerun over a finished result" "$d" $st 3
+rm -rf "$d"
+"$DPD" run "$scene" --out "$d" --quiet 2>"$tmp/err" || bad "rerun: first run" "$(cat "$tmp/err")"
+"$DPD" run "$scene" --out "$d" --quiet --set steps=20000 --checkpoint-every 500 2>"$tmp/err" & pid=$!
+wait_for "$d/checkpoint.dpd" $pid; kill -TERM $pid 2>/dev/null; wait $pid; st=$?
+rerun_leaves_no_result "SIGTERM rerun over a finished result" "$d" $st 143
+"$DPD" run "$scene" --out "$d" --quiet --set steps=20000 --checkpoint-every 500 --resume 2>"$tmp/err"; st=$?
+if [ $st -eq 0 ] && [ -s "$d/summary.tsv" ] && [ ! -e "$d/INCOMPLETE" ] && [ ! -e "$d/checkpoint.dpd" ] \
+   && grep -q '^resumed_at_step' "$d/provenance.tsv"; then
+    ok "the interrupted rerun resumes from the checkpoint it kept and completes"
+else bad "the interrupted rerun resumes" "status $st: $(cat "$tmp/err") $(ls -A "$d" | tr '\n' ' ')"; fi
+# every table of the modules: the finished run's files all gone after a rerun refused at its checkpoint
+for entry in tests/checkpoint-overdamped.cfg tests/checkpoint-colloids2d.cfg tests/checkpoint-tcaf.cfg \
+             tests/checkpoint-shear.cfg "experiments/phan-thien-2016/fig08-compressibility/cylinder-m1.cfg --set steps=50 --set equilibration=10"; do
+    read -r -a a <<< "$entry"
+    rm -rf "$d"
+    "$DPD" run "${a[@]}" --out "$d" --quiet 2>"$tmp/err" || { bad "rerun of ${a[0]}: first run" "$(cat "$tmp/err")"; continue; }
+    before=$(ls -A "$d" | tr '\n' ' ')
+    echo "not a checkpoint" > "$d/checkpoint.dpd"
+    "$DPD" run "${a[@]}" --out "$d" --quiet --resume 2>"$tmp/err"; st=$?
+    rerun_leaves_no_result "rerun of $(basename "${a[0]}") refused at its checkpoint (finished run had: $before)" "$d" $st 2
+done
+
+# two writers on one output directory
+for locking in default FALSE; do
+    d=$tmp/two-$locking
+    env_lock=(); [ $locking = FALSE ] && env_lock=(HDF5_USE_FILE_LOCKING=FALSE)
+    env "${env_lock[@]}" "$DPD" run "$scene" --out "$d" --quiet --set steps=6000 2>"$tmp/err1" & pid=$!
+    wait_for "$d/INCOMPLETE" $pid
+    env "${env_lock[@]}" "$DPD" run "$scene" --out "$d" --quiet --set steps=10 2>"$tmp/err2"; st2=$?
+    wait $pid; st1=$?
+    if [ $st2 -eq 4 ] && grep -q "dpd: '$d' is in use by another run: pid $pid on $(hostname) since 20[0-9-]*T[0-9:]*Z" "$tmp/err2" \
+       && [ $st1 -eq 0 ] && [ "$(awk -F'\t' '$1 == "steps" { print $2 }' "$d/summary.tsv")" = 6000 ] && [ ! -e "$d/INCOMPLETE" ]; then
+        ok "second writer on one --out (HDF5 file locking $locking): refused naming the holder; the first completes"
+    else bad "second writer on one --out (HDF5 file locking $locking)" "first: status $st1 $(head -2 "$tmp/err1"); second: status $st2 $(head -2 "$tmp/err2"); $(ls -A "$d" | tr '\n' ' ')"; fi
+done
+d=$tmp/killed
+"$DPD" run "$scene" --out "$d" --quiet --set steps=200000 2>/dev/null & pid=$!
+wait_for "$d/INCOMPLETE" $pid; kill -KILL $pid; wait $pid 2>/dev/null
+"$DPD" run "$scene" --out "$d" --quiet 2>"$tmp/err"; st=$?
+if [ $st -eq 0 ] && [ -s "$d/summary.tsv" ]; then ok "the lock of a SIGKILLed run is free again"
+else bad "the lock of a SIGKILLed run is free again" "status $st: $(cat "$tmp/err")"; fi
+
 if ! unshare -rm true 2>/dev/null; then
-    echo "SKIP tmpfs checks: no unprivileged user/mount namespaces here"
-    echo "$pass passed, $fail failed"; [ $fail -eq 0 ]; exit
+    echo "SKIP tmpfs checks: no unprivileged user/mount namespaces here (read-only file system, disk full at every stage, checkpoint and trajectory on a full disk)"
+    echo "$pass passed, $fail failed, 1 skipped"; [ $fail -eq 0 ]; exit
 fi
 
 # everything below runs inside a namespace with its own tmpfs mounts; it
@@ -106,6 +170,15 @@ nst=$(printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | w
 if printf "%s" "$stages" | grep -q "trajectory segment"; then ok "trajectory disk-full sweep reached the segment commit ($nst stages)"
 else bad "trajectory disk-full sweep" "never failed at a segment commit: $stages"; fi
 printf "%s" "$stages" | sed "/^$/d" | sed "s/[0-9]* bytes//" | sort -u | sed "s/^/    stage: /"
+umount "$mnt"
+# a rerun over a finished result on a disk that is full by then
+mount -t tmpfs -o size=1m tmpfs "$mnt"
+"$DPD" run "$scene" --out "$mnt/out" --quiet 2>"$T/err" || bad "disk-full rerun: first run" "$(cat "$T/err")"
+head -c 2m /dev/zero > "$mnt/filler" 2>/dev/null
+"$DPD" run "$scene" --out "$mnt/out" --quiet --set steps=20 --set "output={trajectory_every=5;}" 2>"$T/err"; st=$?
+left=$(ls -A "$mnt/out" | grep -vxE "INCOMPLETE|checkpoint\.dpd|run\.h5\.part|\.dpd-run\.lock" | tr "\n" " ")
+if [ $st -eq 4 ] && [ -z "$left" ]; then ok "disk-full rerun over a finished result: status 4, no old result file"
+else bad "disk-full rerun over a finished result" "status $st, left: $left; $(head -2 "$T/err")"; fi
 umount "$mnt"
 ' > "$tmp/ns.log" 2>&1
 cat "$tmp/ns.log"

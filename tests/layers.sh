@@ -58,5 +58,13 @@ once() {  # NAME PATTERN HOME...: PATTERN (grep -E) appears in src/ only in the 
 once "the Lees-Edwards image velocity" 'shear_rate \* [a-z>.-]*L\[1\]' src/core/box.h src/core/box.c
 once "w_R" 'sqrt\(sqrt\(|pow\([a-z]+, 0\.5 \*' src/pair/pair.h
 once "the r -> 0 guard" 'define [A-Z_]*EPSILON' src/pair/pair.h
+# the physics layers (core, pair, dynamics, bodies) write no file: they hand their tables to io/
+# (core/table.h; io/output.c writes them), which alone knows paths and file errors
+for d in core pair dynamics bodies; do
+    files=$(for f in src/$d/*.c; do perl -0pe 's{/\*.*?\*/}{$& =~ tr/\n//cdr}gse; s{//[^\n]*}{}g' "$f" \
+           | grep -qE '(^|[^A-Za-z0-9_])(fopen|freopen|open|creat|mkstemp|rename|unlink|remove|write_file_atomic)[[:space:]]*\(' && printf '%s ' "$f"; done)
+    if [ -z "$files" ]; then ok "src/$d writes no file (its tables go to io/)"
+    else bad "src/$d writes files itself" "$files"; fi
+done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -6,7 +6,10 @@
 # tests/ and experiments/; new inputs go to build/fuzz/corpus and are merged
 # (minimised) back into tests/fuzz/corpus at the end. FUZZ_SECONDS (default
 # 900) of wall time on one core at nice 19; the log is build/fuzz/fuzz.log.
-# Needs clang: `tools/deps fuzz`.
+# Needs clang and llvm-symbolizer: `tools/deps fuzz`. First a control: libconfig's known leak
+# (tests/fuzz/lsan-control.cfg) must be reported without tests/lsan.supp and suppressed with it;
+# LeakSanitizer names the library's frames only through llvm-symbolizer (Debian's llvm, llvm-14),
+# without which the suppression cannot match and every such input would count as a bug.
 FUZZ_SECONDS ?= 900
 FUZZ_DIR := build/fuzz
 FUZZ_SRC = $(SRC)
@@ -21,6 +24,13 @@ $(FUZZ_DIR)/fuzz_scene: tests/fuzz/fuzz_scene.c $(FUZZ_SRC) $(HDRS)
 .PHONY: fuzz
 fuzz: $(FUZZ_DIR)/fuzz_scene
 	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/artifacts $(FUZZ_DIR)/seeds
+	@if LSAN_OPTIONS=print_suppressions=0 $(FUZZ_DIR)/fuzz_scene tests/fuzz/lsan-control.cfg >$(FUZZ_DIR)/lsan-control.log 2>&1; then \
+	    echo "fuzz: tests/fuzz/lsan-control.cfg no longer leaks in libconfig: review tests/lsan.supp" >&2; exit 1; fi
+	@LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 $(FUZZ_DIR)/fuzz_scene tests/fuzz/lsan-control.cfg \
+	    >$(FUZZ_DIR)/lsan-control.log 2>&1 || { echo "fuzz: libconfig's known leak (tests/fuzz/lsan-control.cfg) is not" \
+	    "suppressed: LeakSanitizer did not name its frames (no llvm-symbolizer? tools/deps fuzz installs it, Debian's llvm)," \
+	    "so tests/lsan.supp cannot match; see $(FUZZ_DIR)/lsan-control.log" >&2; exit 1; }
+	@echo "fuzz: control: libconfig's known leak found, and suppressed by tests/lsan.supp"
 	@cp tests/good-scene.cfg tests/bad-scenes/*.cfg $(FUZZ_DIR)/seeds/
 	@for f in experiments/*/*/*.cfg; do cp "$$f" "$(FUZZ_DIR)/seeds/$$(echo $$f | tr / _)"; done
 	LSAN_OPTIONS=suppressions=tests/lsan.supp:print_suppressions=0 nice -n 19 $(FUZZ_DIR)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \

@@ -3,7 +3,9 @@
 # tests/checkpoint.sh, tests/io_errors.sh, tests/blowup.sh, tests/bare.sh (BARE: the bare build), tests/fit_line.sh, tests/tcaf_fit.sh,
 # tests/numerics.sh (the analyses' statistics, tools/lib/numerics.awk)
 # tests/library_exits.sh and tests/h5md.sh (MDAnalysis reads the trajectories; skipped, saying so, without it),
-# add up their checks, print "N passed, M failed", exit 1 if M > 0.
+# add up their checks, print "N passed, M failed" (", K skipped" when a suite could not run some
+# of its checks and said so: "N passed, M failed, K skipped"), exit 1 if M > 0.
+# TEST_SCRIPTS replaces the list of scripts (tests/skips.sh tests this summing).
 # A binary that dies before cmocka's summary (crash, sanitizer abort) counts
 # its unfinished tests as failed (at least one).
 set -u
@@ -16,7 +18,7 @@ if [ "${SANITIZE:-}" = 1 ]; then
 fi
 # other jobs may share the 2 cores: idle OpenMP threads sleep instead of spinning
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
-pass=0 fail=0
+pass=0 fail=0 skip=0
 t_start=$(date +%s.%N)
 for bin in "$@"; do
     name=$(basename "$bin")
@@ -43,7 +45,8 @@ for bin in "$@"; do
     pass=$((pass + p)); fail=$((fail + f))
     rm -f "$log"
 done
-for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh; do
+scripts=${TEST_SCRIPTS:-tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh tests/skips.sh}
+for script in $scripts; do
 name=$(basename "$script")
 log=$(mktemp)
 t0=$(date +%s.%N)
@@ -51,17 +54,18 @@ DPD="${DPD:-bin/dpd}" BARE="${BARE:-build/dpd-bare}" "$script" >"$log" 2>&1
 rc=$?
 t1=$(date +%s.%N)
 cat "$log"
-line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -1)
-if [ -n "$line" ]; then
-    p=${line%% passed*}; f=${line#*, }; f=${f%% failed}
+line=$(grep -E '^[0-9]+ passed, [0-9]+ failed(, [0-9]+ skipped)?$' "$log" | tail -1)
+s=0
+if [[ $line =~ ^([0-9]+)\ passed,\ ([0-9]+)\ failed(,\ ([0-9]+)\ skipped)?$ ]]; then
+    p=${BASH_REMATCH[1]} f=${BASH_REMATCH[2]} s=${BASH_REMATCH[4]:-0}
 else
     p=0; f=1; echo "$name: no summary (status $rc)" >&2
 fi
 [ $rc -ne 0 ] && [ "$f" -eq 0 ] && f=1
-printf '%s: %d passed, %d failed (%.1f s)\n' "$name" "$p" "$f" "$(echo "$t1 - $t0" | bc)"
-pass=$((pass + p)); fail=$((fail + f))
+printf '%s: %d passed, %d failed%s (%.1f s)\n' "$name" "$p" "$f" "$([ "$s" -gt 0 ] && echo ", $s skipped")" "$(echo "$t1 - $t0" | bc)"
+pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
 rm -f "$log"
 done
 printf 'all tests: %.1f s wall\n' "$(echo "$(date +%s.%N) - $t_start" | bc)"
-echo "$pass passed, $fail failed"
+echo "$pass passed, $fail failed$([ "$skip" -gt 0 ] && echo ", $skip skipped")"
 [ "$fail" -eq 0 ]

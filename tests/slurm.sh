@@ -10,7 +10,10 @@
 #  - one running job, cancelled with scancel (SIGTERM: the simulator writes a checkpoint) and
 #    requeued with scontrol requeue, resumes from its checkpoint (its provenance says at which
 #    step) and gives bit-identical results: its tables, and its run.h5 time series and final
-#    state (h5diff) against the local pool's uninterrupted run.
+#    state (h5diff) against the local pool's uninterrupted run;
+#  - a job cancelled with scancel and not requeued within DPD_SLURM_CANCEL_GRACE (here 5 s): the
+#    experiment stops with a message naming it and submits it no second time (README "The Slurm
+#    engine"); run again, it resubmits it, and the simulation resumes from its checkpoint.
 # Exit status: 0 when every check passes. Needs: slurm-wlm, munge (tools/deps slurm).
 set -uo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -87,6 +90,37 @@ at=$(awk -F'\t' '$1 == "resumed_at_step" { print $2 }' "$tmp/slurm/results/${EXP
 n=$(squeue -h -t all -o '%j' | grep -c '^dpd:')
 [ "$n" -ge 6 ] && ok "$n simulations ran as Slurm jobs" || bad "only $n simulations ran as Slurm jobs"
 squeue -h -t all -o '%j' | grep -q '^dpd-analysis:' && ok "the analyses ran as Slurm jobs" || bad "no analysis ran as a Slurm job"
+
+echo "== scancel without requeue"
+mkdir -p "$tmp/cancel" && cp -a "$repo/tools" "$repo/experiments" "$tmp/cancel/"
+run_cancel() { DPD_ENGINE=slurm DPD_SLURM_POLL=1 DPD_SLURM_CANCEL_GRACE=5 DPD_JOBS=8 \
+                   "$tmp/cancel/tools/run-experiment" "${EXPS[0]}" quick > "$tmp/cancel-$1.log" 2>&1; }
+run_cancel 1 & cpid=$!
+cdir=$tmp/cancel/results/${EXPS[0]}/.quick.partial/runs/$VICTIM
+cid=
+for _ in $(seq 600); do
+    cid=$(squeue -h -o '%i %j %T' | awk -v v=":$VICTIM:" 'index($2, v) && $3 == "RUNNING" { print $1; exit }')
+    [ -n "$cid" ] && [ -s "$cdir/checkpoint.dpd" ] && break
+    sleep 0.2
+done
+if [ -n "$cid" ] && [ -s "$cdir/checkpoint.dpd" ]; then
+    cname=$(squeue -h -t all -j "$cid" -o %j)
+    scancel "$cid"
+    if wait $cpid; then bad "scancel without requeue: the experiment completed"
+    else ok "scancel without requeue: the experiment stopped"; fi
+    grep -q "$VICTIM (job $cid cancelled (scancel) and not requeued within 5 s.*was cancelled (scancel) and not requeued within DPD_SLURM_CANCEL_GRACE" "$tmp/cancel-1.log" &&
+        ok "scancel without requeue: the message names the simulation and its job" ||
+        { bad "scancel without requeue: message"; tail -5 "$tmp/cancel-1.log"; }
+    n=$(squeue -h -t all -o '%j' | grep -cxF "$cname")
+    [ "$n" = 1 ] && ok "scancel without requeue: submitted once, not again" || bad "scancel without requeue: $n jobs named $cname"
+    if run_cancel 2; then ok "scancel without requeue: run again, the experiment completes"
+    else bad "scancel without requeue: the second attempt failed"; tail -10 "$tmp/cancel-2.log"; fi
+    at=$(awk -F'\t' '$1 == "resumed_at_step" { print $2 }' "$tmp/cancel/results/${EXPS[0]}/quick/runs/$VICTIM/provenance.tsv" 2>/dev/null)
+    [ -n "$at" ] && [ "$at" -gt 0 ] && ok "scancel without requeue: the resubmitted simulation resumed at step $at" ||
+        bad "scancel without requeue: the resubmitted simulation did not resume from its checkpoint"
+else
+    bad "scancel without requeue: no running job of $VICTIM with a checkpoint to cancel"; kill $cpid 2>/dev/null; wait $cpid
+fi
 
 echo "== Slurm against the local pool"
 measured=$'^(cpu_seconds|wall_seconds|.*particle_steps_per_second.*|peak_memory_bytes_per_particle|time_[a-z_]*seconds)\t'

@@ -879,6 +879,105 @@ EOF3
 T "regression-refs: a value 4.5 se away fails check" 1 "$C" x/rr
 has "regression-refs: the moved value FAILs" '^x/rr  *q  .*regression .*FAIL'
 
+# ---------------------------------------------------------------- one driver at a time, and its children end with it
+# A slow fake simulator (sleeps; on SIGTERM it logs "NAME TERM" and exits 143, as dpd does after
+# its checkpoint). (1) A second tools/run-experiment of the same experiment and tier stops at once
+# naming the holder, and the first completes. (2) A SIGKILLed tools/run-experiment, and a SIGKILLed
+# make driving it (experiments.mk), leave no process of the fixture running (its path in the
+# command line: run-experiment, the pool's make, run-simulation, the fake simulator), and the
+# simulators got SIGTERM (a real one writes its checkpoint). (3) The same with the Slurm engine
+# (fake sbatch, squeue, scontrol): no slurm-sim left polling. (4) A Slurm job cancelled (scancel)
+# and not requeued within DPD_SLURM_CANCEL_GRACE: the experiment stops, saying so, and does not
+# submit it again; run again, it resubmits and completes.
+cat > "$rx/fake-slow" <<'EOF2'
+#!/usr/bin/env bash
+[ "${1:-}" = --version ] && { echo "dpd fake1"; exit 0; }
+out=; args=("$@")
+for ((i = 0; i < $#; i++)); do case ${args[i]} in --out) out=${args[i + 1]} ;; --dry-run) out=- ;; esac; done
+[ "$out" = - ] && { printf 'particles\t10\nequilibration\t0\nsteps\t10\noverdamped\t0\n'; exit 0; }   # tools/cost
+mkdir -p "$out"; echo run > "$out/INCOMPLETE"
+echo "$(basename "$out") start $$" >> "$FAKE_LOG"
+trap 'echo "$(basename "$out") TERM" >> "$FAKE_LOG"; exit 143' TERM
+sleep "${FAKE_SLEEP:-60}" & wait $!
+printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
+printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
+rm "$out/INCOMPLETE"
+EOF2
+chmod +x "$rx/fake-slow"
+# gone PATTERN: no process whose command line holds PATTERN within 15 s (prints those left)
+gone() { local k; for k in $(seq 150); do pgrep -f -- "$1" >/dev/null || return 0; sleep 0.1; done; pgrep -af -- "$1"; return 1; }
+started() { local k; for k in $(seq 300); do [ "$(grep -c ' start ' "$log" 2>/dev/null)" -ge "$1" ] && return 0; sleep 0.1; done; return 1; }
+SLOW=(env -u DPD_ROOT -u MAKEFLAGS -u MAKELEVEL DPD_BIN="$rx/fake-slow" FAKE_LOG="$log" DPD_JOBS=2)
+rm -rf "$rx/results/t/e"
+: > "$log"
+"${SLOW[@]}" FAKE_SLEEP=4 "$rx/tools/run-experiment" t/e quick > "$root/first.out" 2>&1 & first=$!
+started 1 || bad "lock: the first run-experiment did not start a simulation" "$root/first.out"
+T "lock: a second run-experiment of the same experiment and tier stops" 1 "${SLOW[@]}" "$rx/tools/run-experiment" t/e quick
+has "lock: it names the holder (pid, host, start time)" "t/e \[quick\] is being run by pid $first on $(hostname) since 20[0-9-]*T[0-9:]*Z"
+if wait $first; then ok "lock: the first completes"; else bad "lock: the first failed" "$root/first.out"; fi
+T "lock: free again once the first ended" 0 "${SLOW[@]}" FAKE_SLEEP=0 "$rx/tools/run-experiment" t/e quick
+rm -rf "$rx/results/t/e"
+: > "$log"
+"${SLOW[@]}" "$rx/tools/run-experiment" t/e quick > "$root/killed.out" 2>&1 & drv=$!
+if started 2; then
+    kill -KILL $drv; wait $drv 2>/dev/null
+    if gone "$rx/"; then ok "SIGKILLed run-experiment: no process of it left"; else bad "SIGKILLed run-experiment: processes left running"; pgrep -f -- "$rx/" | xargs -r kill -KILL; fi
+    [ "$(grep -c ' TERM$' "$log")" = 2 ] && ok "SIGKILLed run-experiment: both simulators got SIGTERM (checkpoint)" || bad "SIGKILLed run-experiment: simulators' signals: $(tr '\n' ' ' < "$log")"
+else bad "SIGKILLed run-experiment: simulations did not start" "$root/killed.out"; fi
+cp "$tools/../experiments/experiments.mk" "$rx/experiments/experiments.mk"
+printf 'SHELL := /bin/bash\nTIER ?= quick\ninclude experiments/experiments.mk\n' > "$rx/Makefile"
+rm -rf "$rx/results/t/e"
+: > "$log"
+( cd "$rx" && exec "${SLOW[@]}" make results EXPERIMENTS=t/e TIER=quick BIN="$rx/fake-slow" > "$root/make.out" 2>&1 ) & drv=$!
+if started 2; then
+    mk=$(pgrep -f "make results EXPERIMENTS=t/e TIER=quick BIN=$rx/fake-slow" | head -1)
+    kill -KILL "$mk"; wait $drv 2>/dev/null
+    if gone "$rx/"; then ok "SIGKILLed make figures: no process of it left"; else bad "SIGKILLed make: processes left running"; pgrep -f -- "$rx/" | xargs -r kill -KILL; fi
+    [ "$(grep -c ' TERM$' "$log")" = 2 ] && ok "SIGKILLed make: both simulators got SIGTERM (checkpoint)" || bad "SIGKILLed make: simulators' signals: $(tr '\n' ' ' < "$log")"
+else bad "SIGKILLed make: simulations did not start" "$root/make.out"; fi
+# fake Slurm: sbatch runs nothing and logs; squeue reports each job in the state of $FAKE_SQ/ID
+# (RUNNING unless set); a job named like a simulation is found while its state file says so
+sq=$root/fake-slurm; mkdir -p "$sq/bin"
+cat > "$sq/bin/sbatch" <<'EOF2'
+#!/usr/bin/env bash
+n=$(( $(cat "$FAKE_SQ/next" 2>/dev/null || echo 100) + 1 )); echo $n > "$FAKE_SQ/next"
+for a in "$@"; do case $a in --job-name=*) echo "${a#--job-name=}" > "$FAKE_SQ/$n.name" ;; esac; done
+echo "sbatch $n" >> "$FAKE_LOG"; echo "$n"
+EOF2
+cat > "$sq/bin/squeue" <<'EOF2'
+#!/usr/bin/env bash
+j=; for a in "$@"; do case $a in --name=*) exit 0 ;; esac; done
+while [ $# -gt 0 ]; do [ "$1" = -j ] && j=$2; shift; done
+[ -n "$j" ] && cat "$FAKE_SQ/$j.state" 2>/dev/null || { [ -n "$j" ] && echo RUNNING; }
+EOF2
+printf '#!/bin/sh\necho "scontrol $*" >> "$FAKE_LOG"\n' > "$sq/bin/scontrol"
+chmod +x "$sq/bin/"*
+SQ=(PATH="$sq/bin:$PATH" FAKE_SQ="$sq" DPD_ENGINE=slurm DPD_SLURM_POLL=0.2 DPD_SLURM_ANALYSIS=local)
+rm -rf "$rx/results/t/e"; rm -f "$sq"/*.state "$sq"/*.name "$sq/next"
+: > "$log"
+"${SLOW[@]}" "${SQ[@]}" "$rx/tools/run-experiment" t/e quick > "$root/slurm-killed.out" 2>&1 & drv=$!
+for _ in $(seq 300); do [ "$(grep -c '^sbatch' "$log")" -ge 2 ] && break; sleep 0.1; done
+if [ "$(grep -c '^sbatch' "$log")" -ge 2 ]; then
+    kill -KILL $drv; wait $drv 2>/dev/null
+    if gone "$rx/tools/slurm-sim"; then ok "SIGKILLed run-experiment (Slurm engine): no slurm-sim left polling"
+    else bad "SIGKILLed run-experiment (Slurm engine): slurm-sim left running"; pgrep -f -- "$rx/" | xargs -r kill -KILL; fi
+else bad "Slurm engine: the jobs were not submitted" "$root/slurm-killed.out"; fi
+# scancel without requeue: the state CANCELLED for good
+rm -rf "$rx/results/t/e"; rm -f "$sq"/*.state "$sq"/*.name "$sq/next"
+: > "$log"
+for n in 101 102 103 104 105 106; do echo CANCELLED > "$sq/$n.state"; done
+T "scancel, no requeue within the grace: the experiment stops" 1 timeout 60 "${SLOW[@]}" "${SQ[@]}" DPD_SLURM_CANCEL_GRACE=1 "$rx/tools/run-experiment" t/e quick
+has "scancel: says that the job was cancelled and not requeued" "was cancelled (scancel) and not requeued within DPD_SLURM_CANCEL_GRACE"
+[ "$(grep -c '^sbatch' "$log")" = 2 ] && ok "scancel: each simulation submitted once, none again" || bad "scancel: submissions: $(grep -c '^sbatch' "$log") ($(tr '\n' ' ' < "$log"))"
+rm -f "$sq"/*.state
+: > "$log"
+# run again: resubmitted; the fake jobs then "complete" (a finished simulation in their directory)
+( sleep 1; for r in "$rx"/results/t/e/.quick.partial/runs/*/; do printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$r/summary.tsv"; printf 'key\tvalue\ncpu_seconds\t1\n' > "$r/provenance.tsv"; rm -f "$r/INCOMPLETE"; done
+  for n in $(seq 101 110); do echo COMPLETED > "$sq/$n.state"; done ) &
+T "scancel: run again, the experiment resubmits and completes" 0 timeout 60 "${SLOW[@]}" "${SQ[@]}" "$rx/tools/run-experiment" t/e quick
+wait
+pgrep -f -- "$rx/" | xargs -r kill -KILL   # nothing of a failed check outlives the harness
+
 # tools/cost class: the factor a projected run gets follows the walk it takes (one type in 3D without
 # shear: the AVX-512 evaluators; several types, shear or 2D: the generic walk)
 cc=$tools/cost

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
 #include "run.h"
 #include "params.h"
 #include "linefit.h"
@@ -89,6 +90,15 @@ static int cmd_params(int argc, char **argv)
     return 0;
 }
 
+/* The options of dpd run that take a value. */
+static int takes_value(const char *a)
+{
+    static const char *const with_value[] = {"--set", "--out", "--threads", "--checkpoint-every", "--checkpoint-wall"};
+    for (size_t k = 0; k < sizeof with_value / sizeof with_value[0]; k++)
+        if (!strcmp(a, with_value[k])) return 1;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) { usage(stderr); return 1; }
@@ -111,6 +121,11 @@ int main(int argc, char **argv)
     opt.command_line = cmdline;
     for (int k = 2; k < argc; k++) {
         const char *a = argv[k];
+        if (takes_value(a) && k + 1 < argc && !strncmp(argv[k + 1], "--", 2)) {
+            /* "--out --quiet": the option is not the value (it would become a directory named --quiet) */
+            fprintf(stderr, "dpd run: %s needs a value, not the option '%s'\n", a, argv[k + 1]);
+            goto done;
+        }
         if (!strcmp(a, "--set") || !strcmp(a, "--out") || !strcmp(a, "--threads")) {
             if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); goto done; }
             const char *v = argv[++k];
@@ -126,8 +141,9 @@ int main(int argc, char **argv)
             char *end;
             if (k + 1 >= argc) { fprintf(stderr, "dpd run: %s needs a value\n", a); goto done; }
             const char *v = argv[++k];
+            errno = 0;
             long long c = strtoll(v, &end, 10);
-            if (*end || end == v || c < 1) { fprintf(stderr, "dpd run: --checkpoint-every %s: allowed 1 to 9223372036854775807 steps\n", v); goto done; }
+            if (*end || end == v || c < 1 || errno == ERANGE) { fprintf(stderr, "dpd run: --checkpoint-every %s: allowed 1 to 9223372036854775807 steps\n", v); goto done; }
             opt.checkpoint_every = c;
         } else if (!strcmp(a, "--checkpoint-wall")) {
             char *end;

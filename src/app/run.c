@@ -19,6 +19,7 @@
 #endif
 #include "run_context.h"
 #include "integrator.h"
+#include "dirlock.h"
 
 static int mkdir_p(const char *dir)
 {
@@ -174,6 +175,23 @@ static int run_open(Run *r)
         fprintf(stderr, "dpd: cannot create or write the output directory '%s': %s\n", opt->outdir, strerror(errno));
         return 4;
     }
+    /* one writer per directory (two would mix their files, and with HDF5_USE_FILE_LOCKING=FALSE
+     * both could end with status 0) */
+    char holder[600];
+    r->lock = dirlock_take(opt->outdir, holder, sizeof holder);
+    if (r->lock == -1) {
+        fprintf(stderr, "dpd: '%s' is in use by another run: %s (lock %s/%s); wait for it to end, or stop it\n",
+                opt->outdir, holder, opt->outdir, DIRLOCK_FILE);
+        return 4;
+    }
+    if (r->lock == -2)
+        fprintf(stderr, "dpd: warning: running without the output directory's lock (%s)\n", holder);
+    /* an earlier result goes first (no byte of it may stay beside a run that fails; this also
+     * frees its space for the marker); then the marker */
+    if (output_remove_results(opt->outdir)) {
+        fprintf(stderr, "dpd: cannot remove the earlier result in '%s': %s\n", opt->outdir, strerror(errno));
+        return 4;
+    }
     if (write_file_atomic(opt->outdir, "INCOMPLETE", "run started\n", 12)) {
         fprintf(stderr, "dpd: cannot write in '%s': %s\n", opt->outdir, strerror(errno));
         return 4;
@@ -182,9 +200,23 @@ static int run_open(Run *r)
     const int nbins = r->m.prof_on ? r->m.prof_bins : 0;
     r->pv = (PairVirial){.bin_axis = r->m.prof_axis, .nbins = nbins};
     od_init(&r->od);
-    if (neighbor_init(&r->nl, s, r->rc.skin) || forces_init(&r->fw, s, nbins) || measure_init(&r->m, s)
+    if (neighbor_init(&r->nl, s, r->rc.skin) == NEIGHBOR_TOO_MANY_CELLS) {
+        const Box *b = &s->box;
+        const double cut = s->rc_max + r->rc.skin;
+        double cells = 1.0;
+        for (int d = 0; d < b->dim; d++) cells *= floor(b->L[d] / cut);
+        fprintf(stderr, "dpd: %s: key 'box': the box %g x %g", opt->scene, b->L[0], b->L[1]);
+        if (b->dim == 3) fprintf(stderr, " x %g", b->L[2]);
+        fprintf(stderr, " needs %.3g neighbour cells of side >= the largest rc + skin = %g, more than the %zu "
+                "a cell list indexes; use a smaller box (or fewer, larger cells would be needed)\n",
+                cells, cut, NEIGHBOR_MAX_CELLS);
+        return 2;
+    }
+    if (forces_init(&r->fw, s, nbins) || measure_init(&r->m, s)
         || neighbor_build(&r->nl, s) || od_stats_init(&r->ods_stats, s->n)
-        || (nbins > 0 && !(r->pv.Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double))))) {
+        || (nbins > 0 && !(r->pv.Wbin = calloc((size_t)nbins * PAIR_PARTS * 9, sizeof(double))))
+        || (r->rc.max_thermal_ratio > 0.0 && !r->rc.overdamped
+            && !(r->thermal_cells = malloc((r->thermal_ncells = run_thermal_cells(s, s->rc_max + r->rc.skin)) * 5 * sizeof(double))))) {
         fprintf(stderr, "dpd: out of memory\n");
         return 4;
     }
@@ -226,7 +258,8 @@ static int run_resume(Run *r)
     if (r->opt->resume) {
         const int k = checkpoint_read(r->opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, &r->cx, err, sizeof err);
         if (k < 0) { fprintf(stderr, "dpd: %s\n", err); return 2; }
-        if (k == 0 && output_segments_resume(&r->out, r->cx.trajectory_segments, r->cx.trajectory_frames, err, sizeof err)) {
+        if (k == 0 && output_segments_resume(&r->out, r->cx.trajectory_segments, r->cx.trajectory_frames,
+                                             r->cx.trajectory_sums, err, sizeof err)) {
             fprintf(stderr, "dpd: %s\n", err);
             return 2;
         }
@@ -243,7 +276,7 @@ static int run_resume(Run *r)
             return 0;
         }
     }
-    if (output_segments_resume(&r->out, 0, 0, err, sizeof err)) { fprintf(stderr, "dpd: %s\n", err); return 2; }
+    if (output_segments_resume(&r->out, 0, 0, NULL, err, sizeof err)) { fprintf(stderr, "dpd: %s\n", err); return 2; }
     return 0;
 }
 
@@ -283,11 +316,15 @@ static int save_checkpoint(Run *r)
     }
     cx->trajectory_segments = out->nseg;
     cx->trajectory_frames = out->frames;
+    free(cx->trajectory_sums);   /* a resumed run's, read from its checkpoint: Output has them now */
+    cx->trajectory_sums = out->seg_sum;
     cx->cpu_used = cpu_now() - st->cpu0;
     cx->wall_used = wall_now() - st->wall0;
     cx->prod_wall_used = (long long)r->s.step > r->rc.equilibration ? wall_now() - st->prod_wall0 : 0.0;
     cx->steps_done = st->steps_done;
-    if (checkpoint_write(opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, cx, err, sizeof err)) {
+    const int bad = checkpoint_write(opt->outdir, r->scene_hash, &r->s, &r->nl, &r->m, cx, err, sizeof err);
+    cx->trajectory_sums = NULL;   /* the Output's */
+    if (bad) {
         fprintf(stderr, "dpd: %s\n", err);
         return -1;
     }
@@ -403,6 +440,9 @@ static int run_finish(Run *r, int status)
         unlink(f);   /* the run is complete: nothing to resume */
         output_segments_remove(&r->out);
     }
+    dirlock_release(dir, r->lock);
+    free(r->cx.trajectory_sums);
+    free(r->thermal_cells);
     free(r->pv.Wbin);
     od_free(&r->od);
     od_stats_free(&r->ods_stats);
@@ -431,6 +471,7 @@ int run_scene(const RunOptions *opt)
     Run *r = calloc(1, sizeof *r);
     if (!r) { fprintf(stderr, "dpd: out of memory\n"); return 4; }
     r->opt = opt;
+    r->lock = -1;
     r->show = !opt->quiet && isatty(2);
     int status = run_load(r);
     if (status == 0 && opt->dry_run) { print_plan(r); status = run_finish(r, 0); free(r); return status; }

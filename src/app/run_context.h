@@ -48,6 +48,9 @@ typedef struct {
     int virial_step;          /* the last inertial step computed the virial (a measurement step) */
     int loaded, set_up, opened;   /* what run_free releases: scene, system and buffers, output */
     int wrote_summary;        /* summary.tsv written: removed again if the run then fails */
+    int lock;                 /* the output directory's lock (dirlock.h; -1: none) */
+    double *thermal_cells;    /* the stability check's sums per cell (stability.c), 5 per cell */
+    size_t thermal_ncells;
 } Run;
 
 /* run_output.c: summary.tsv, provenance.tsv, solver.tsv, the trajectory and
@@ -59,5 +62,7 @@ int run_write_results(Run *r);
  * 3 (unstable). spins_only: the rotational temperature alone (the steps
  * between the full checks of a rotation scene). */
 int run_stop_if_unstable(const Run *r, int spins_only);
+/* stability.c: the cells of the thermal temperature for cells of side >= cut. */
+size_t run_thermal_cells(const System *s, double cut);
 
 #endif

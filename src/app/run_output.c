@@ -139,18 +139,25 @@ static void summary_cost(FILE *f, const Run *r)
     fprintf(f, "neighbor_builds\t%ld\t0\n", st->builds);
 }
 
-/* The summary text: the measurements, the bodies', the cost, the solver's. */
-static int summary_text(Run *r, char **sum, size_t *len)
+/* The summary text: the measurements, the bodies', the cost, the solver's; the
+ * bodies' and the solver's tables into ts. */
+static int summary_text(Run *r, char **sum, size_t *len, Tables *ts)
 {
     int status = 0;
     FILE *f = open_memstream(sum, len);
     if (!f) return 4;
     fprintf(f, "quantity\tvalue\tstderr\n");
-    if (measure_write(&r->m, &r->s, f, r->opt->outdir)) status = 4;
-    if (r->rc.colloids) colloid_write(r->rc.colloids, &r->s, f, r->m.nblocks);
-    if (r->rc.bonds && bonds_write(r->rc.bonds, &r->s, f, r->opt->outdir)) status = 4;
+    /* a run whose production took no sample (steps = 0, an equilibration alone, or steps below
+     * measure.every) measured nothing: its summary has the run's cost alone, not rows of nan */
+    const int measured = r->m.temperature.n > 0;
+    if (!measured)
+        fprintf(stderr, "dpd: note: no sample was taken (steps = %lld, measure.every = %d): the summary "
+                "has the run's cost and no measured quantity\n", r->rc.steps, r->m.every);
+    if (measured && measure_write(&r->m, &r->s, f, r->opt->outdir)) status = 4;
+    if (measured && r->rc.colloids) colloid_write(r->rc.colloids, &r->s, f, r->m.nblocks);
+    if (measured && r->rc.bonds && bonds_write(r->rc.bonds, &r->s, f, ts)) status = 4;
     summary_cost(f, r);
-    if (r->rc.overdamped && od_stats_write(&r->ods_stats, f, r->opt->outdir, r->m.nblocks)) status = 4;
+    if (measured && r->rc.overdamped && od_stats_write(&r->ods_stats, f, ts, r->m.nblocks)) status = 4;
     return fclose(f) || status ? 4 : 0;
 }
 
@@ -159,12 +166,23 @@ int run_write_results(Run *r)
     const RunOptions *opt = r->opt;
     char *sum = NULL, *prov = NULL;
     size_t len = 0, plen = 0;
-    int status = summary_text(r, &sum, &len);
+    Tables ts = {0};
+    int status = summary_text(r, &sum, &len, &ts);
+    const char *failed = NULL;
+    if (status == 0 && output_write_tables(opt->outdir, &ts, &failed)) {
+        fprintf(stderr, "dpd: cannot write %s/%s\n", opt->outdir, failed);
+        status = 4;
+    }
+    tables_free(&ts);
     provenance_text(&prov, &plen, opt, &r->s, &r->st);
     r->wrote_summary = status == 0;
     if (status == 0 && write_file_atomic(opt->outdir, "summary.tsv", sum, len)) status = 4;
     if (status == 0 && write_file_atomic(opt->outdir, "provenance.tsv", prov, plen)) status = 4;
-    if (status == 0 && output_segments_merge(&r->out, &r->s)) status = 4;   /* the trajectory */
+    char err[1400];
+    if (status == 0 && output_segments_merge(&r->out, &r->s, err, sizeof err)) {   /* the trajectory */
+        fprintf(stderr, "dpd: %s\n", err);
+        status = 4;
+    }
     /* the step of the first sample: production step 0, which the inertial loop first
      * reaches after a step, so never when there is no equilibration */
     const long long first = r->rc.equilibration + (r->rc.equilibration == 0 && !r->rc.overdamped ? r->m.every : 0);

@@ -244,26 +244,25 @@ void bonds_sample(Bonds *b, const System *s, long long prod_step)
 
 static double annulus(double q0, double q1) { return M_PI * (q1 * q1 - q0 * q0); }
 
-static int write_around(const Bonds *b, FILE *summary, const char *dir)
+static int write_around(const Bonds *b, FILE *summary, Tables *ts)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/colloid_around.tsv", dir);
+    FILE *out = tables_add(ts, "colloid_around.tsv");
+    if (!out) return -1;
     const AroundHist a = {.hist = b->around_hist, .samples = b->around_samples, .nblocks = b->nblocks,
                           .bins = b->p.around.bins, .dim = 2, .dq = b->p.around.dq,
                           .density = b->around_density, .threshold = b->p.around.threshold};
-    return around_write(&a, path, summary, "colloid_radius");
+    const int bad = around_write(&a, out, summary, "colloid_radius");
+    return table_end(ts, out) || bad ? -1 : 0;
 }
 
-static int write_rdf(const Bonds *b, const System *s, const char *dir)
+static int write_rdf(const Bonds *b, const System *s, Tables *ts)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/colloid_rdf.tsv", dir);
-    FILE *out = fopen(path, "w");
+    FILE *out = tables_add(ts, "colloid_rdf.tsv");
     if (!out) return -1;
     const double dr = b->p.rdf_rmax / b->p.rdf_bins;
     const double pairs = (double)b->p.ncol * (b->p.ncol - 1) / (s->box.L[0] * s->box.L[1]);
     double *g = malloc((size_t)b->nblocks * sizeof(double) + 1);   /* per block */
-    if (!g) { fclose(out); return -1; }
+    if (!g) { table_end(ts, out); return -1; }
     fprintf(out, "r\tg\tg_se\n");
     for (int q = 0; q < b->p.rdf_bins; q++) {
         int used = 0;
@@ -275,14 +274,14 @@ static int write_rdf(const Bonds *b, const System *s, const char *dir)
         fprintf(out, "%.6g\t%.6g\t%.3g\n", (q + 0.5) * dr, mean, se);
     }
     free(g);
-    return fclose(out);
+    return table_end(ts, out);
 }
 
 /* MSD of the centres (eq. 52), time average over every sample as origin;
  * errors from blocks of consecutive origins, each at least two windows long
  * (origins closer than a window share their trajectory: shorter blocks would
  * be correlated and understate the error), at most nblocks of them. */
-static int write_msd(const Bonds *b, const System *s, FILE *summary, const char *dir)
+static int write_msd(const Bonds *b, const System *s, FILE *summary, Tables *ts)
 {
     const int nc = b->p.ncol, W = b->p.msd_window;
     const long long ns = (long long)(b->traj.n / (2 * (size_t)nc)), no = ns - W;
@@ -309,9 +308,7 @@ static int write_msd(const Bonds *b, const System *s, FILE *summary, const char 
             blk[(size_t)k * (W + 1) + l] += sum / nc;
         }
     }
-    char path[1024];
-    snprintf(path, sizeof path, "%s/colloid_msd.tsv", dir);
-    FILE *out = fopen(path, "w");
+    FILE *out = tables_add(ts, "colloid_msd.tsv");
     if (!out) { free(blk); free(cnt); return -1; }
     fprintf(out, "# %lld time origins, errors from %d blocks of consecutive origins\n", no, nb);
     fprintf(out, "t\tmsd\tmsd_se\tD\tD_se\n");
@@ -332,10 +329,10 @@ static int write_msd(const Bonds *b, const System *s, FILE *summary, const char 
     }
     fprintf(summary, "D_colloid\t%.10g\t%.4g\n", D, Dse);
     free(col); free(blk); free(cnt);
-    return fclose(out);
+    return table_end(ts, out);
 }
 
-int bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir)
+int bonds_write(const Bonds *b, const System *s, FILE *summary, Tables *ts)
 {
     double v, se;
     fprintf(summary, "colloids\t%d\t0\n", b->p.ncol);
@@ -351,8 +348,8 @@ int bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir)
     if (s->box.shear_rate != 0.0)
         fprintf(summary, "viscosity_spring\t%.10g\t%.4g\n", v / s->box.shear_rate, se / fabs(s->box.shear_rate));
     series_free(&t);
-    if (write_msd(b, s, summary, dir)) return -1;
-    if (b->p.around.on && write_around(b, summary, dir)) return -1;
-    if (b->p.rdf_on && write_rdf(b, s, dir)) return -1;
+    if (write_msd(b, s, summary, ts)) return -1;
+    if (b->p.around.on && write_around(b, summary, ts)) return -1;
+    if (b->p.rdf_on && write_rdf(b, s, ts)) return -1;
     return 0;
 }

@@ -20,6 +20,7 @@
 #include "overdamped.h"
 #include "around.h"
 #include "io.h"
+#include "table.h"
 
 enum { BOND_P = 3 };          /* particles per colloid */
 
@@ -77,7 +78,8 @@ void bonds_rhs(Bonds *b, const System *s, OdSystem *od);
 void bonds_forces(Bonds *b, System *s, PairVirial *pv);
 /* One sample of the centres (every b->every production steps). */
 void bonds_sample(Bonds *b, const System *s, long long prod_step);
-/* Summary rows and colloid_msd.tsv, colloid_around.tsv, colloid_rdf.tsv. */
-int  bonds_write(const Bonds *b, const System *s, FILE *summary, const char *dir);
+/* Summary rows and the tables colloid_msd.tsv, colloid_around.tsv, colloid_rdf.tsv
+ * (handed to io/: table.h). 0, or -1 (out of memory). */
+int  bonds_write(const Bonds *b, const System *s, FILE *summary, Tables *ts);
 
 #endif

@@ -22,13 +22,12 @@ static double radius_from(const AroundHist *a, const double *h, long long nsamp)
     return a->bins * a->dq;
 }
 
-int around_write(const AroundHist *a, const char *path, FILE *summary, const char *name)
+int around_write(const AroundHist *a, FILE *out, FILE *summary, const char *name)
 {
     const int B = a->nblocks, nb = a->bins;
     double *all = calloc((size_t)nb, sizeof(double)), *loo = calloc((size_t)nb, sizeof(double));
     double *g = calloc((size_t)B + 1, sizeof(double)), *r = calloc((size_t)B + 1, sizeof(double));
-    FILE *out = all && loo && g && r ? fopen(path, "w") : NULL;
-    if (!out) { free(all); free(loo); free(g); free(r); return -1; }
+    if (!out || !all || !loo || !g || !r) { free(all); free(loo); free(g); free(r); return -1; }
     long long ntot = 0;
     for (int k = 0; k < B; k++) {
         ntot += a->samples[k];
@@ -66,6 +65,6 @@ int around_write(const AroundHist *a, const char *path, FILE *summary, const cha
     var += a->dq * a->dq / 12.0;
     fprintf(summary, "%s\t%.10g\t%.4g\n", name, r_all, used > 1 ? sqrt(var) : NAN);
     free(all); free(loo); free(g); free(r);
-    return fclose(out);
+    return ferror(out) ? -1 : 0;
 }
 

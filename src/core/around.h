@@ -26,10 +26,10 @@ typedef struct {
     double dq, density, threshold;
 } AroundHist;
 
-/* The table q, g, g_se (block errors) into the file `path` and the summary
- * row `name`: the lower edge of the first bin where g reaches the threshold,
+/* The table q, g, g_se (block errors) into the stream `table` (a file the
+ * caller opened, or a table for io/: table.h) and the summary row `name`: the lower edge of the first bin where g reaches the threshold,
  * its error the jackknife over blocks plus the dq^2 / 12 of a bin (nan with
  * fewer than two blocks). The one rule of exclusion_radius and colloid_radius. */
-int  around_write(const AroundHist *a, const char *path, FILE *summary, const char *name);
+int  around_write(const AroundHist *a, FILE *table, FILE *summary, const char *name);
 
 #endif

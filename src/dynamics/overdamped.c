@@ -774,12 +774,10 @@ void od_move(System *s)
     s->time += dt;
 }
 
-int od_stats_write(const OdStats *st, FILE *f, const char *dir, int nblocks)
+int od_stats_write(const OdStats *st, FILE *f, Tables *ts, int nblocks)
 {
     /* per-step record for plots; cpu_seconds last (plots read true_rel_error as column 5) */
-    char path[1100];
-    snprintf(path, sizeof path, "%s/solver.tsv", dir);
-    FILE *sf = fopen(path, "w");
+    FILE *sf = tables_add(ts, "solver.tsv");
     if (!sf) return -1;
     fprintf(sf, "step\titerations\trel_residual\tseconds%s\tcpu_seconds\n", st->true_error.n ? "\ttrue_rel_error" : "");
     for (size_t k = 0; k < st->iterations.n; k++) {
@@ -787,7 +785,7 @@ int od_stats_write(const OdStats *st, FILE *f, const char *dir, int nblocks)
         if (st->true_error.n) fprintf(sf, "\t%.4g", st->true_error.v[k]);
         fprintf(sf, "\t%.4g\n", k < st->cpu_seconds.n ? st->cpu_seconds.v[k] : NAN);
     }
-    const int bad = fclose(sf) != 0;
+    const int bad = table_end(ts, sf) != 0;
     static const struct { const char *name; size_t off; } rows[] = {
         {"solver_iterations", offsetof(OdStats, iterations)}, {"solver_rel_residual", offsetof(OdStats, residual)},
         {"solver_seconds_per_step", offsetof(OdStats, seconds)}, {"solver_cpu_seconds_per_step", offsetof(OdStats, cpu_seconds)}};

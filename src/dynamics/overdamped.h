@@ -50,6 +50,7 @@
 #include "system.h"
 #include "neighbor.h"
 #include "blockavg.h"
+#include "table.h"
 
 typedef enum {
     OD_SCHEME1 = 0,
@@ -172,8 +173,8 @@ int od_step_solve(OdSystem *od, System *s, const OdSettings *set, OdStats *st, i
  * positions made non-finite. */
 void od_move(System *s);
 
-/* solver.tsv (per step) into dir and the solver_* rows of the summary. 0, or -1
- * if the file could not be written. */
-int od_stats_write(const OdStats *st, FILE *summary, const char *dir, int nblocks);
+/* The table solver.tsv (per step, handed to io/: table.h) and the solver_* rows
+ * of the summary. 0, or -1 (out of memory). */
+int od_stats_write(const OdStats *st, FILE *summary, Tables *ts, int nblocks);
 
 #endif

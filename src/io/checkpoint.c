@@ -25,8 +25,12 @@ static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
  * offset (box_offset_wrapped), which older ones did not: a version 1 to 3
  * checkpoint of a sheared scene is refused (its unwrapped positions would jump
  * where it resumed), and so is one of a scene with a trajectory (its segment
- * files have no box edges per frame, which run.h5's trajectory now has). */
-#define CHECKPOINT_VERSION 4u
+ * files have no box edges per frame, which run.h5's trajectory now has).
+ * Version 5 appends the checksum of each trajectory segment file, which the
+ * resume and the final assembly verify: an older checkpoint of a scene with a
+ * trajectory is refused (its segments could not be verified); for any other
+ * scene versions 4 and 5 are the same byte for byte. */
+#define CHECKPOINT_VERSION 5u
 #define CHECKPOINT_VERSION_OLDEST 1u
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
@@ -121,6 +125,20 @@ static void trajectory_io(Io *io, CheckpointExtra *x)
     x->trajectory_frames = frames;
 }
 
+/* the checksums of the trajectory segment files complete at this checkpoint */
+static void trajectory_sums_io(Io *io, CheckpointExtra *x)
+{
+    const size_t n = x->trajectory_segments > 0 ? (size_t)x->trajectory_segments : 0;
+    if (io->reading && !io->bad) {
+        free(x->trajectory_sums);
+        x->trajectory_sums = NULL;
+        if (n > (io->len - io->pos) / sizeof(uint64_t)) { io_fail(io, "trajectory checksums"); return; }
+        x->trajectory_sums = malloc(n * sizeof(uint64_t) + 1);
+        if (!x->trajectory_sums) { io_fail(io, "trajectory checksums"); return; }
+    }
+    io_array(io, x->trajectory_sums, n, sizeof(uint64_t), "trajectory checksums");
+}
+
 /* The whole state in the order of the format: version 1, then what versions
  * 2 and 4 appended (each part only for a scene that has it). */
 static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, CheckpointExtra *x)
@@ -145,6 +163,8 @@ static void io_state(Io *io, System *s, NeighborList *nl, Measure *m, Checkpoint
     if (x->trajectory) trajectory_io(io, x);
     /* version 4 from here */
     if (x->solver_cpu) io_series(io, x->solver_cpu, "solver cpu time");
+    /* version 5 from here */
+    if (x->trajectory) trajectory_sums_io(io, x);
 }
 
 /* Does the scene have state that only version 2 stores? */
@@ -247,7 +267,8 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
         rc = -1;
     } else if (version < CHECKPOINT_VERSION_OLDEST || version > CHECKPOINT_VERSION
                || (version < 2 && needs_version2(s, m, x)) || (version < 3 && m->msd_on)
-               || (version < 4 && (x->solver_cpu || s->box.shear_rate != 0.0 || x->trajectory))) {
+               || (version < 4 && (x->solver_cpu || s->box.shear_rate != 0.0))
+               || (version < 5 && x->trajectory)) {
         snprintf(err, errlen, "checkpoint %s has format version %u, which this dpd (format %u) cannot resume "
                  "for this scene; delete it to start afresh", path, version, CHECKPOINT_VERSION);
         rc = -1;

@@ -11,7 +11,7 @@
  * the rigid bodies of 3D spring colloids (centre, velocity, quaternion,
  * angular momentum, last reactions) with their extension record; the TCAF
  * time origins in flight and its accumulators; how many trajectory segment
- * files (output.h) were complete. Format version 4 (checkpoint.c).
+ * files (output.h) were complete and their checksums. Format version 5 (checkpoint.c).
  * One binary file DIR/checkpoint.dpd, written to a temporary name, fsynced
  * and renamed; a 64-bit FNV-1a checksum over the content and a hash of the
  * scene as run reject a truncated file or one of another scene. */
@@ -42,6 +42,7 @@ typedef struct {
     int trajectory;           /* the scene writes a trajectory */
     int trajectory_segments;  /* trajectory segment files complete at this checkpoint (output.h) */
     long long trajectory_frames;   /* frames in them */
+    uint64_t *trajectory_sums;     /* their checksums (format 5; writing: the Output's, reading: malloc'd) */
 } CheckpointExtra;
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h);   /* FNV-1a; h = 0 to start */

@@ -6,7 +6,9 @@
 #include <unistd.h>
 #include <fcntl.h>
 #include <dirent.h>
+#include <errno.h>
 #include "output.h"
+#include "checkpoint.h"
 
 static hid_t ensure_group(hid_t file, const char *path)
 {
@@ -276,11 +278,17 @@ int output_open(Output *o, const char *dir, const System *s, int trajectory_ever
     if (!getenv("DPD_HDF5_DEBUG")) H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     o->file = H5Fcreate(o->tmp_path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (o->file < 0) return -1;
-    if (h5md_header(o->file)) return -1;
     o->traj_on = trajectory;
     o->frame_every = trajectory_every;
     o->segmented = trajectory;
-    if (trajectory && traj_create(o->file, s, o->traj)) return -1;
+    if (h5md_header(o->file) || (trajectory && traj_create(o->file, s, o->traj))) {
+        /* nothing of it stays open (the caller never closes an Output it could not open):
+         * the datasets first, or the file would stay open behind its id (H5F_CLOSE_WEAK) */
+        traj_close(o->traj);
+        H5Fclose(o->file);
+        o->file = -1;
+        return -1;
+    }
     return 0;
 }
 
@@ -383,6 +391,51 @@ static void fsync_path(const char *path, int dir)
     if (fd >= 0) { fsync(fd); close(fd); }
 }
 
+/* The checksum of a file's bytes (FNV-1a, checkpoint_hash); 0 or -1 if it cannot be read. */
+static int file_checksum(const char *path, uint64_t *sum)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return -1;
+    unsigned char buf[1 << 16];
+    uint64_t h = 0;
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, f)) > 0) h = checkpoint_hash(buf, got, h);
+    const int bad = ferror(f);
+    fclose(f);
+    *sum = h;
+    return bad ? -1 : 0;
+}
+
+/* Segment k against its recorded checksum; 0, or -1 with err set. */
+static int segment_verify(const Output *o, int k, char *err, size_t errlen)
+{
+    char path[1100];
+    segment_path(o, k, 0, path, sizeof path);
+    uint64_t sum;
+    if (file_checksum(path, &sum)) {
+        snprintf(err, errlen, "trajectory segment %s is missing or unreadable", path);
+        return -1;
+    }
+    if (sum != o->seg_sum[k]) {
+        snprintf(err, errlen, "trajectory segment %s does not match its checksum (written %016llx, now "
+                 "%016llx): the file changed after it was closed", path, (unsigned long long)o->seg_sum[k],
+                 (unsigned long long)sum);
+        return -1;
+    }
+    return 0;
+}
+
+static int seg_sum_room(Output *o, int n)
+{
+    if (n <= o->seg_cap) return 0;
+    const int cap = n + n / 2 + 16;
+    uint64_t *p = realloc(o->seg_sum, (size_t)cap * sizeof *p);
+    if (!p) return -1;
+    o->seg_sum = p;
+    o->seg_cap = cap;
+    return 0;
+}
+
 int output_segment_commit(Output *o)
 {
     if (!o->segmented || o->seg_file < 0) return 0;
@@ -394,6 +447,8 @@ int output_segment_commit(Output *o)
     segment_path(o, o->nseg, 0, path, sizeof path);
     if (c < 0) { unlink(part); return -1; }
     fsync_path(part, 0);
+    /* the checksum of the bytes as closed: a resume and the final assembly compare it */
+    if (seg_sum_room(o, o->nseg + 1) || file_checksum(part, &o->seg_sum[o->nseg])) return -1;
     if (rename(part, path)) return -1;
     fsync_path(o->dir, 1);
     o->nseg++;
@@ -434,7 +489,7 @@ static long long segment_frames(const char *path)
     return n;
 }
 
-int output_segments_resume(Output *o, int nseg, long long frames, char *err, size_t errlen)
+int output_segments_resume(Output *o, int nseg, long long frames, const uint64_t *sums, char *err, size_t errlen)
 {
     if (!o->segmented) return 0;
     /* segments written after the checkpoint (and any partial one) are stale */
@@ -452,10 +507,16 @@ int output_segments_resume(Output *o, int nseg, long long frames, char *err, siz
         }
         closedir(dp);
     }
+    if (seg_sum_room(o, nseg)) { snprintf(err, errlen, "out of memory"); return -1; }
+    for (int k = 0; k < nseg; k++) o->seg_sum[k] = sums[k];
     long long total = 0;
     for (int k = 0; k < nseg; k++) {
         char path[1100];
         segment_path(o, k, 0, path, sizeof path);
+        if (access(path, F_OK) == 0 && segment_verify(o, k, err, errlen)) {
+            snprintf(err + strlen(err), errlen - strlen(err), "; delete %s/checkpoint.dpd to start afresh", o->dir);
+            return -1;
+        }
         const long long n = segment_frames(path);
         if (n < 0) {
             snprintf(err, errlen, "trajectory segment %s of the checkpoint is missing or unreadable; "
@@ -474,10 +535,12 @@ int output_segments_resume(Output *o, int nseg, long long frames, char *err, siz
     return 0;
 }
 
-int output_segments_merge(Output *o, const System *s)
+int output_segments_merge(Output *o, const System *s, char *err, size_t errlen)
 {
     if (!o->segmented) return 0;
-    if (output_segment_commit(o)) return -1;
+    if (output_segment_commit(o)) { snprintf(err, errlen, "closing the last trajectory segment failed (disk full?)"); return -1; }
+    for (int k = 0; k < o->nseg; k++)
+        if (segment_verify(o, k, err, errlen)) return -1;
     const int n = s->n, dim = s->box.dim;
     double *buf = malloc((3 * (size_t)n + 9) * sizeof(double));   /* a frame, or the 3 x 3 edges */
     int *ib = malloc(3 * (size_t)n * sizeof(int) + 1);
@@ -506,7 +569,11 @@ int output_segments_merge(Output *o, const System *s)
         H5Fclose(f);
     }
     free(buf); free(ib);
-    return rc || at != o->frames ? -1 : 0;
+    if (rc || at != o->frames) {
+        snprintf(err, errlen, "copying the trajectory segments into run.h5 failed (disk full?)");
+        return -1;
+    }
+    return 0;
 }
 
 void output_segments_remove(Output *o)
@@ -520,6 +587,9 @@ void output_segments_remove(Output *o)
 
 int output_close(Output *o, int complete)
 {
+    free(o->seg_sum);
+    o->seg_sum = NULL;
+    o->seg_cap = 0;
     if (o->traj_on) traj_close(o->traj);
     if (o->seg_file >= 0) { traj_close(o->seg); H5Fclose(o->seg_file); o->seg_file = -1; }
     if (o->segmented) {   /* a failed run: its open segment is no part of any checkpoint */
@@ -532,6 +602,39 @@ int output_close(Output *o, int complete)
     int fd = open(o->tmp_path, O_RDONLY);
     if (fd >= 0) { fsync(fd); close(fd); }
     return rename(o->tmp_path, o->path);
+}
+
+/* Every file a complete run leaves (run_output.c, the modules' tables): a new run removes them
+ * before its first step, so that a run that then fails leaves no part of an older result beside
+ * its INCOMPLETE (tests/io_errors.sh runs scenes with every table and checks that none is left). */
+static const char *const RESULT_FILES[] = {
+    "summary.tsv", "provenance.tsv", "run.h5",
+    "profile.tsv", "profile_blocks.tsv", "com.tsv", "rdf.tsv", "msd.tsv",                /* measure.c */
+    "around.tsv", "density_map.tsv", "force_map.tsv",                                     /* measure_field.c */
+    "tcaf.tsv", "tcaf_eta.tsv", "tcaf_extrapolation.tsv",                                 /* tcaf.c */
+    "colloid_around.tsv", "colloid_rdf.tsv", "colloid_msd.tsv",                           /* bonds.c */
+    "solver.tsv"};                                                                        /* overdamped.c */
+
+int output_remove_results(const char *dir)
+{
+    int bad = 0;
+    for (size_t k = 0; k < sizeof RESULT_FILES / sizeof RESULT_FILES[0]; k++) {
+        char path[1100];
+        snprintf(path, sizeof path, "%s/%s", dir, RESULT_FILES[k]);
+        if (unlink(path) && errno != ENOENT) bad = 1;
+    }
+    if (!bad) fsync_path(dir, 1);
+    return bad ? -1 : 0;
+}
+
+int output_write_tables(const char *dir, const Tables *ts, const char **failed)
+{
+    for (int k = 0; k < ts->n; k++)
+        if (write_file_atomic(dir, ts->t[k]->name, ts->t[k]->text ? ts->t[k]->text : "", ts->t[k]->len)) {
+            *failed = ts->t[k]->name;
+            return -1;
+        }
+    return 0;
 }
 
 int write_file_atomic(const char *dir, const char *name, const char *text, size_t len)

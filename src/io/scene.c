@@ -5,7 +5,17 @@
 #include <stdarg.h>
 #include <math.h>
 #include <ctype.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <sys/stat.h>
 #include "scene.h"
+
+/* The largest scene file or @include read (the largest scene of the package has 4.5 kB;
+ * a list of positions for 1e5 particles some 4 MB). */
+#define SCENE_MAX_BYTES (16L << 20)
+/* libconfig's own limit of nested @include files (scanctx.h, MAX_INCLUDE_DEPTH) */
+#define SCENE_MAX_INCLUDE_DEPTH 10
 
 static char READ_MARK;
 
@@ -472,42 +482,159 @@ static int apply_override(Scene *sc, const char *spec)
     return rc;
 }
 
+/* What a file that is no regular file is, in words. */
+static const char *file_kind(mode_t m)
+{
+    return S_ISDIR(m) ? "a directory" : S_ISCHR(m) ? "a character device" : S_ISBLK(m) ? "a block device"
+         : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket" : "not a regular file";
+}
+
+/* The bytes of a scene file or an @include, NUL-terminated (malloc'd), or NULL with `why`
+ * ("'PATH' is a directory, ..."). Only a regular file of at most SCENE_MAX_BYTES is read, and
+ * it is opened without waiting: libconfig ends the process on a read error (a directory:
+ * "input in flex scanner failed"), reads /dev/zero for ever, and a FIFO would block the open. */
+static char *read_scene_file(const char *path, size_t *len, char *why, size_t whylen)
+{
+    const int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        snprintf(why, whylen, "'%s': cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    struct stat st;
+    char *buf = NULL;
+    if (fstat(fd, &st)) {
+        snprintf(why, whylen, "'%s': cannot stat: %s", path, strerror(errno));
+    } else if (!S_ISREG(st.st_mode)) {
+        snprintf(why, whylen, "'%s' is %s, not a regular file (a scene is a text file)", path, file_kind(st.st_mode));
+    } else if (st.st_size > SCENE_MAX_BYTES) {
+        snprintf(why, whylen, "'%s' has %lld bytes; a scene file may have at most %ld (16 MiB)", path,
+                 (long long)st.st_size, SCENE_MAX_BYTES);
+    } else if (!(buf = malloc((size_t)st.st_size + 1))) {
+        snprintf(why, whylen, "'%s': out of memory", path);
+    } else {
+        size_t got = 0;
+        ssize_t r = 1;
+        while (got < (size_t)st.st_size && (r = read(fd, buf + got, (size_t)st.st_size - got)) > 0) got += (size_t)r;
+        if (r < 0) {
+            snprintf(why, whylen, "'%s': cannot read: %s", path, strerror(errno));
+            free(buf);
+            buf = NULL;
+        } else {
+            buf[got] = '\0';   /* a file that shrank meanwhile: what was there */
+            *len = got;
+        }
+    }
+    close(fd);
+    return buf;
+}
+
+/* A NUL byte would end a string where libconfig reads it (a name "w\0x" becomes "w"):
+ * the line of the first one (0: none). */
+static int nul_line(const char *t, size_t len, size_t *at)
+{
+    const char *nul = memchr(t, '\0', len);
+    if (!nul) return 0;
+    int line = 1;
+    for (const char *p = t; p < nul; p++) line += *p == '\n';
+    *at = (size_t)(nul - t);
+    return line;
+}
+
+/* The @include directives of a scene text as libconfig 1.5's scanner finds them (a line
+ * that starts with optional blanks, then @include, blanks and a quoted file name; not
+ * inside a comment or a string), each read with read_scene_file and checked in turn,
+ * before libconfig opens it. 0, or -1 with sc->error naming the file and line. */
+static int check_includes(Scene *sc, const char *file, const char *t, int depth)
+{
+    int line = 1, at_start = 1, block = 0, str = 0;
+    for (const char *p = t; *p; p++) {
+        if (*p == '\n') { line++; at_start = 1; continue; }
+        if (block) { if (p[0] == '*' && p[1] == '/') { block = 0; p++; } continue; }
+        if (str) { if (*p == '\\' && p[1]) p++; else if (*p == '"') str = 0; continue; }
+        if (*p == ' ' || *p == '\t') continue;
+        const int first = at_start;
+        at_start = 0;
+        if (*p == '#' || (p[0] == '/' && p[1] == '/')) { while (p[1] && p[1] != '\n') p++; continue; }
+        if (p[0] == '/' && p[1] == '*') { block = 1; p++; continue; }
+        if (*p == '"') { str = 1; continue; }
+        if (!first || strncmp(p, "@include", 8) || (p[8] != ' ' && p[8] != '\t')) continue;
+        const char *q = p + 8;
+        while (*q == ' ' || *q == '\t') q++;
+        if (*q != '"') continue;   /* libconfig's syntax error */
+        char path[1024];
+        size_t n = 0;
+        for (q++; *q && *q != '"' && *q != '\n'; q++) {
+            char c = *q;
+            if (c == '\\' && q[1]) {
+                q++;
+                c = *q == 'n' ? '\n' : *q == 't' ? '\t' : *q == 'r' ? '\r' : *q == 'f' ? '\f' : *q;
+            }
+            if (n + 1 < sizeof path) path[n++] = c;
+        }
+        path[n] = '\0';
+        p = *q ? q : q - 1;   /* on to the end of the directive */
+        if (depth >= SCENE_MAX_INCLUDE_DEPTH) continue;   /* libconfig: "include file nesting too deep" */
+        char why[1400];
+        size_t len = 0, nul_at = 0;
+        char *inc = read_scene_file(path, &len, why, sizeof why);
+        if (!inc) {
+            snprintf(sc->error, sizeof sc->error, "%s:%d: @include %s", file, line, why);
+            return -1;
+        }
+        const int nl = nul_line(inc, len, &nul_at);
+        int rc = 0;
+        if (nl) {
+            snprintf(sc->error, sizeof sc->error, "%s:%d: @include '%s': line %d has a NUL byte (at byte %zu): "
+                     "a scene is text, and a string would end there; remove it", file, line, path, nl, nul_at);
+            rc = -1;
+        } else rc = check_includes(sc, path, inc, depth + 1);
+        free(inc);
+        if (rc) return -1;
+    }
+    return 0;
+}
+
 int scene_load(Scene *sc, const char *file, char *const *overrides, int noverrides)
 {
     memset(sc, 0, sizeof *sc);
     snprintf(sc->file, sizeof sc->file, "%s", file);
     config_init(&sc->cfg);
-    FILE *fp = fopen(file, "r");
-    if (!fp) {
-        snprintf(sc->error, sizeof sc->error, "%s: cannot open the scene file", file);
+    /* the scene and its includes are checked first; libconfig parses the bytes checked */
+    char why[1400];
+    size_t rawlen = 0, nul_at = 0;
+    char *raw = read_scene_file(file, &rawlen, why, sizeof why);
+    if (!raw) {
+        snprintf(sc->error, sizeof sc->error, "the scene %s", why);
         sc->failed = 1;
         return -1;
     }
-    /* the raw text, for the checks libconfig does not make */
-    char *raw = NULL;
-    size_t rawlen = 0;
-    FILE *m = open_memstream(&raw, &rawlen);
-    if (m) {
-        char chunk[4096];
-        size_t got;
-        while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) fwrite(chunk, 1, got, m);
-        fclose(m);
-        rewind(fp);
+    const int nl = nul_line(raw, rawlen, &nul_at);
+    if (nl) {
+        snprintf(sc->error, sizeof sc->error, "%s:%d: a NUL byte (at byte %zu): a scene is text, and a string "
+                 "would end there; remove it", file, nl, nul_at);
+        free(raw);
+        sc->failed = 1;
+        return -1;
     }
     char lit[64];
-    const int bad_line = raw ? int_overflow_line(raw, lit, sizeof lit) : 0;
-    free(raw);
+    const int bad_line = int_overflow_line(raw, lit, sizeof lit);
     if (bad_line) {
         snprintf(sc->error, sizeof sc->error, "%s:%d: integer %s does not fit in 32 bits; allowed "
                  "-2147483648 to 2147483647, or append L for a 64-bit integer (e.g. %sL)", file, bad_line, lit, lit);
-        fclose(fp);
+        free(raw);
         sc->failed = 1;
         return -1;
     }
-    int ok = config_read(&sc->cfg, fp);
-    fclose(fp);
+    if (check_includes(sc, file, raw, 0)) {
+        free(raw);
+        sc->failed = 1;
+        return -1;
+    }
+    const int ok = config_read_string(&sc->cfg, raw);
+    free(raw);
     if (!ok) {
-        snprintf(sc->error, sizeof sc->error, "%s:%d: %s", file,
+        const char *in = config_error_file(&sc->cfg);
+        snprintf(sc->error, sizeof sc->error, "%s:%d: %s", in ? in : file,
                  config_error_line(&sc->cfg), config_error_text(&sc->cfg));
         sc->failed = 1;
         return -1;

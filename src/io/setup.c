@@ -342,7 +342,13 @@ int setup_from_scene(Scene *sc, System *s, Measure *m, RunConfig *rc)
     if (scene_int(sc, NULL, "steps", &rc->steps, 0, 0, 1000000000000LL, 1) < 0) return -1;
     if (scene_int(sc, NULL, "equilibration", &rc->equilibration, 0, 0, 1000000000000LL, 0) < 0) return -1;
     if (scene_double(sc, NULL, "skin", &rc->skin, 0.3, 0.0, 10.0, 0) < 0) return -1;
-    if (scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0) < 0) return -1;
+    /* the blow-up guard (stability.c): by default the thermal temperature (velocities relative to
+     * the local flow) at most DEFAULT_MAX_THERMAL_RATIO x kBT, and the whole system's kinetic
+     * temperature at most 100 x kBT; a scene that sets max_temperature_ratio chooses the
+     * whole system's kinetic temperature alone (the stability map's criterion) */
+    const int set_ratio = scene_double(sc, NULL, "max_temperature_ratio", &rc->max_temperature_ratio, 100.0, 1.0, 1e12, 0);
+    if (set_ratio < 0) return -1;
+    rc->max_thermal_ratio = set_ratio ? 0.0 : DEFAULT_MAX_THERMAL_RATIO;
     if (scene_bool(sc, NULL, "walls_start_at_production", &rc->walls_start_at_production, 0) < 0) return -1;
     if (scene_bool(sc, NULL, "rotation", &s->rotation, 0) < 0) return -1;
     /* the spins and the shear noise are 3-vectors: in 2D they push particles out of the plane */

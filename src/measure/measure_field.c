@@ -137,7 +137,10 @@ static int write_around(const FieldMeasure *f, const System *s, FILE *summary, c
     const AroundHist a = {.hist = f->around_hist, .samples = f->around_samples, .nblocks = f->nblocks,
                           .bins = f->p.around.bins, .dim = s->box.dim, .dq = f->p.around.dq,
                           .density = f->around_density, .threshold = f->p.around.threshold};
-    return around_write(&a, path, summary, "exclusion_radius");
+    FILE *out = fopen(path, "w");
+    if (!out) return -1;
+    const int bad = around_write(&a, out, summary, "exclusion_radius");
+    return fclose(out) || bad ? -1 : 0;
 }
 
 static int write_density_map(const FieldMeasure *f, const System *s, const char *dir)

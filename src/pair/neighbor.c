@@ -3,6 +3,7 @@
 #include <string.h>
 #include <math.h>
 #include <stdint.h>
+#include <limits.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -24,6 +25,13 @@ static int cell_index(const NeighborList *nl, const double *x)
     return c[0] + nl->nc[0] * (c[2] + nl->nc[2] * c[1]);
 }
 
+/* The number of cells; at most NEIGHBOR_MAX_CELLS (neighbor_init), so that it and every
+ * cell index fit the int arrays of the list. */
+static size_t cell_count(const NeighborList *nl)
+{
+    return (size_t)nl->nc[0] * (size_t)nl->nc[1] * (size_t)nl->nc[2];
+}
+
 int neighbor_init(NeighborList *nl, const System *s, double skin)
 {
     memset(nl, 0, sizeof *nl);
@@ -38,9 +46,17 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
     const int R = CELLS_PER_CUTOFF;
     nl->per_cutoff = R;
     nl->brute_force = 0;
+    /* the cells are counted in size_t: a box of 2000^3 at a cutoff of 1.3 has 3.6e9 of them,
+     * beyond the int indices of the cell list (cell_start, cell_of), which the caller reports */
+    size_t ncells = 1;
     for (int d = 0; d < 3; d++) {
         if (d >= b->dim) { nl->nc[d] = 1; nl->cw[d] = 1.0; continue; }
-        nl->nc[d] = (int)floor(b->L[d] * R / nl->cutoff);
+        const double q = floor(b->L[d] * R / nl->cutoff);
+        if (!(q <= (double)NEIGHBOR_MAX_CELLS) || (ncells *= (size_t)(q > 1.0 ? q : 1.0)) > NEIGHBOR_MAX_CELLS) {
+            memset(nl, 0, sizeof *nl);
+            return NEIGHBOR_TOO_MANY_CELLS;
+        }
+        nl->nc[d] = (int)q;
         if (nl->nc[d] < 2 * R + 1) nl->brute_force = 1;
         nl->cw[d] = b->L[d] / (nl->nc[d] > 0 ? nl->nc[d] : 1);
     }
@@ -48,9 +64,9 @@ int neighbor_init(NeighborList *nl, const System *s, double skin)
     if (b->shear_rate != 0.0 && nl->nc[0] < 2 * R + 2) nl->brute_force = 1;
     if (nl->brute_force)
         for (int d = 0; d < 3; d++) { nl->nc[d] = 1; nl->cw[d] = d < b->dim ? b->L[d] : 1.0; }
-    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
+    const size_t ncell = cell_count(nl);
     const size_t n = (size_t)s->n;
-    nl->cell_start = calloc((size_t)ncell + 1, sizeof(int));
+    nl->cell_start = calloc(ncell + 1, sizeof(int));
     nl->cell_of = calloc(n + 1, sizeof(int));
     nl->perm = calloc(n + 1, sizeof(int));
     nl->start = calloc(n + 1, sizeof(int));
@@ -93,7 +109,7 @@ static int first_cell_at(const NeighborList *nl, int ncell, int k)
 
 static int sort_by_cell(NeighborList *nl, System *s)
 {
-    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2], n = s->n;
+    const int ncell = (int)cell_count(nl), n = s->n;
     int maxth = 1;
 #ifdef _OPENMP
     maxth = omp_get_max_threads();
@@ -211,7 +227,7 @@ static int stencil_segments(const NeighborList *nl, const Box *b, int c, Segment
  * (stencil_segments' integer arithmetic per cell was 3 % of a run). */
 static int stencil_templates(NeighborList *nl, const Box *b)
 {
-    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
+    const int ncell = (int)cell_count(nl);
     nl->tmpl_start = malloc(((size_t)ncell + 1) * sizeof(int));
     if (!nl->tmpl_start) return -1;
     Segment seg[MAX_SEGMENTS], *all = NULL;
@@ -486,7 +502,7 @@ int neighbor_build(NeighborList *nl, System *s)
     if (!nl->brute_force && s->box.shear_rate == 0.0 && !nl->tmpl_start && stencil_templates(nl, &s->box)) return -1;
     /* sorted: the particles of cell c are cell_start[c] .. cell_start[c + 1] - 1
      * (the cells cell_index gives them; no second pass of divisions) */
-    const int ncell = nl->nc[0] * nl->nc[1] * nl->nc[2];
+    const int ncell = (int)cell_count(nl);
     #pragma omp parallel for schedule(static)
     for (int c = 0; c < ncell; c++)
         for (int k = nl->cell_start[c]; k < nl->cell_start[c + 1]; k++) nl->cell_of[k] = c;

@@ -7,6 +7,7 @@
 #define DPD_NEIGHBOR_H
 
 #include <stddef.h>
+#include <limits.h>
 #include "system.h"
 
 #define NL_MAX_THREADS 64   /* threads of the counting sort */
@@ -39,6 +40,12 @@ typedef struct {
     int nchunks_used;
 } NeighborList;
 
+/* The most cells a list has (its cell indices are int). */
+#define NEIGHBOR_MAX_CELLS ((size_t)INT_MAX - 1)
+/* neighbor_init's status for a box with more cells of side >= cutoff than that. */
+#define NEIGHBOR_TOO_MANY_CELLS (-2)
+
+/* 0, -1 (out of memory) or NEIGHBOR_TOO_MANY_CELLS. */
 int  neighbor_init(NeighborList *nl, const System *s, double skin);
 void neighbor_free(NeighborList *nl);
 /* Rebuild if needed (returns 1 if it rebuilt; particles may be reordered). */
