@@ -468,8 +468,10 @@ local CLAIMS_CAPTION = 'The paper\'s number as the paper prints it; ours ± its 
 -- tier and CPU-hours on its first row, and a link to its section
 local function claims_summary(ids)
     claim_groups('')    -- the groups of every experiment checked, whether it has results or not
-    local out = { '', '| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |',
-                  '|:---|:---|:---|:---|:---|:---|:---|:---|---:|' }
+    -- the separator's dashes set the columns' relative widths (pandoc: a pipe table wider than a line)
+    local out = { '', '::: {.claims-table}', '', '| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |',
+                  '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(27) .. '|:' .. ('-'):rep(8) .. '|:' .. ('-'):rep(15)
+                  .. '|:' .. ('-'):rep(8) .. '|:' .. ('-'):rep(10) .. '|:' .. ('-'):rep(6) .. '|:' .. ('-'):rep(7) .. '|' .. ('-'):rep(7) .. ':|' }
     for _, id in ipairs(ids) do
         local v = verdict_of(id)
         local name = sections[id] and string.format('[`%s`](#%s)', id, anchor_of(id)) or '`' .. id .. '`'
@@ -488,6 +490,8 @@ local function claims_summary(ids)
     out[#out + 1] = ''
     out[#out + 1] = ': Every claim of every experiment, by claim group (experiments/P/E/claims.tsv), from the tier shown. '
         .. CLAIMS_CAPTION .. ' Gates: the set-up checks passed of all (a gate that does not pass makes the result invalid).'
+    out[#out + 1] = ''
+    out[#out + 1] = ':::'
     out[#out + 1] = ''
     return table.concat(out, '\n') .. '\n'
 end
@@ -510,13 +514,16 @@ local function claims_block(ph, arg)
     if v.tier == '-' then return problem(ph, 'no results for ' .. id) end
     local rows = group_rows(id, v.tier)
     if #rows == 0 then return '\n*No claims at the ' .. v.tier .. ' tier.*\n\n' end
-    local out = { '', '| claim | paper | ours | band | outcome |', '|:---|:---|:---|:---|:---|' }
+    local out = { '', '::: {.claims-table}', '', '| claim | paper | ours | band | outcome |',
+                  '|:' .. ('-'):rep(40) .. '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(22) .. '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(14) .. '|' }
     for _, r in ipairs(rows) do
         out[#out + 1] = string.format('| **%s**: %s | %s | %s | %s | %s |', md_text(r.name), md_text(r.statement), md_text(r.paper),
             r.ours, r.band, r.outcome)
     end
     out[#out + 1] = ''
     out[#out + 1] = ': `' .. id .. '`: its claims by group, ' .. v.tier .. ' tier. ' .. CLAIMS_CAPTION
+    out[#out + 1] = ''
+    out[#out + 1] = ':::'
     out[#out + 1] = ''
     return table.concat(out, '\n') .. '\n'
 end
