@@ -26,6 +26,10 @@ BANDS_HEADER=$(tab quantity tier kind lo hi k_sigma resolution paper source expe
 mkexp() { # mkexp ID ; bands rows on stdin (TSV: quantity tier kind lo hi k_sigma resolution paper source [expect])
     mkdir -p "$root/experiments/$1"
     { echo "$BANDS_HEADER"; cat; } > "$root/experiments/$1/bands.tsv"
+    # its claims in one group (claims.tsv; tests below write their own)
+    if awk -F'\t' 'NR > 1 && $3 == "claim" { f = 1 } END { exit !f }' "$root/experiments/$1/bands.tsv"; then
+        { tab group quantities statement paper; tab all . 'every claim of the fixture' '-'; } > "$root/experiments/$1/claims.tsv"
+    fi
 }
 mkres() { # mkres ID TIER CPU ; summary rows on stdin
     local d="$root/results/$1/$2"
@@ -48,6 +52,8 @@ mkres x/y paper 4321.5 <<EOF2
 $(tab eta 30.9 0.3)
 $(tab ratio 3.71 0)
 EOF2
+{ tab group quantities statement paper; tab eta '^eta$' 'eta, "close to the input"' '29.08'
+  tab ratio '^ratio$' 'the ratio' '3.65'; } > "$root/experiments/x/y/claims.tsv"
 mkexp x/out  <<< "$(tab q quick claim 1 2 - - 1.5 fixture)"
 mkres x/out quick 2 <<< "$(tab q 5.5 0.1)"
 mkexp x/miss <<EOF2
@@ -173,9 +179,13 @@ CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
 
 Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
 
+Formats: {{x/y:eta:%.1f}}; {{x/y:ratio:%.3f}}; {{x/y@quick:eta:%.0f}}; hours {{cpu-h:x/y}}; total {{cpu:x/y+x/out}} s, {{cpu-h:x/y@paper+x/paperonly}} h.
+
 Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
 
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
+
+## pan-2008/calc: expressions, kept for the sections of pan-2008
 
 Calc: {{calc:%.1f:[x/y:eta]/[x/y:eta:se]}}; {{calc:%.3g:[tsv:data/t.tsv:0.4940:eta_r]*2}}; {{calc:%.2f:[x/y@quick:eta]-29}}; {{calc:%.0f:sqrt(16)+(2^3)}}.
 
@@ -184,6 +194,18 @@ Bench: {{bench:rot.tsv:cost ratio:value}}; {{bench:none.tsv:cost ratio:value}}; 
 Quick: {{x/paperonly@quick:q}}; committed {{x/paperonly:q}}.
 
 <!-- table: x/y/rows.tsv -->
+
+## x/y: the fixture experiment as a card
+
+<!-- verdict: x/y -->
+
+<!-- claims: x/y -->
+
+## x/rule: a card of one group of six rows
+
+<!-- verdict: x/rule -->
+
+<!-- claims: x/rule -->
 
 # Environment
 
@@ -258,6 +280,54 @@ has "check --verdicts: regression references do not count" '^x/reg	quick	unresol
 has "check --verdicts: unresolved" '^x/wide	quick	unresolved	0	0	1	0	1	1	'
 has "check --verdicts: not run" '^x/nores	-	not run	'
 has "check --verdicts: bad bands" '^x/badrow	quick	bad bands	'
+# claim groups (claims.tsv, lib/groups.awk): every claim row in exactly one group; a tree of its own,
+# as a broken claims.tsv stops the paper filter
+GR="$root/groups"
+mkg() { # mkg ID ; claims.tsv rows (group quantities statement paper) on stdin, bands of three claims and a gate
+    mkdir -p "$GR/experiments/$1"
+    { echo "$BANDS_HEADER"; tab eta_a1 paper claim 1 2 - - 1.5 f; tab eta_a2 quick claim 1 2 - - 1.5 f
+      tab k_eff paper claim 0 1 - - 0.5 f; tab temp paper gate 0.9 1.1 - - 1 'a gate is in no group'; } > "$GR/experiments/$1/bands.tsv"
+    { tab group quantities statement paper; cat; } > "$GR/experiments/$1/claims.tsv"
+}
+mkg g/ok <<EOF2
+$(tab eta '^eta_a' 'the eta column' '1.5')
+$(tab k_eff '^k_eff$' 'the k_eff column' '0.5')
+EOF2
+T "check --groups: every claim (of every tier) in exactly one group" 0 env DPD_ROOT="$GR" "$C" --groups
+has "check --groups: counts" '^g/ok: ok, 3 claim quantities in 2 groups$'
+T "check --groups --tsv: the group of every claim quantity" 0 env DPD_ROOT="$GR" "$C" --groups --tsv
+has "check --groups --tsv: a row per quantity" '^g/ok	eta_a2	1	eta$'
+lacks "check --groups --tsv: no gate" 'temp'
+mkg g/none <<< "$(tab eta '^eta_a' 'eta' '1.5')"
+mkg g/two <<EOF2
+$(tab eta '^eta' 'eta' '1.5')
+$(tab all '.' 'all' '-')
+EOF2
+mkg g/empty <<EOF2
+$(tab eta '^eta_a' 'eta' '1.5')
+$(tab k '^k_eff$' 'k' '0.5')
+$(tab ghost '^nonesuch' 'no such claim' '-')
+EOF2
+mkg g/malformed <<EOF2
+$(tab eta '^eta_a' 'eta')
+$(tab k '^k_eff$' 'k' '0.5')
+$(tab k '^k' 'k again' '0.5')
+EOF2
+mkdir -p "$GR/experiments/g/noclaims"; cp "$GR/experiments/g/ok/bands.tsv" "$GR/experiments/g/noclaims/"
+T "check --groups: a claim in no group, in two, an empty group, a malformed or missing claims.tsv fail" 1 env DPD_ROOT="$GR" "$C" --groups
+has "check --groups: a claim in no group" '^g/none: claim k_eff belongs to no group of claims.tsv$'
+has "check --groups: a claim in two groups" "^g/two: claim eta_a1 belongs to 2 groups: 'eta', 'all'$"
+has "check --groups: a group that matches nothing" "^g/empty: claims.tsv line 4: group 'ghost' (^nonesuch) matches no claim quantity$"
+has "check --groups: a row without four fields" '^g/malformed: claims.tsv line 2: expected 4 non-empty'
+has "check --groups: a group named twice" "^g/malformed: claims.tsv line 4: group 'k' is named twice$"
+has "check --groups: no claims.tsv" '^g/noclaims: bands.tsv has 3 claim quantities but there is no claims.tsv'
+has "check --groups: the good one still ok" '^g/ok: ok'
+has "check --groups: the verdict line" '^groups: FAILED'
+T "check --groups on one experiment" 0 env DPD_ROOT="$GR" "$C" --groups g/ok
+printf '%s\n' '# S' '' '<!-- summary-table -->' > "$GR/s.md"
+if MKPAPER_ALLOW_MISSING= DPD_ROOT="$GR" "$tools/render-paper" -i "$GR/s.md" -o "$GR/x.md" > "$root/out" 2>&1; then
+    bad "paper-filter: broken claim groups stop the paper" "$root/out"
+else has "paper-filter: broken claim groups stop the paper, named" 'tools/check --groups'; fi
 
 # ---------------------------------------------------------------- the paper filter
 # M [-i IN] [-o OUT.md]: tools/render-paper's markdown output of the filter (default OUT: $G),
@@ -312,6 +382,25 @@ if [ -f "$G" ]; then
     in_file "paper-filter: calc of a tsv cell" "$G" '; 10.3; '
     in_file "paper-filter: calc from a pinned quick tier, marked" "$G" '; 0.32 (quick tier); '
     in_file "paper-filter: calc with sqrt and powers" "$G" '; 12\.$'
+    in_file "paper-filter: a value in a printf format, its stderr after it" "$G" '^Formats: 30.9 +- 0.3; '
+    in_file "paper-filter: a value in a format, no stderr of zero" "$G" '; 3.710; '
+    in_file "paper-filter: a formatted value of a pinned tier, marked" "$G" '; 29 +- 0.25 (quick tier); '
+    # 4321.5 s = 1.20 h; 4321.5 + 2 (quick) = 4323.5; 4321.5 + 7 = 4328.5 s = 1.20 h
+    in_file "paper-filter: CPU-hours" "$G" '; hours 1.2; '
+    in_file "paper-filter: CPU of several experiments summed, a tier other than paper marked" "$G" '; total 4324 (quick tier) s, 1.2 h\.$'
+    in_file "paper-filter: one sentence per paper from the verdicts" "$G" '^- \*\*x\*\*: 2 of 13 experiments reproduce (\[Re\]), 1 in part (\[~Re\]), 2 not (\[¬Re\]), 2 undecided (unresolved), 1 invalid (a gate does not pass), 2 not run, 1 not yet built, '
+    in_file "paper-filter: the summary's claims table" "$G" '^| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |$'
+    in_file "paper-filter: a claim group's row, the experiment linked to its section, its verdict coloured" "$G" \
+        '^| \[`x/y`\](#exp-x-y) \[\[Re\]\]{\.verdict \.pass} | \*\*eta\*\*: eta, "close to the input" | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | \[PASS\]{\.outcome \.pass} | none | paper | 1.2 |$'
+    in_file "paper-filter: the next group of the experiment on a row of its own" "$G" '^| | \*\*ratio\*\*: the ratio | 3.65 | 3.71 ± 0 | \[3, inf\] | \[PASS\]{\.outcome \.pass} | | | |$'
+    in_file "paper-filter: a group of several rows: its counts and its worst row" "$G" \
+        '^| \[`x/rule`\](#exp-x-rule) \[\[~Re\]\]{\.verdict \.partial} | \*\*all\*\*: every claim of the fixture | - | worst of 6: `out` 2.3 ± 0.1 | \[1, 2\] | \[2 PASS\]{\.outcome \.pass} \[1 FAIL\]{\.outcome \.fail} \[3 UNRESOLVED\]{\.outcome \.unresolved} | none | quick |'
+    in_file "paper-filter: a gate that does not pass: invalid in the gates column" "$G" '^| `x/gates` \[invalid\]{\.verdict \.fail} | .* | \*\*invalid\*\* (2 / 3) | quick |'
+    in_file "paper-filter: an experiment not run: one row" "$G" '^| `x/nores` \[not run\]{\.verdict \.other} | - | - | - | - | - | - | - | - |$'
+    in_file "paper-filter: the section's heading gets the anchor" "$G" '^## x/y: the fixture experiment as a card {#exp-x-y}$'
+    in_file "paper-filter: a card's verdict line" "$G" '^\*\*Verdict:\*\* \[\[Re\]\]{\.verdict \.pass} (paper tier; claims 2 pass, 0 fail, 0 unresolved; gates none; 1.2 CPU-hours)$'
+    in_file "paper-filter: a card's claims table" "$G" '^| \*\*eta\*\*: eta, "close to the input" | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | \[PASS\]{\.outcome \.pass} |$'
+    in_file "paper-filter: a card's group of several rows" "$G" '^| \*\*all\*\*: every claim of the fixture | - | worst of 6: `out` 2.3 ± 0.1 | \[1, 2\] | \[2 PASS\]{\.outcome \.pass} \[1 FAIL\]{\.outcome \.fail} \[3 UNRESOLVED\]{\.outcome \.unresolved} |$'
     in_file "paper-filter: bench cell with its date and commit" "$G" '^Bench: 1.81 (`make bench` 2026-01-01, abc1234); '
     in_file "paper-filter: bench file absent: not measured" "$G" '; not measured (run `make bench`); '
     in_file "paper-filter: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
@@ -373,6 +462,13 @@ printf '# A\n\ntext\n## B glued\n' > "$root/glued.md"
 T "render-paper: a heading without a blank line before it fails" 1 "$tools/render-paper" -i "$root/glued.md" -o "$root/build/glued.html"
 has "render-paper: names the line" 'glued.md:4: ## B glued'
 
+# {{calc:}} only in the sections of pan-2008 (issue 40 item 7)
+printf '%s\n' '# A' '' 'a {{calc:%.1f:1+1}}' '' '## pan-2008/x: kept' '' 'b {{calc:%.1f:1+1}}' '' '## other/x: not' '' 'c {{calc:%.1f:2}}' > "$root/calcout.md"
+T "render-paper: {{calc:}} outside pan-2008's sections fails" 1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
+has "render-paper: names the first" 'calcout.md:3: a {{calc'
+has "render-paper: names the last" 'calcout.md:11: c {{calc'
+lacks "render-paper: not the one in pan-2008's section" 'calcout.md:7'
+
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
 rm -f "$G"
@@ -399,7 +495,7 @@ printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
     'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
-    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' \
+    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' '' '## pan-2008/bad: calc' '' \
     'm {{calc:%.1f:[x/y:nonesuch]}} n {{calc:%.1f:system(1)}} o {{calc:%s:1}} p {{calc:%.1f:1/0}} q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
 T "paper-filter: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
 has "paper-filter: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
@@ -426,6 +522,8 @@ lacks "paper-filter: no quick-tier count without such placeholders" 'await the q
 # that quick tier is marked and counted, not an error; what is filled from it once it exists
 QM='\[---\]{\.quick-pending title="quick tier: run make figures"}'
 cat > "$root/quick.md" <<'EOF2'
+## pan-2008/quick: one section
+
 a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}} c {{diff:x/paperonly@quick:q-q_tol1e-10}} d {{sigmas:x/paperonly:q_tol1e-10-x/paperonly@quick#q}}.
 e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}} f {{calc:%.2f:[x/paperonly@quick:q]*2+[x/paperonly:q]}} g {{calc:%.2f:[tsv:results/x/paperonly/quick/cells.tsv:1:eta]/[x/y:eta]}}.
 h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
@@ -445,7 +543,7 @@ in_file "paper-filter: quick figure marked with its path and caption" "$QG" "^\\
 in_file "paper-filter: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
 # the notice: once per section that holds a mark (from its heading to the next), right after its heading
 n_notice=$(grep -c '^This section quotes quick-tier numbers' "$QG")
-if [ "$n_notice" = 1 ]; then ok "paper-filter: one notice for a document without headings"; else bad "paper-filter: notices without headings" "$n_notice in $QG"; fi
+if [ "$n_notice" = 1 ]; then ok "paper-filter: one notice for a document of one section"; else bad "paper-filter: notices in one section" "$n_notice in $QG"; fi
 printf '%s\n' '# A' '' 'a {{x/paperonly@quick:q}} and {{cpu:x/paperonly@quick}}.' '' 'b {{x/paperonly:q}}.' '' \
     '# B' '' 'c {{x/paperonly:q}}.' '' '## C' '' '<!-- figure: x/paperonly/plot-quick.png -->' '' '# D' '' \
     '| x | y |' '|---|---|' '| {{x/paperonly@quick:q}} | 1 |' > "$root/qsec.md"
@@ -459,7 +557,7 @@ T "paper-filter: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLO
 has "paper-filter: draft counts them" '^paper-filter: 10 placeholder(s) await the quick tier'
 if grep -q 'missing' "$QG"; then bad "paper-filter: draft calls a quick placeholder missing" "$QG"; else ok "paper-filter: draft does not call them missing"; fi
 # still errors: committed tiers, a quick tier that exists, an unknown experiment, a malformed expression
-printf '%s\n' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
+printf '%s\n' '## pan-2008/qbad: calc' '' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
     'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}} g {{calc:%.1f:[x/paperonly@quick:q]+[x/paperonly:nonesuch]}}' \
     'h {{calc:%.1f:[x/paperonly@quick:q]+system(1)}} i {{diff:x/paperonly@quick:q-x/nonesuch#q}} j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
     'k {{tsv:results/x/paperonly/paper/none.tsv:1:a}} l {{verdict:x/nores}}' \
@@ -514,6 +612,8 @@ rm -rf "$root/results/x/paperonly/quick" "$root/figures/x/paperonly"
 # {{calc:}}'s parser: precedence and associativity as awk's, functions, operands; the '*' and '^'
 # of expressions that the markdown reader pairs with each other or with the text around
 cat > "$root/calc.md" <<'EOF2'
+## pan-2008/calc: expressions
+
 c1 {{calc:%.0f:2^3^2}} c2 {{calc:%.0f:-2^2}} c3 {{calc:%.2f:2^-1}} c4 {{calc:%.0f:2+3*4-6/2}} c5 {{calc:%.3f:exp(log(2))+sqrt([x/y:eta]-[x/y:eta]+4)}} c6 {{calc:%.2f:-(1+2)*-[x/y:eta:se]}} c7 {{calc:%.0f: 1 + 2 }} c8 {{calc:%g:1e3/4}}.
 s1 {{calc:%.0f:[x/y:eta]*2}} and {{calc:%.0f:2*[x/y:eta]}} s2 {{calc:%.0f:[x/y:eta:se]^2*100}} in x^2 y {{calc:%.0f:100*([x/y:eta:se])^2}} s3 *{{x/y:eta}}* s4 {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
@@ -537,7 +637,7 @@ in_file "paper-filter: a placeholder in a table cell" "$CG" '^| eta | 30.9 +- 0.
 if awk '/^before$/ { getline a; getline b; ok = (a == "![inline](figures/x/y/fig.png)" && b == "after") } END { exit !ok }' "$CG"; then
     ok "paper-filter: a figure line inside a paragraph stays in it"
 else bad "paper-filter: a figure line inside a paragraph left it" "$CG"; fi
-printf '%s\n' '---' 'subtitle: "{{x/y@paper:eta}}"' '---' '# Heading {{x/y:eta}}' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
+printf '%s\n' '---' 'subtitle: "{{x/y@paper:eta}}"' '---' '# Heading {{x/y:eta}}' '' '## pan-2008/calc: expressions' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
     'e {{calc:%.1f:log(-1)}} f {{calc:%.1f:[x/y:eta]e}} g {{calc:%.1f:os.exit(0)}} h {{calc:%.1f:[x/y:eta}}' > "$root/calcbad.md"
 T "paper-filter: malformed expressions fail" 1 "$M" -i "$root/calcbad.md" -o "$root/build/calcbad.gen.md"
 has "paper-filter: an expression ending early" '{{calc:%.1f:1+}}: cannot evaluate 1+: unexpected end'
@@ -605,6 +705,7 @@ EOF2
 chmod +x "$rx/fake-dpd" "$rx/experiments/t/e/run.sh"
 echo 'x = 1;' > "$rx/experiments/t/e/s.cfg"
 { echo "$BANDS_HEADER"; tab q_a quick claim 1 2 - - - fixture; tab q_b quick claim 1 2 - - - fixture; } > "$rx/experiments/t/e/bands.tsv"
+{ tab group quantities statement paper; tab q '^q_' 'the fixture' '-'; } > "$rx/experiments/t/e/claims.tsv"
 log="$root/fake.log"
 RX() { env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$@"; }
 ( cd "$rx" && git init -q . 2>/dev/null ) || true

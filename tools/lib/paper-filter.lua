@@ -11,11 +11,24 @@
 --                                          whose header ends in "@" holds band quantity names, shown as
 --                                          their verdict
 --   <!-- environment -->                   tool and library versions
+--   <!-- verdict: PAPER/EXP -->            the experiment's verdict in one line (the head of its card)
+--   <!-- claims: PAPER/EXP -->             its claims by group (experiments/PAPER/EXP/claims.tsv): claim,
+--                                          paper, ours, band, outcome; a group of several rows shows its
+--                                          counts and its worst row
 --   {{PAPER/EXP:QUANTITY}} (inline)        "value +- stderr" from the paper-tier summary
 --                                          (else the reduced, else the quick tier, marked)
+--   {{PAPER/EXP:QUANTITY:FMT}}             the value in the printf number format FMT (%.2f, %.1e ...),
+--                                          "+- stderr" after it only if the stderr is positive
+--   {{calc:FMT:EXPR}}                      (pan-2008's sections only, until their analyses write these
+--                                          quantities; tools/render-paper refuses it elsewhere) an
+--                                          arithmetic expression printed with FMT: operands
+--                                          [PAPER/EXP[@TIER]:Q] (value), [PAPER/EXP[@TIER]:Q:se] (stderr),
+--                                          [tsv:PATH:ROW:COL]; numbers, + - * / ^ ( ), sqrt log exp
 --   {{verdict:PAPER/EXP}}                  the experiment's verdict from its bands, with the tier
 --   {{cpu:PAPER/EXP}}                      CPU seconds of the tier its numbers come from (provenance.tsv,
---                                          rounded; the tier is named unless it is paper)
+--                                          rounded; the tier is named unless it is paper); several
+--                                          experiments joined by '+': their total
+--   {{cpu-h:PAPER/EXP[+...]}}              the same in CPU-hours (3 significant digits)
 --   {{PAPER/EXP@TIER:QUANTITY}}, {{cpu:PAPER/EXP@TIER}}
 --                                          the same from that tier only, marked unless the tier is paper
 --   {{tsv:PATH:ROW:COL}}                   one cell of a TSV file (PATH relative to DPD_ROOT, no ':'):
@@ -31,18 +44,15 @@
 --                                          100 (A/B - 1), A/B, A - B with the first-order error of
 --                                          independent A, B, and (A - B) / sqrt(se_A^2 + se_B^2); an error
 --                                          of zero is not printed; marked with the tier unless both paper
---   {{calc:FMT:EXPR}}                      an arithmetic expression printed with the printf number format
---                                          FMT: operands [PAPER/EXP[@TIER]:Q] (value), [PAPER/EXP[@TIER]:Q:se]
---                                          (stderr), [tsv:PATH:ROW:COL] (a numeric cell); otherwise numbers,
---                                          + - * / ^ ( ) and sqrt log exp, evaluated by the parser below
---                                          (nothing is handed to another interpreter); marked with the tier
---                                          unless every operand is paper
 --   {{bench:FILE:ROW:COL}}                 one cell of bench/FILE (make bench) with the date and commit
 --                                          of its "date, commit" row; "not measured (run `make bench`)"
 --                                          if the file or the row is absent
+-- Arithmetic a section needs is a quantity its experiment's analysis (run.sh) writes, not an expression here.
+-- The summary table (<!-- summary-table -->) opens with one sentence per paper and every claim by group,
+-- each experiment linked to its section (a heading "## PAPER/EXP: ..." gets the anchor exp-PAPER-EXP).
 -- Each placeholder's expansion is markdown, read by pandoc's markdown reader in its place. An inline
--- placeholder is found in the markdown of the paragraph that holds it (the reader may have taken the
--- '*' or '^' of an expression for emphasis or a superscript: written back, they are the source again).
+-- placeholder is found in the markdown of the paragraph that holds it (the reader may have taken a
+-- '*' or '^' inside it for emphasis or a superscript: written back, they are the source again).
 -- Errors: a referenced result, figure or file missing, a figure older than a summary.tsv of its
 -- experiment, a malformed placeholder: each is named on stderr (FILE:LINE: PLACEHOLDER: reason), and
 -- pandoc exits 1 writing nothing. MKPAPER_ALLOW_MISSING=1 (drafts): warnings, the gap marked in the
@@ -126,6 +136,19 @@ local function read_lines(path)         -- nil if unreadable; '\r' of CRLF files
     for l in f:lines() do t[#t + 1] = l:gsub('\r$', '') end
     f:close(); return t
 end
+-- the lines of a TSV file that are data ('#' and blank lines skipped), split: the header's fields
+-- (nil for no data), its columns by name, the other rows
+local function tsv_rows(lines)
+    local header, columns, rows = nil, {}, {}
+    for _, l in ipairs(lines) do
+        if not (l:match('^#') or l:match('^[ \t]*$')) then
+            if header then rows[#rows + 1] = split(l, '\t')
+            else header = split(l, '\t'); for i, c in ipairs(header) do columns[c] = i end end
+        end
+    end
+    return header, columns, rows
+end
+
 local function shell_quote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 -- the lines a shell command prints, and whether it exited 0
 local function command_lines(cmd)
@@ -287,6 +310,224 @@ end
 
 -- ---------------------------------------------------------------- block placeholders (markdown out)
 
+-- ---------------------------------------------------------------- claim groups and the summary a reviewer reads first
+
+-- the claim groups (experiments/P/E/claims.tsv; tools/check --groups --tsv, lib/groups.awk: every claim
+-- row in exactly one group, else an error): by experiment, the groups in their file's order
+-- ({name, statement, paper}) and each claim quantity's group number
+local groups_cache
+local function claim_groups(id)
+    if not groups_cache then
+        groups_cache = {}
+        local cmd = 'DPD_ROOT=' .. shell_quote(ROOT) .. ' ' .. shell_quote(TOOLS .. '/check') .. ' --groups --tsv'
+        local lines, ok = command_lines(cmd)
+        if not ok then
+            problem('claims.tsv', 'tools/check --groups: a claim row in no group or in two, or a malformed claims.tsv (named above)')
+        end
+        for _, l in ipairs(lines) do
+            local f = split(l, '\t')
+            groups_cache[f[1]] = groups_cache[f[1]] or { of = {} }
+            groups_cache[f[1]].of[f[2]] = tonumber(f[3])
+        end
+    end
+    local g = groups_cache[id] or { of = {} }
+    if not g.list then
+        g.list = {}
+        local _, _, rows = tsv_rows(read_lines(ROOT .. '/experiments/' .. id .. '/claims.tsv') or {})
+        for i, f in ipairs(rows) do g.list[i] = { name = trim(f[1] or ''), statement = trim(f[3] or ''), paper = trim(f[4] or '') } end
+        groups_cache[id] = g
+    end
+    return g
+end
+
+-- text read by pandoc's markdown reader as it is (no emphasis, superscript, math, link or raw HTML)
+local function md_text(s) return (s:gsub('[|*_<>`\\%^~%[%]%$@#]', '\\%0')) end
+
+-- the section of experiment ID (its heading "## ID: ..."): its anchor, and whether paper.md has it
+local function anchor_of(id) return 'exp-' .. id:gsub('[^%w%-%.]', '-') end
+local sections = {}
+
+-- an outcome as a coloured word (paper.css .outcome), with a count before it if N
+local OUTCOME_CLASS = { PASS = 'pass', FAIL = 'fail', UNRESOLVED = 'unresolved' }
+local function outcome_span(word, n, title)
+    return string.format('[%s%s]{.outcome .%s%s}', n and (n .. ' ') or '', word, OUTCOME_CLASS[word] or 'other',
+                         title and (' title="' .. title .. '"') or '')
+end
+
+-- band row R (tools/check --tsv) as "value ± se", "[lo, hi]"
+local function row_ours(r)
+    if r[3] == '-' then return 'missing' end
+    return fmt_if_number('%.4g', r[3]) .. ' ± ' .. fmt_if_number('%.2g', r[4])
+end
+local function row_band(r) return '[' .. r[5] .. ', ' .. r[6] .. ']' end
+local function row_distance(r)
+    if r[10] == 'inf' then return math.huge end
+    return is_number(r[10]) and awk_number(r[10]) or -1
+end
+
+-- one row per claim group of ID at TIER, in the order of its claims.tsv: the group's name,
+-- statement and paper number; its rows' outcomes counted (XFAIL is a FAIL, one already known);
+-- one row: our value, the band and the outcome; several: the counts, and the row farthest from its
+-- band's centre (the worst, or for a group that passes the closest to an edge). Claims of no group
+-- (claims.tsv broken: an error, reported) come last, one group each.
+local function group_rows(id, tier)
+    local g = claim_groups(id)
+    local groups, extra = {}, {}
+    for i, d in ipairs(g.list) do groups[i] = { name = d.name, statement = d.statement, paper = d.paper, rows = {} } end
+    for _, r in ipairs(band_rows(id, tier)) do
+        if r[13] == 'claim' then
+            local k = g.of[r[2]]
+            if k and groups[k] then table.insert(groups[k].rows, r)
+            else extra[#extra + 1] = { name = r[2], statement = '(in no group of claims.tsv)', paper = r[8], rows = { r } } end
+        end
+    end
+    for _, e in ipairs(extra) do groups[#groups + 1] = e end
+    local out = {}
+    for _, grp in ipairs(groups) do
+        if #grp.rows > 0 then
+            local c, worst, others = { PASS = 0, FAIL = 0, UNRESOLVED = 0 }, nil, {}
+            for _, r in ipairs(grp.rows) do
+                local o = (r[9] == 'XFAIL') and 'FAIL' or r[9]
+                if c[o] then c[o] = c[o] + 1
+                else
+                    if not c[o .. '?'] then others[#others + 1] = o end
+                    c[o .. '?'] = (c[o .. '?'] or 0) + 1
+                end
+                if not worst or row_distance(r) > row_distance(worst) then worst = r end
+            end
+            local row = { name = grp.name, statement = grp.statement, paper = grp.paper, n = #grp.rows, counts = c }
+            if #grp.rows == 1 then
+                local r = grp.rows[1]
+                local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
+                row.ours = row_ours(r); row.band = row_band(r)
+                row.outcome = OUTCOME_CLASS[o] and outcome_span(o, nil, r[9] == 'XFAIL' and 'a known non-reproduction (expect = fail)' or nil)
+                    or '**' .. r[9] .. '**'
+                if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then row.outcome = row.outcome .. ' (×' .. r[15] .. ' run)' end
+            else
+                row.ours = 'worst of ' .. #grp.rows .. ': `' .. worst[2] .. '` ' .. row_ours(worst)
+                row.band = row_band(worst)
+                local parts = {}
+                for _, o in ipairs({ 'PASS', 'FAIL', 'UNRESOLVED' }) do
+                    if c[o] > 0 then parts[#parts + 1] = outcome_span(o, c[o]) end
+                end
+                for _, o in ipairs(others) do parts[#parts + 1] = string.format('**%d %s**', c[o .. '?'], o) end
+                row.outcome = table.concat(parts, ' ')
+            end
+            out[#out + 1] = row
+        end
+    end
+    return out
+end
+
+local function cpu_hours(v)
+    if not is_number(v.cpu) then return '-' end
+    return string.format('%.2g', awk_number(v.cpu) / 3600)
+end
+local function gates_cell(v)
+    if v.tier == '-' then return '-' end
+    if v.gt == 0 then return 'none' end
+    local s = string.format('%d / %d', v.gp, v.gt)
+    if v.verdict == 'invalid' then s = '**invalid** (' .. s .. ')' end
+    return s
+end
+local VERDICT_CLASS = { ['[Re]'] = 'pass', ['[¬Re]'] = 'fail', ['[~Re]'] = 'partial', unresolved = 'unresolved', invalid = 'fail' }
+local function verdict_span(v) return '[' .. md_text(v) .. ']{.verdict .' .. (VERDICT_CLASS[v] or 'other') .. '}' end
+
+-- per paper (the first part of the ids), one sentence: how many of its experiments reproduce, in
+-- part, not, undecided, invalid, not run; its claims by outcome; the CPU-hours of the tiers shown
+local function paper_sentences(ids)
+    local order, by = {}, {}
+    for _, id in ipairs(ids) do
+        local p = before(id, '/')
+        if not by[p] then by[p] = { n = 0, v = {}, cp = 0, cf = 0, cu = 0, cpu = 0 }; order[#order + 1] = p end
+        local b, v = by[p], verdict_of(id)
+        b.n = b.n + 1; b.v[v.verdict] = (b.v[v.verdict] or 0) + 1
+        b.cp = b.cp + v.cp; b.cf = b.cf + v.cf; b.cu = b.cu + v.cu
+        if is_number(v.cpu) then b.cpu = b.cpu + awk_number(v.cpu) end
+    end
+    local out = {}
+    for _, p in ipairs(order) do
+        local b = by[p]
+        local parts = { string.format('%d of %d experiments reproduce ([Re])', b.v['[Re]'] or 0, b.n) }
+        local function add(key, what) if (b.v[key] or 0) > 0 then parts[#parts + 1] = string.format('%d %s', b.v[key], what) end end
+        add('[~Re]', 'in part ([~Re])'); add('[¬Re]', 'not ([¬Re])'); add('unresolved', 'undecided (unresolved)')
+        add('invalid', 'invalid (a gate does not pass)'); add('not run', 'not run'); add('not yet built', 'not yet built')
+        add('missing', 'with a value missing'); add('bad bands', 'with malformed bands')
+        out[#out + 1] = string.format('- **%s**: %s; of their %d claims %d pass, %d fail and %d are unresolved; %.3g CPU-hours.',
+            p, table.concat(parts, ', '), b.cp + b.cf + b.cu, b.cp, b.cf, b.cu, b.cpu / 3600)
+    end
+    return table.concat(out, '\n') .. '\n\n'
+end
+
+local CLAIMS_CAPTION = 'The paper\'s number as the paper prints it; ours ± its standard error; the band (the paper\'s'
+    .. ' number with its tolerance); the outcome under the decision rule (pass: value ± 2 stderr inside the band; fail:'
+    .. ' wholly outside; unresolved: neither). A group of several rows shows its counts and its worst row (the farthest'
+    .. ' from its band\'s centre).'
+
+-- the claims table of the summary: per experiment one row per claim group, with its verdict, gates,
+-- tier and CPU-hours on its first row, and a link to its section
+local function claims_summary(ids)
+    claim_groups('')    -- the groups of every experiment checked, whether it has results or not
+    -- the separator's dashes set the columns' relative widths (pandoc: a pipe table wider than a line)
+    local out = { '', '::: {.claims-table}', '', '| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |',
+                  '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(27) .. '|:' .. ('-'):rep(8) .. '|:' .. ('-'):rep(15)
+                  .. '|:' .. ('-'):rep(8) .. '|:' .. ('-'):rep(10) .. '|:' .. ('-'):rep(6) .. '|:' .. ('-'):rep(7) .. '|' .. ('-'):rep(7) .. ':|' }
+    for _, id in ipairs(ids) do
+        local v = verdict_of(id)
+        local name = sections[id] and string.format('[`%s`](#%s)', id, anchor_of(id)) or '`' .. id .. '`'
+        local head = name .. ' ' .. verdict_span(v.verdict)
+        local rows = v.tier ~= '-' and group_rows(id, v.tier) or {}
+        local tier = v.tier ~= '-' and v.tier or '-'
+        if #rows == 0 then
+            out[#out + 1] = string.format('| %s | - | - | - | - | - | %s | %s | %s |', head, gates_cell(v), tier, cpu_hours(v))
+        end
+        for i, r in ipairs(rows) do
+            out[#out + 1] = string.format('| %s | **%s**: %s | %s | %s | %s | %s | %s | %s | %s |', i == 1 and head or '',
+                md_text(r.name), md_text(r.statement), md_text(r.paper), r.ours, r.band, r.outcome,
+                i == 1 and gates_cell(v) or '', i == 1 and tier or '', i == 1 and cpu_hours(v) or '')
+        end
+    end
+    out[#out + 1] = ''
+    out[#out + 1] = ': Every claim of every experiment, by claim group (experiments/P/E/claims.tsv), from the tier shown. '
+        .. CLAIMS_CAPTION .. ' Gates: the set-up checks passed of all (a gate that does not pass makes the result invalid).'
+    out[#out + 1] = ''
+    out[#out + 1] = ':::'
+    out[#out + 1] = ''
+    return table.concat(out, '\n') .. '\n'
+end
+
+-- <!-- verdict: P/E -->: the experiment's verdict in one line, first in its card
+local function verdict_block(ph, arg)
+    local id = trim(arg)
+    local v = verdict_of(id)
+    if v.tier == '-' then return problem(ph, 'no results for ' .. id) end
+    local claims = string.format('claims %d pass, %d fail, %d unresolved', v.cp, v.cf, v.cu) .. (v.cm > 0 and string.format(', %d missing', v.cm) or '')
+    return string.format('\n**Verdict:** %s (%s tier; %s; gates %s; %s CPU-hours)\n\n', verdict_span(v.verdict), v.tier, claims,
+        v.gt == 0 and 'none' or string.format('%d of %d', v.gp, v.gt), cpu_hours(v))
+end
+
+-- <!-- claims: P/E -->: the experiment's claim groups as a short table (its card)
+local function claims_block(ph, arg)
+    local id = trim(arg)
+    if not exists(ROOT .. '/experiments/' .. id .. '/bands.tsv') then return problem(ph, 'no experiments/' .. id .. '/bands.tsv') end
+    local v = verdict_of(id)
+    if v.tier == '-' then return problem(ph, 'no results for ' .. id) end
+    local rows = group_rows(id, v.tier)
+    if #rows == 0 then return '\n*No claims at the ' .. v.tier .. ' tier.*\n\n' end
+    local out = { '', '::: {.claims-table}', '', '| claim | paper | ours | band | outcome |',
+                  '|:' .. ('-'):rep(40) .. '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(22) .. '|:' .. ('-'):rep(12) .. '|:' .. ('-'):rep(14) .. '|' }
+    for _, r in ipairs(rows) do
+        out[#out + 1] = string.format('| **%s**: %s | %s | %s | %s | %s |', md_text(r.name), md_text(r.statement), md_text(r.paper),
+            r.ours, r.band, r.outcome)
+    end
+    out[#out + 1] = ''
+    out[#out + 1] = ': `' .. id .. '`: its claims by group, ' .. v.tier .. ' tier. ' .. CLAIMS_CAPTION
+    out[#out + 1] = ''
+    out[#out + 1] = ':::'
+    out[#out + 1] = ''
+    return table.concat(out, '\n') .. '\n'
+end
+
 local SUMMARY_CAPTION = table.concat({
     ': Reproduction status, from the bands of the tier shown (paper if its results exist, else reduced, else quick).',
     'Each row of a bands.tsv is a *claim* (a number or shape the paper states, or theory with a stated tolerance)',
@@ -323,9 +564,10 @@ local function paper_cpu_line(ids)
 end
 
 local function summary_table()
+    local ids = experiment_ids()
+    local first = paper_sentences(ids) .. claims_summary(ids)
     local out = { '', '| experiment | verdict | claims pass / fail / unresolved | gates | tier | decide | CPU s | inputs |',
                   '|:---|:---|:---|:---|:---|---:|---:|:---|' }
-    local ids = experiment_ids()
     for _, id in ipairs(ids) do
         local v = verdict_of(id)
         local tier = v.tier ~= '-' and '**' .. v.tier .. '**' or '-'
@@ -344,7 +586,7 @@ local function summary_table()
                                       decide, v.cpu, freshness_of(id, v.tier))
     end
     out[#out + 1] = ''; out[#out + 1] = SUMMARY_CAPTION; out[#out + 1] = ''
-    return table.concat(out, '\n') .. '\n' .. paper_cpu_line(ids)
+    return first .. table.concat(out, '\n') .. '\n' .. paper_cpu_line(ids)
 end
 
 local function verdict_cell(v)
@@ -511,8 +753,9 @@ end
 local BLOCK_PLACEHOLDERS = {
     ['summary-table'] = summary_table, environment = environment_table, ['results:'] = results_table,
     ['figure:'] = figure_line, ['tsv:'] = tsv_table, ['table:'] = result_table,
+    ['claims:'] = claims_block, ['verdict:'] = verdict_block,
 }
-local BLOCK_KINDS = { 'summary-table', 'environment', 'results:', 'figure:', 'tsv:', 'table:' }
+local BLOCK_KINDS = { 'summary-table', 'environment', 'results:', 'figure:', 'tsv:', 'table:', 'claims:', 'verdict:' }
 -- kind and argument of a block placeholder (an HTML comment alone on its line), or nil
 local function block_placeholder(comment)
     local body = trim(comment):match('^<!%-%-%s*(.-)%-%->$')
@@ -536,14 +779,31 @@ local function id_and_tiers(spec)
 end
 local function only_quick(tiers) return #tiers == 1 and tiers[1] == 'quick' end
 
-local function inline_value(spec, q)
-    local ph = '{{' .. spec .. ':' .. q .. '}}'
+-- a printf format of one number (%.3g, %.0f, %.2e ...)
+local function number_format(f) return f:match('^%%[-+ 0#]*%d*[eEfgG]$') or f:match('^%%[-+ 0#]*%d*%.%d+[eEfgG]$') end
+
+-- {{ID:Q}} or {{ID:Q:FMT}}: "value +- stderr" (%.4g, %.2g), or with FMT the value in that printf
+-- format, followed by "+- stderr" only if the stderr is a positive number
+local function inline_value(spec, arg)
+    local ph = '{{' .. spec .. ':' .. arg .. '}}'
+    local q, format = arg, nil
+    if arg:find(':', 1, true) then q, format = before(arg, ':'), after(arg, ':') end
+    if format and not number_format(format) then
+        return missing(ph, 'expected PAPER/EXP:QUANTITY:FMT with FMT a printf number format (%.3g, %.0f ...)', 'missing: ' .. spec .. ':' .. arg)
+    end
     local id, tiers = id_and_tiers(spec)
     for _, t in ipairs(tiers) do
         local v, se
         if valid_result(id, t) then v, se = summary_value(id, t, q) end
         if v then
-            return string.format('%.4g +- %.2g', awk_number(v), awk_number(se)) .. (t ~= 'paper' and ' (' .. t .. ' tier)' or '')
+            local text
+            if format then
+                text = string.format(format, awk_number(v))
+                if is_number(se) and awk_number(se) > 0 then text = text .. string.format(' +- %.2g', awk_number(se)) end
+            else
+                text = string.format('%.4g +- %.2g', awk_number(v), awk_number(se))
+            end
+            return text .. (t ~= 'paper' and ' (' .. t .. ' tier)' or '')
         end
     end
     if only_quick(tiers) and awaits_quick(id) then return pending(id) end
@@ -569,20 +829,36 @@ local function inline_verdict(id)
     return s .. ': ' .. table.concat(parts, '; ') .. ')'
 end
 
-local function inline_cpu(spec)
+-- the CPU seconds of one experiment ID[@TIER] as {{cpu:}} finds them: 'ok', seconds (string), tier |
+-- 'quick', id (awaits the quick tier) | 'missing'
+local function cpu_of(spec)
     local tier, cpu
     if spec:find('@', 1, true) then
         local id = before_last(spec, '@'); tier = after_last(spec, '@')
-        if tier == 'quick' and awaits_quick(id) then return pending(id) end
+        if tier == 'quick' and awaits_quick(id) then return 'quick', id end
         cpu = valid_result(id, tier) and provenance(id, tier, 'cpu_seconds') or ''
         if not valid_result(id, tier) then tier = '-' end
     else
         local v = verdict_of(spec); tier, cpu = v.tier, v.cpu
     end
-    if tier == '-' or cpu == '' or cpu == '-' then
-        return missing('{{cpu:' .. spec .. '}}', 'no results or no cpu_seconds for ' .. spec, 'missing CPU time: ' .. spec)
+    if tier == '-' or cpu == '' or cpu == '-' then return 'missing' end
+    return 'ok', cpu, tier
+end
+
+-- {{cpu:SPEC}} (CPU seconds) and {{cpu-h:SPEC}} (CPU-hours, 3 digits): SPEC one experiment
+-- ID[@TIER], or several joined by '+' (their total, each from its provenance.tsv)
+local function inline_cpu(spec, hours)
+    local ph = '{{' .. (hours and 'cpu-h' or 'cpu') .. ':' .. spec .. '}}'
+    local total, mark = 0, nil
+    for _, one in ipairs(split(spec, '+')) do
+        local status, cpu, tier = cpu_of(trim(one))
+        if status == 'quick' then return pending(cpu) end
+        if status ~= 'ok' then return missing(ph, 'no results or no cpu_seconds for ' .. one, 'missing CPU time: ' .. spec) end
+        total = total + awk_number(cpu)
+        if tier ~= 'paper' then mark = tier end
     end
-    return fmt('%.0f', cpu) .. (tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
+    local text = hours and string.format('%.3g', total / 3600) or string.format('%.0f', total)
+    return text .. (mark and ' (' .. mark .. ' tier)' or '')
 end
 
 -- a quantity Q of experiment ID[@TIER] (or OTHER/EXP[@TIER]#Q, or a number) as {{ID:Q}} finds it:
@@ -653,19 +929,6 @@ local function inline_derived(kind, arg)
     return v .. (mark and ' (' .. mark .. ' tier)' or '')
 end
 
--- the lines of a TSV file that are data ('#' and blank lines skipped), split: the header's fields
--- (nil for no data), its columns by name, the other rows
-local function tsv_rows(lines)
-    local header, columns, rows = nil, {}, {}
-    for _, l in ipairs(lines) do
-        if not (l:match('^#') or l:match('^[ \t]*$')) then
-            if header then rows[#rows + 1] = split(l, '\t')
-            else header = split(l, '\t'); for i, c in ipairs(header) do columns[c] = i end end
-        end
-    end
-    return header, columns, rows
-end
-
 -- ROW -> the columns it names and a test of a row: its first field is ROW, or, for
 -- NAME=VALUE[&NAME=VALUE...], column NAME holds VALUE for every pair
 local function row_test(row)
@@ -726,7 +989,8 @@ local function inline_tsv(spec)
     return v .. (tier ~= '' and tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
 end
 
--- ---- {{calc:}}: a recursive-descent parser of + - * / ^ ( ), sqrt log exp and numbers;
+-- ---- {{calc:}} (kept only for the sections of pan-2008 until their analyses write those quantities, issue 40
+-- item 7; tools/render-paper refuses it elsewhere): a recursive-descent parser of + - * / ^ ( ), sqrt log exp and numbers;
 -- operands ([...]) are resolved to numbers before. Grammar (as awk's precedence):
 --   sum = product {(+|-) product};  product = unary {(*|/) unary};  unary = (+|-) unary | power;
 --   power = atom [^ unary];  atom = number | operand | (sum) | sqrt(sum) | log(sum) | exp(sum)
@@ -867,6 +1131,7 @@ end
 local function expand_inline(kind, arg)
     if kind == 'verdict' then return inline_verdict(arg)
     elseif kind == 'cpu' then return inline_cpu(arg)
+    elseif kind == 'cpu-h' then return inline_cpu(arg, true)
     elseif kind == 'tsv' then return inline_tsv(arg)
     elseif kind == 'pct' or kind == 'ratio' or kind == 'diff' or kind == 'sigmas' then return inline_derived(kind, arg)
     elseif kind == 'calc' then return inline_calc(arg)
@@ -1021,7 +1286,18 @@ local function finish(doc)
     return doc
 end
 
+-- a heading "PAPER/EXP: ..." of an experiment: the anchor the summary links to (first, so that the
+-- summary knows which experiments have a section)
+local function anchor_heading(h)
+    local id = pandoc.utils.stringify(h):match('^([%w%-%.]+/[%w%-%.]+):')
+    if id and exists(ROOT .. '/experiments/' .. id) then
+        h.identifier = anchor_of(id); sections[id] = true
+        return h
+    end
+end
+
 return {
+    { Header = anchor_heading },
     { RawBlock = fill_raw_block, Para = fill_inlines, Plain = fill_inlines },
     { Pandoc = quick_notices },
     { Table = wrap_table },

@@ -1,7 +1,7 @@
 # eta(k) of the free and the spring-constrained system at one phi (Mai-Duy et al. 2019, Fig. 2).
-set terminal pngcairo size 700,480 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 1400,960
 set output out.'/length-scale-'.tier.'.png'
-set datafile separator "\t"
 stats res.'/summary.tsv' u (strcol(1) eq "eta_k0_constrained" ? $2 : NaN) nooutput
 ec = STATS_max
 stats res.'/summary.tsv' u (strcol(1) eq "phi" ? $2 : NaN) nooutput

@@ -89,6 +89,10 @@ done
 cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
 num_awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); m = num_mean_se(x, n, o); e = o["se"]
     printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", m, e, d + m, e }' >> "$OUT/summary.tsv"
+# the shear rate of the paper's Pe = 0.18 (paper.md): Pe = rate a^2 / D0, D0 = kBT / (6 pi eta_solvent a)
+num_awk -F'\t' '{ v[$1] = $2; s[$1] = $3 } END { e = v["eta_solvent"]; a = v["colloid_radius_rdf"]
+    num_rel2(0.18 / (6 * 3.14159265358979 * e * a * a * a), e, s["eta_solvent"], a, 3 * s["colloid_radius_rdf"], o)
+    print num_row("shear_rate_at_paper_pe", o) }' "$OUT/summary.tsv" > "$OUT/.rows"; cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 for pair in $PAIRS; do
     lattice_pair "$pair" 2

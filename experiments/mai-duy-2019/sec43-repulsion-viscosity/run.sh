@@ -24,3 +24,7 @@ done
 emit_diff eta_diff_a6.50_a3.53 a6.50 viscosity a3.53 viscosity
 emit_diff eta_diff_a9.50_a6.50 a9.50 viscosity a6.50 viscosity
 emit_diff eta_diff_a18.50_a9.50 a18.50 viscosity a9.50 viscosity
+# what the random stress costs (paper.md): the standard error of the viscosity with the random part
+# of the stress over that without it, at a = 3.53 (a quotient of two errors, itself without one)
+se_with=$(get a3.53 viscosity_with_random | cut -f2) se_without=$(get a3.53 viscosity | cut -f2)
+emit random_stress_error_factor_a3.53 "$(printf '%.6g' "$(bc -l <<< "$se_with / $se_without")")" 0

@@ -1,7 +1,7 @@
 # Temperature and viscosity of the mai-duy-2019 solvent against the time step.
-set terminal pngcairo size 900,420 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 1800,840
 set output out.'/dt-scan-'.tier.'.png'
-set datafile separator "\t"
 set multiplot layout 1,2 title "Groot-Warren velocity Verlet (lambda = 0.5), solvent of eq. 29 under shear (tier: ".tier.")"
 set xlabel "dt"; set ylabel "kinetic temperature"; set key top left
 plot res.'/dt-scan.tsv' u 1:2:3 w yerrorlines pt 7 t "measured", 1.01 w l dt 2 lc rgb "gray" t "+-1 %", 0.99 w l dt 2 lc rgb "gray" not

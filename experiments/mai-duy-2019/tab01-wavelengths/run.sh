@@ -66,6 +66,14 @@ if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
     cp "$F04/tcaf_eta_free_phi0.49.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$F04/tcaf_eta_constrained_phi0.49.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
 fi
+# reduced: the paper tier's CPU-hours as projected before it ran (paper.md), from this tier's cost per
+# particle-step (its free run at phi = 0.1854): 22 runs (free and constrained) of 13500 + 6 k^3
+# particles for k = 3 ... 13, 8000 production steps each (the scenes' 40 time units at dt = 0.005)
+if [ "$TIER" = reduced ]; then
+    c=$(get free_phi0.1854 cpu_seconds | cut -f1) np=$(get free_phi0.1854 particles | cut -f1) ns=$(get free_phi0.1854 steps | cut -f1)
+    emit paper_tier_projected_cpu_hours "$(awk -v c="$c" -v p="$np" -v s="$ns" 'BEGIN { for (k = 3; k <= 13; k++) n += 13500 + 6 * k * k * k
+        printf "%.4g", c / (p * s) * 2 * n * 8000 / 3600 }')" 0
+fi
 # table beside the paper's columns; TCAF: value +- se, "no crossing" when the free eta(k) never
 # reaches the constrained eta(k -> 0), "-" when the phi was not run at this tier
 awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 6)] = $2; next }

@@ -1,27 +1,27 @@
 # Mai-Duy et al. 2019, Table 2 and the TCAF eta_r of Figs 4-5 under five readings of section 4.2.3
 # (README.md), and the constrained eta(k -> 0) by three estimators beside the suspension's viscosity.
-set terminal pngcairo size 1500,900 font ",10" noenhanced
+load '../../plot-style.gp'
+set terminal @PNG_BARE size 3000,1800 noenhanced font 'Sans,15'
 set output out.'/readings-'.tier.'.png'
-set datafile separator "\t"
 set multiplot layout 2,3 title "Table 2 and Figs 4-5 under five readings of section 4.2.3 (tier: ".tier.")"
 p2 = '../tab02-effective-viscosity/paper-table2.tsv'
 d = res.'/readings_data.tsv'
 set xrange [0:0.52]; set xlabel "phi"
 set key top left
 set ylabel "eta_eff (a = 3.53)"; set logscale y
-plot p2 u 2:5 w lp pt 6 lc rgb "black" lw 2 t "paper, Table 2", \
+plot PAPER_POINTS("^reading_a_eta_eff_phi") u ($1 + 0.006):2:3:4 w yerrorbars ls PAPER t "Table 2, ".PAPER_TITLE, \
      for [i = 0:4] d index i u 2:5:6 w yerrorlines pt 5 + 2 * i lc i + 1 t "(".word("a b c d e", i + 1).")"
 unset logscale y
 set ylabel "k_eff (a = 3.53)"
-plot p2 u 2:3 w lp pt 6 lc rgb "black" lw 2 t "paper, Table 2", \
+plot PAPER_POINTS("^reading_a_k_eff_phi") u ($1 + 0.006):2:3:4 w yerrorbars ls PAPER t "Table 2, ".PAPER_TITLE, \
      for [i = 0:4] d index i u 2:3:4 w yerrorlines pt 5 + 2 * i lc i + 1 t "(".word("a b c d e", i + 1).")"
 set ylabel "TCAF eta_r, a = 3.53"; set logscale y
 plot (1 - x / 0.65)**-2 w l lc rgb "gray50" t "Quemada, eq. 34", \
-     '+' u (0.4940):(9.69) every ::0::0 w p pt 6 ps 2 lc rgb "black" t "paper, TCAF (0.49)", \
+     PAPER_POINTS("^reading_a_eta_r_a3.53_phi") u ($1 + 0.006):2:3:4 w yerrorbars ls PAPER t "paper, TCAF (0.49), ± tolerance", \
      for [i = 0:4] d index i u 2:7:8 w yerrorlines pt 5 + 2 * i lc i + 1 t "(".word("a b c d e", i + 1).")"
 set ylabel "TCAF eta_r, a = 6.50"
 plot (1 - x / 0.65)**-2 w l lc rgb "gray50" t "Quemada, eq. 34", \
-     '+' u (0.4940):(12.46) every ::0::0 w p pt 6 ps 2 lc rgb "black" t "paper, TCAF (0.49)", \
+     PAPER_POINTS("^reading_a_eta_r_a6.50_phi") u ($1 + 0.006):2:3:4 w yerrorbars ls PAPER t "paper, TCAF (0.49), ± tolerance", \
      for [i = 0:4] d index i u 2:9:10 w yerrorlines pt 5 + 2 * i lc i + 1 t "(".word("a b c d e", i + 1).")"
 e = res.'/estimators_data.tsv'
 set ylabel "eta(k -> 0), a = 3.53"
@@ -33,7 +33,7 @@ plot e index 0 u 2:3:4 w lp pt 7 lc rgb "black" t "suspension, shear (rate 0.1)"
 unset logscale y
 set xrange [0:2]; set xlabel "t"; set ylabel "C(k,t) / C(k,0), smallest k, phi = 0.4940"; set key top right
 c = res.'/curve_phi0.4940.tsv'
-plot c skip 1 u 1:2:3 w yerrorbars pt 7 ps 0.4 lc 3 t "constrained (particles)", \
+plot c skip 1 u 1:2:3 w yerrorbars pt 7 ps 0.8 lc 3 t "constrained (particles)", \
      c skip 1 u 1:4 w l lw 2 lc rgb "black" t "two-mode fit", \
      c skip 1 u 1:5 w l lc 1 t "free (same density)", \
      0.3 w l dt 3 lc rgb "gray50" t "C/C0 = 0.3 (eq. 28 fit window)"

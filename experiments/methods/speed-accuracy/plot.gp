@@ -1,14 +1,14 @@
 # The speed-accuracy trade: temperature error against dt and against CPU cost
 # (Groot-Warren fluid, mai-duy-2019 solvent, pan-2008 rotating fluid; lambda = 0.5
 # and 0.65), and the m = 0 Couette viscosity against the solver tolerance.
-set terminal pngcairo size 1100,820 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 2200,1640
 set output out.'/speed-accuracy-'.tier.'.png'
-set datafile separator "\t"
 set datafile missing "nan"
 f = res.'/ladder-dt.tsv'
 sel(fl, l, col) = (strcol(1) eq fl && abs($2 - l) < 1e-9) ? column(col) : 1/0
 set multiplot layout 2,2 title "Speed against accuracy (tier: ".tier.")"
-set key top left font ",8"
+set key top left font ",16"
 set xlabel "dt"; set ylabel "kinetic temperature T / kBT - 1"
 set grid
 plot 0 lc rgb "gray" notitle, \
@@ -20,7 +20,7 @@ plot 0 lc rgb "gray" notitle, \
      f u 3:(sel("pan",0.5,6)-1):7 w yerrorlines pt 4 lc 3 t "pan fluid, rotational T"
 set logscale xy; set format y "10^{%T}"
 set xlabel "CPU s per 1000 particles per time unit (1 thread)"; set ylabel "|T / kBT - 1|"
-set key top right font ",8"
+set key top right font ",16"
 plot f u (sel("gw",0.5,10)):(abs($4-1)) w lp pt 7 lc 1 t "GW fluid, lambda 0.5", \
      f u (sel("gw",0.65,10)):(abs($4-1)) w lp pt 6 dt 2 lc 1 t "GW fluid, lambda 0.65", \
      f u (sel("maiduy",0.5,10)):(abs($4-1)) w lp pt 7 lc 2 t "mai-duy, lambda 0.5", \

@@ -132,6 +132,10 @@ done
 emit eta_fig03_paper_tier $eta_ref $eta_ref_se
 # the paper's tolerance (1e-7, PCG) against the fig03 paper tier: the same setting, shorter
 awk -F'\t' '$1=="pcg" && $2=="1e-7" {printf "eta_rel_error_pcg_1e-7\t%s\t%s\n", $5, $6}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
+# what the paper's tolerance costs against a loose one (paper.md): PCG's CPU per step at 1e-7 over 1e-3
+# (one run each; no error)
+awk -F'\t' '$1=="pcg" && $2=="1e-7" {a=$8} $1=="pcg" && $2=="1e-3" {b=$8}
+    END {printf "cpu_per_step_ratio_pcg_1e-7_1e-3\t%.6g\t0\n", a/b}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
 # slope of log(true error) against log(tolerance), per solver (weighted equally)
 num_awk -F'\t' 'NR>1 && $9 > 0 { s=$1; if (!(s in n)) S[++ns] = s; n[s]++; X[s,n[s]]=log($2); Y[s,n[s]]=log($9) }
     END { for (j=1;j<=ns;j++) { s=S[j]; k=n[s]; for (i=1;i<=k;i++) { x[i]=X[s,i]; y[i]=Y[s,i] }

@@ -280,6 +280,15 @@ emit_ratio_rows() { num_awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '
 for m in $MASSES; do
     if awk -v m=$m 'BEGIN{exit !(m <= 0.01)}'; then emit_ratio_rows dt_max_ratio_m0_solver_to_m$m mass_m0 0 mass $m; fi
 done
+# what paper.md reads off the families (issue 40 item 7: no arithmetic in its text): the repulsion
+# family's dt_max sqrt(a) at every a (flat where dt_max ~ a^-1/2) and the local exponent
+# ln(dt_max_2 / dt_max_1) / ln(a_2 / a_1) between neighbouring a; the mass family's dt_max / m
+num_awk -F'\t' '$1 == "a_gamma4.5" { n++; a[n] = $3; d[n] = $4; s[n] = $5 }
+    $1 == "mass" { num_div($4, $5, $3, o); printf "dt_max_over_m_m%s\t%s\n", $3, num_pair(o, "%.5g", "%.3g") }
+    END { for (i = 1; i <= n; i++) { num_scale(d[i], s[i], sqrt(a[i]), o); printf "dt_max_sqrt_a_a%s\t%s\n", a[i], num_pair(o, "%.5g", "%.3g") }
+          for (i = 2; i <= n; i++) { l = log(a[i] / a[i - 1]); r[1] = s[i] / d[i]; r[2] = s[i - 1] / d[i - 1]
+              printf "dt_max_local_exponent_a%s_%s\t%.5g\t%.3g\n", a[i - 1], a[i], log(d[i] / d[i - 1]) / l, num_quad(r, 2) / l } }' \
+    "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 # every unstable trial stopped with a proper message, INCOMPLETE and no summary
 awk -F'\t' 'NR>1 && $8!="-" {n++; ok+=$8} END{printf "blowup_message_ok_fraction\t%.6g\t0\nunstable_trials\t%d\t0\n", ok/n, n}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"
 awk -F'\t' 'END{printf "trials\t%d\t0\n", NR-1}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"

@@ -1,7 +1,7 @@
 # eta_r(phi = 0.49) under each open choice, a = 3.53 and 6.50, beside the paper's values (Figs 4-5).
-set terminal pngcairo size 760,480 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 1520,960
 set output out.'/eta-r-choices-'.tier.'.png'
-set datafile separator "\t"
 set title sprintf("eta_r(phi = 0.49) against the open choices (tier: %s)", tier)
 set ylabel "eta_r"; set xtics rotate by -30; set key top left; set offsets 0.5, 0.5, 0, 0
 # rows come in pairs, a = 3.53 then a = 6.50, one pair per choice

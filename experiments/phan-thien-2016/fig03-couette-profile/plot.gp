@@ -1,9 +1,9 @@
 # Density and x velocity across the m = 0 Couette channel (Phan-Thien et al. 2016, Fig. 3).
-set terminal pngcairo size 1000,420 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 2000,840
 set output out.'/profile-'.tier.'.png'
-set datafile separator "\t"
 set multiplot layout 1,2 title "m = 0 Couette channel, walls at -10 and +10 (tier: ".tier.")"
-set xlabel "y"; set xrange [0:12]; set key top left font ",8"
+set xlabel "y"; set xrange [0:12]; set key top left font ",16"
 set ylabel "number density"; set yrange [0:6]
 plot res.'/profile.tsv' u 1:2:3 w yerr t "PCG (A v = f)", res.'/profile_scheme2.tsv' u 1:2:3 w yerr t "Scheme 2 (published)", 4 w l dt 2 lc rgb "gray" t "n = 4"
 set ylabel "v_x"; set yrange [-12:12]

@@ -1,10 +1,10 @@
 # Centre of mass of the m = 0 fluid, Scheme 1 against the published Scheme 2
 # (Phan-Thien et al. 2016, section 3): seed 1 of each.
-set terminal pngcairo size 1200,420 font ",10"
+load '../../plot-style.gp'
+set terminal @PNG size 2400,840
 set output out.'/com-'.tier.'.png'
-set datafile separator "\t"
 set multiplot layout 1,3 title "Fluid centre of mass, dt = 0.005 (tier: ".tier.")"
-set xlabel "t"; set key top right font ",8"
+set xlabel "t"; set key top right font ",16"
 set ylabel "COM velocity (Scheme 1)"
 plot res.'/com_scheme1.tsv' u 1:2 w l t "V_x", '' u 1:3 w l t "V_y", 15 w l dt 2 lc rgb "gray" t "paper: +-15 (x), +-8 (y)", -15 w l dt 2 lc rgb "gray" not, 8 w l dt 3 lc rgb "gray" not, -8 w l dt 3 lc rgb "gray" not
 set ylabel "COM displacement (Scheme 1)"
