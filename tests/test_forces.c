@@ -11,6 +11,7 @@
 #include "box.h"
 #include "neighbor.h"
 #include "forces.h"
+#include "pairutil.h"
 #include "integrator.h"
 #include "overdamped.h"
 #include "simd.h"
@@ -720,9 +721,9 @@ static void ik_bins_sum_to_virial(void **state)
 /* ------------------------------------------------------ instruction sets */
 
 /* The neighbour build's distance test (neighbor.c scan_segment_avx512) gives
- * the same list, and the candidate pass of the walk (forces.c range_avx512:
- * separations, folds and r^2 eight at a time) and the one-type evaluator
- * (pair_dpd.h dpd_pair_lanes_avx512) the same forces, bit for bit,
+ * the same list, and the candidate pass of the walk (pair_avx512.c range_avx512:
+ * separations, folds and r^2 eight at a time) and the standard style's
+ * one-type evaluator (pair_avx512.c dpd_one_type_avx512) the same forces, bit for bit,
  * as the scalar code at every level the CPU has: a box whose sides differ, so that every
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; a second type
@@ -801,7 +802,7 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
 /* ... for two types (the scalar evaluator at every level; with the second
  * type on a slab, the AVX-512 evaluator on the batches of one type), and for one type
  * with each case of w_R and rc = 1 and 1.5 (one type: the AVX-512 evaluator,
- * pair_dpd.h, and its two forms of r / rc) */
+ * pair_avx512.c, and its two forms of r / rc) */
 static void levels_same_forces(void **state)
 {
     (void)state;
