@@ -364,9 +364,10 @@ if [ "${MODULES:-1}" = 1 ]; then
 fi
 
 # ---- a refactor against the binary before it (issue 24): BASE=path/to/earlier/dpd (e.g. built by
-# `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the three kernels -- the
-# standard scene, the rotating particles of Pan et al. 2008 (bench/pan-fluid.cfg) and the m = 0 solver
-# (the Couette scene of phan-thien-2016 Fig. 3) -- instructions per production particle-step
+# `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the four kernels -- the
+# standard scene, the general weight exponent (the mai-duy-2019 solvent, bench/mai-duy-solvent.cfg in
+# a box of 10: 4000 particles), the rotating particles of Pan et al. 2008 (bench/pan-fluid.cfg) and
+# the m = 0 solver (the Couette scene of phan-thien-2016 Fig. 3) -- instructions per production particle-step
 # (cachegrind, the difference of a long and a short run, deterministic) and CPU time per particle-step
 # (the two binaries alternating, median of REPEAT pairs' ratios). Written to bench/refactor.tsv.
 # Without BASE the section is skipped.
@@ -375,6 +376,7 @@ if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
     kernel_args() {  # KERNEL -> scene and settings of 3000 particles (standard, pan) or its own size (m = 0)
         case $1 in
             standard) echo "bench/standard.cfg --set box=[10.0,10.0,10.0]" ;;
+            pow) echo "bench/mai-duy-solvent.cfg --set box=[10.0,10.0,10.0]" ;;
             pan2008) echo "bench/pan-fluid.cfg" ;;
             m0) echo "experiments/phan-thien-2016/fig03-couette-profile/couette.cfg" ;;
         esac
@@ -392,7 +394,7 @@ if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
     }
     {
         printf 'kernel\tinstructions per particle-step, base\tnew\tnew / base\tCPU time new / base (median of %s pairs)\trange\n' "$REPEAT"
-        for k in standard pan2008 m0; do
+        for k in standard pow pan2008 m0; do
             case $k in m0) short=20 long=60 ;; *) short=50 long=150 ;; esac
             n=$("$DPD" run $(kernel_args $k) --dry-run --out "$out/refactor-plan" | awk '$1 == "particles" { print $2 }')
             ib=$(( $(kernel_irefs "$BASE" $k $long) - $(kernel_irefs "$BASE" $k $short) ))

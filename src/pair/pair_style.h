@@ -1,14 +1,16 @@
 /* pair_style.h - a pair style: the one evaluator of a pair interaction, and
  * what the pair driver (forces.c: the walk and the virial) and the m = 0
  * assembly (overdamped.c) ask of it. The shape is HOOMD-blue's pair
- * evaluators (EvaluatorPairDPDThermo: parameters per type pair, one call per
- * pair returning the force, the energy and the virial's parts, plugged into
- * one templated pair loop) written in C: a style's file fills a PairEvaluator
+ * evaluators (EvaluatorPairDPDThermo: its parameters per type pair, one
+ * evaluation per pair that returns the force, the energy and apart the
+ * conservative force the virial needs, inside the one pair loop of the
+ * PotentialPair template) written in C: a style's file fills a PairEvaluator
  * of inline functions and hands it to the walk template (pair_walk.h), which
  * is compiled once per style and box, so that no pair goes through a
- * function pointer; what runs once per step or per batch (the walk of a
+ * function pointer; what runs once per step, chunk or batch (the walk of a
  * chunk, the vector kernels, the m = 0 terms) is reached through the style's
- * PairStyle, registered by name, as CoMD registers its potentials.
+ * PairStyle, a table of function pointers like CoMD's BasePotential (force,
+ * print, destroy), registered by name.
  *
  * Per type pair a style reads PairParams (system.h): the DPD family's a,
  * gamma, sigma, s, gamma_shear, sigma_shear, rc, and coef[] for parameters of
@@ -46,7 +48,8 @@ typedef struct {
 typedef struct {
     double F[3];                  /* F_ij, the force on i; -F_ij on j */
     double tau[3];                /* spins: the torque on i and on j (eq. 1 of Pan et al. 2008: both -(r_ij / 2) x F_ij) */
-    /* measurement steps (record != 0): */
+    /* read on measurement steps (record != 0) only; a style may fill them always
+     * (the compiler drops what is not read) or only then: */
     double mag[PAIR_PARTS];       /* central styles: each part's magnitude along e_ij */
     double part[PAIR_PARTS][3];   /* other styles: each part as a vector */
     double energy;                /* the pair energy */
