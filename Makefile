@@ -47,12 +47,13 @@ PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
 $(BUILD)/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)
 	@echo "CC $<"
-	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) (forces.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) (forces.c and pair_*.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
 
-# the pair driver without errno from sqrt (an argument never negative there), so that the
-# lane-wise pair loops vectorise (pair_pan2008.h); the same IEEE results
+# the pair driver and the pair styles without errno from sqrt (an argument never negative
+# there), so that the lane-wise pair loops vectorise (pair_pan2008.c); the same IEEE results
 PAIR_DRIVER_FLAGS := -fno-math-errno
-$(BUILD)/forces.o $(BUILD)/bare/forces.o: CFLAGS_ALL += $(PAIR_DRIVER_FLAGS)
+PAIR_DRIVER_OBJ := forces.o pair_dpd.o pair_pan2008.o pair_avx512.o pair_styles.o
+$(addprefix $(BUILD)/,$(PAIR_DRIVER_OBJ)) $(addprefix $(BUILD)/bare/,$(PAIR_DRIVER_OBJ)): CFLAGS_ALL += $(PAIR_DRIVER_FLAGS)
 
 # the objects that print the version are rebuilt when it changes, not only when their source does
 # (an edit compiled before its commit would otherwise keep the older commit's name)
@@ -81,7 +82,7 @@ BARE_OBJ := $(patsubst %.c,$(BUILD)/bare/%.o,$(notdir $(SRC) src/app/main.c))
 $(BUILD)/bare/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)/bare
 	@echo "CC $< (bare)"
-	@$(CC) $(CFLAGS_ALL) $(INCLUDES) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE (forces.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE (forces.c and pair_*.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
 
 $(BARE): $(BARE_OBJ)
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm

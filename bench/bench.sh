@@ -364,17 +364,20 @@ if [ "${MODULES:-1}" = 1 ]; then
 fi
 
 # ---- a refactor against the binary before it (issue 24): BASE=path/to/earlier/dpd (e.g. built by
-# `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the three kernels -- the
-# standard scene, the rotating particles of Pan et al. 2008 (bench/pan-fluid.cfg) and the m = 0 solver
-# (the Couette scene of phan-thien-2016 Fig. 3) -- instructions per production particle-step
-# (cachegrind, the difference of a long and a short run, deterministic) and CPU time per particle-step
-# (the two binaries alternating, median of REPEAT pairs' ratios). Written to bench/refactor.tsv.
+# `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the four kernels -- the
+# standard scene, the general weight exponent (the mai-duy-2019 solvent, bench/mai-duy-solvent.cfg in
+# a box of 10: 4000 particles), the rotating particles of Pan et al. 2008 (bench/pan-fluid.cfg) and
+# the m = 0 solver (the Couette scene of phan-thien-2016 Fig. 3) -- instructions per production particle-step
+# (cachegrind, the difference of a long and a short run, deterministic; valgrind runs the AVX2
+# level, it has no AVX-512) and CPU time per particle-step (the two binaries alternating, median of
+# REPEAT pairs' ratios; and both at once on the two CPUs, swapped). Written to bench/refactor.tsv.
 # Without BASE the section is skipped.
 if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
     [ -x "$BASE" ] || { echo "bench: BASE=$BASE is not an executable"; exit 1; }
     kernel_args() {  # KERNEL -> scene and settings of 3000 particles (standard, pan) or its own size (m = 0)
         case $1 in
             standard) echo "bench/standard.cfg --set box=[10.0,10.0,10.0]" ;;
+            pow) echo "bench/mai-duy-solvent.cfg --set box=[10.0,10.0,10.0]" ;;
             pan2008) echo "bench/pan-fluid.cfg" ;;
             m0) echo "experiments/phan-thien-2016/fig03-couette-profile/couette.cfg" ;;
         esac
@@ -385,30 +388,45 @@ if [ -n "${BASE:-}" ] && [ "${REFACTOR:-1}" = 1 ]; then
             "$1" run $(kernel_args "$2") --out "$out/refactor-cg" --threads 1 --quiet --set steps="$3" \
             --set equilibration=20 2>&1 >/dev/null | awk '/I *refs:/ { gsub(",", "", $NF); print $NF }'
     }
-    kernel_cpu() {  # BIN KERNEL -> production particle-steps per CPU second
+    kernel_cpu() {  # BIN KERNEL STEPS [CPU DIR] -> production particle-steps per CPU second (pinned to CPU)
+        local pin=() dir=refactor-run
+        [ -n "${4:-}" ] && pin=(taskset -c "$4") && dir=$5
         # shellcheck disable=SC2046
-        OMP_NUM_THREADS=1 "$1" run $(kernel_args "$2") --out "$out/refactor-run" --threads 1 --quiet \
-            --set steps="$3" --set equilibration=20 >/dev/null && val "$out/refactor-run" production_particle_steps_per_second_cpu
+        OMP_NUM_THREADS=1 "${pin[@]}" "$1" run $(kernel_args "$2") --out "$out/$dir" --threads 1 --quiet \
+            --set steps="$3" --set equilibration=20 >/dev/null && val "$out/$dir" production_particle_steps_per_second_cpu
     }
+    # the second estimator (as the rotation section's): BASE on CPU 0 and this build on CPU 1 at
+    # once, then swapped; CPU time new / base = sqrt((b0 / n1) (b1 / n0)) of the rates: both see
+    # the host's same moment (on a loaded host the alternating pairs do not), the CPUs cancel
+    conc_ok=0
+    if command -v taskset >/dev/null && [ "$(nproc)" -ge 2 ]; then conc_ok=1; fi
     {
-        printf 'kernel\tinstructions per particle-step, base\tnew\tnew / base\tCPU time new / base (median of %s pairs)\trange\n' "$REPEAT"
-        for k in standard pan2008 m0; do
+        printf 'kernel\tinstructions per particle-step, base\tnew\tnew / base\tCPU time new / base (median of %s pairs)\trange\tboth at once, swapped (median of %s)\trange\n' "$REPEAT" "$REPEAT"
+        for k in standard pow pan2008 m0; do
             case $k in m0) short=20 long=60 ;; *) short=50 long=150 ;; esac
             n=$("$DPD" run $(kernel_args $k) --dry-run --out "$out/refactor-plan" | awk '$1 == "particles" { print $2 }')
             ib=$(( $(kernel_irefs "$BASE" $k $long) - $(kernel_irefs "$BASE" $k $short) ))
             in=$(( $(kernel_irefs "$DPD" $k $long) - $(kernel_irefs "$DPD" $k $short) ))
-            r=""
+            r="" c=""
             for j in $(seq "$REPEAT"); do   # alternating, so slow spells of the machine hit both
                 a=$(kernel_cpu "$BASE" $k $long); b=$(kernel_cpu "$DPD" $k $long)
                 r+="$(awk -v a="$a" -v b="$b" 'BEGIN{print a/b}') "   # CPU time ratio = inverse rate ratio
+                if [ "$conc_ok" = 1 ]; then
+                    kernel_cpu "$BASE" $k $long 0 rf-b0 > "$out/rf-b0.rate" & kernel_cpu "$DPD" $k $long 1 rf-n1 > "$out/rf-n1.rate"; wait
+                    kernel_cpu "$DPD" $k $long 0 rf-n0 > "$out/rf-n0.rate" & kernel_cpu "$BASE" $k $long 1 rf-b1 > "$out/rf-b1.rate"; wait
+                    c+="$(awk -v b0="$(cat "$out/rf-b0.rate")" -v b1="$(cat "$out/rf-b1.rate")" -v n0="$(cat "$out/rf-n0.rate")" \
+                        -v n1="$(cat "$out/rf-n1.rate")" 'BEGIN{print sqrt((b0 / n1) * (b1 / n0))}') "
+                fi
             done
-            printf '%s (%d particles)\t%.1f\t%.1f\t%.4f\t%.3f\t%s\n' "$k" "$n" \
+            printf '%s (%d particles)\t%.1f\t%.1f\t%.4f\t%.3f\t%s\t%s\t%s\n' "$k" "$n" \
                 "$(awk -v i="$ib" -v n="$n" -v s=$((long - short)) 'BEGIN{print i / (n * s)}')" \
                 "$(awk -v i="$in" -v n="$n" -v s=$((long - short)) 'BEGIN{print i / (n * s)}')" \
                 "$(awk -v a="$ib" -v b="$in" 'BEGIN{print b / a}')" \
-                "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)"
+                "$(tr ' ' '\n' <<< "$r" | grep . | median)" "$(tr ' ' '\n' <<< "$r" | grep . | range)" \
+                "$( [ -n "$c" ] && printf '%.3f' "$(tr ' ' '\n' <<< "$c" | grep . | median)" || echo -)" \
+                "$( [ -n "$c" ] && tr ' ' '\n' <<< "$c" | grep . | range || echo -)"
         done
-        printf 'date, commits\t%s\t%s\t-\tbase %s\t%s\n' "$(date -u +%Y-%m-%d)" "$(stamp)" \
+        printf 'date, commits\t%s\t%s\t-\tbase %s\t%s\t-\t-\n' "$(date -u +%Y-%m-%d)" "$(stamp)" \
             "$("$BASE" --version 2>/dev/null | head -1 || echo unknown)" "$(uname -m), $(nproc --all) cores"
     } > "$out/refactor.tsv"
     cp "$out/refactor.tsv" bench/refactor.tsv

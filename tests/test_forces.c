@@ -11,7 +11,9 @@
 #include "box.h"
 #include "neighbor.h"
 #include "forces.h"
+#include "pairutil.h"
 #include "integrator.h"
+#include "overdamped.h"
 #include "simd.h"
 
 #define SKIN 0.3
@@ -427,6 +429,106 @@ static void lees_edwards_unwrapped_continuous(void **state)
     }
 }
 
+/* A uniformly sheared state feels no dissipative force. Particles at
+ * independent uniform positions (an ideal gas, g(r) = 1) move with the imposed
+ * profile v_x = rate (y - L_y / 2) and nothing else; a = 0 and kBT = 0, so
+ * every pair force is dissipative, -gamma w_D (e . v_ij) e, with v_ij =
+ * rate (r_ij)_y x for every pair, across the sliding boundary too, where j's
+ * image one row up moves with + rate L_y (Lees & Edwards 1972). The continuum
+ * then says:
+ *  - the mean dissipative force on a particle is zero: its neighbours lie
+ *    uniformly around it and its F_x is odd in r_ij. This holds for the
+ *    particles within rc of y = 0 and of y = L_y, whose pairs cross the
+ *    boundary: without the image velocity they see neighbours moving
+ *    rate L_y too fast or too slow and are dragged, each slab one way;
+ *  - the dissipative virial is the viscous stress of the dissipative
+ *    viscosity of an ideal gas (Groot & Warren 1997; Marsh, Backx & Ernst
+ *    1997): <W_xy> = (N (N - 1) / 2 V) int d^3r (-gamma w_D rate x^2 y^2 / r^2)
+ *    = -gamma rate (N (N - 1) / V) (2 pi / 15) int_0^rc r^4 w_D dr, which is
+ *    -gamma rate (N (N - 1) / V) 2 pi / 1575 for w_D = (1 - r)^2, rc = 1 (the
+ *    expectation over independent uniform positions is exact: the pair
+ *    density of N points in a periodic box is N (N - 1) / V^2 within rc < L/2).
+ * The m = 0 assembly (overdamped.c) gets the same check: f - A v at v = the
+ * profile is each mobile particle's pair force.
+ * R = 32 independent configurations, the offset spread over [0, L_x); each
+ * mean over them within 5 of its standard errors (Student t, 31 degrees of
+ * freedom: a false alarm of 2e-5 per check). */
+static void sheared_state_feels_no_dissipative_force(void **state)
+{
+    (void)state;
+    enum { R = 32 };
+    const double L[3] = {6.0, 6.0, 6.0}, rate = 0.5, gamma = 4.5, rc = 1.0;
+    const int n = 648;   /* rho = 3 */
+    double low[R], high[R], Wxy[R], od_low[R], od_high[R];
+    for (int c = 0; c < R; c++) {
+        System s;
+        make_system(&s, 3, n, L, rate, 0.0, gamma, 2.0, rc, 1000 + (uint64_t)c);
+        s.kBT = 0.0;
+        system_set_pair(&s, 0, 0, (PairParams){.active = 1, .a = 0.0, .gamma = gamma, .s = 2.0, .rc = rc});
+        s.box.le_offset = fmod((c + 0.5) * 0.618034 * L[0], L[0]);
+        for (int i = 0; i < n; i++) {
+            s.v[3 * i] = s.v_pred[3 * i] = box_stream_vx(&s.box, s.x[3 * i + 1]);
+            s.v[3 * i + 1] = s.v_pred[3 * i + 1] = s.v[3 * i + 2] = s.v_pred[3 * i + 2] = 0.0;
+        }
+        NeighborList nl;
+        ForceWork fw;
+        assert_int_equal(neighbor_init(&nl, &s, SKIN), 0);
+        assert_int_equal(neighbor_build(&nl, &s), 0);
+        assert_int_equal(forces_init(&fw, &s, 0), 0);
+        PairVirial pv = {.bin_axis = -1};
+        forces_compute(&s, &nl, &fw, &pv);
+        /* the m = 0 system of the same state: r = f - A v */
+        OdSystem od;
+        od_init(&od);
+        assert_int_equal(od_assemble(&od, &s, &nl), 0);
+        assert_int_equal(od.nm, n);
+        double *v = malloc(3 * (size_t)n * sizeof(double)), *Av = malloc(3 * (size_t)n * sizeof(double));
+        assert_non_null(v); assert_non_null(Av);
+        od_gather(&od, &s, v);
+        od_matvec(&od, v, Av);
+        double sum[4] = {0, 0, 0, 0};
+        int cnt[2] = {0, 0};
+        for (int i = 0; i < n; i++) {
+            const double y = s.x[3 * i + 1];
+            const int slab = y < rc ? 0 : y >= L[1] - rc ? 1 : -1;
+            if (slab < 0) continue;
+            const int r = od.row_of[i];
+            sum[slab] += s.f[3 * i];
+            sum[2 + slab] += od.f[3 * r] - Av[3 * r];
+            cnt[slab]++;
+        }
+        CHECK_TRUE(cnt[0] > 50 && cnt[1] > 50, "configuration %d: slabs of %d and %d particles", c, cnt[0], cnt[1]);
+        low[c] = sum[0] / cnt[0]; high[c] = sum[1] / cnt[1];
+        od_low[c] = sum[2] / cnt[0]; od_high[c] = sum[3] / cnt[1];
+        Wxy[c] = pv.W[PART_DISSIPATIVE][0][1];
+        CHECK_TRUE(pv.W[PART_CONSERVATIVE][0][1] == 0.0 && pv.W[PART_RANDOM][0][1] == 0.0,
+                   "a = 0 and kBT = 0, yet a conservative or random virial");
+        free(v); free(Av);
+        od_free(&od);
+        forces_free(&fw);
+        neighbor_free(&nl);
+        system_free(&s);
+    }
+    const double V = L[0] * L[1] * L[2];
+    const double W_cont = -gamma * rate * ((double)n * (n - 1) / V) * 2.0 * M_PI / 1575.0;
+    const struct { const char *what; const double *x; double want; } checks[] = {
+        {"mean F_x of the particles within rc of y = 0 (the walk)", low, 0.0},
+        {"mean F_x of the particles within rc of y = L_y (the walk)", high, 0.0},
+        {"mean F_x within rc of y = 0 (m = 0: f - A v)", od_low, 0.0},
+        {"mean F_x within rc of y = L_y (m = 0: f - A v)", od_high, 0.0},
+        {"dissipative virial W_xy against -gamma rate N (N - 1) / V 2 pi / 1575", Wxy, W_cont},
+    };
+    for (size_t k = 0; k < sizeof checks / sizeof checks[0]; k++) {
+        double m = 0.0, q = 0.0;
+        for (int c = 0; c < R; c++) m += checks[k].x[c] / R;
+        for (int c = 0; c < R; c++) q += (checks[k].x[c] - m) * (checks[k].x[c] - m);
+        const double se = sqrt(q / (R - 1) / R);
+        printf("%s: %.5g +- %.2g (want %.5g)\n", checks[k].what, m, se, checks[k].want);
+        CHECK_TRUE(se > 0.0, "%s: no spread over the configurations", checks[k].what);
+        CHECK_ABS(checks[k].what, m, checks[k].want, 5.0 * se);
+    }
+}
+
 /* ---------------------------------------------------------- neighbour list */
 
 /* Every pair within rc (min image) is in the list exactly once, and every
@@ -619,9 +721,9 @@ static void ik_bins_sum_to_virial(void **state)
 /* ------------------------------------------------------ instruction sets */
 
 /* The neighbour build's distance test (neighbor.c scan_segment_avx512) gives
- * the same list, and the candidate pass of the walk (forces.c range_avx512:
- * separations, folds and r^2 eight at a time) and the one-type evaluator
- * (pair_dpd.h dpd_pair_lanes_avx512) the same forces, bit for bit,
+ * the same list, and the candidate pass of the walk (pair_avx512.c range_avx512:
+ * separations, folds and r^2 eight at a time) and the standard style's
+ * one-type evaluator (pair_avx512.c dpd_one_type_avx512) the same forces, bit for bit,
  * as the scalar code at every level the CPU has: a box whose sides differ, so that every
  * fold is exercised; particles on the faces; a coincident pair (no force); a
  * dense cluster, whose lists are longer than a walk batch; a second type
@@ -700,7 +802,7 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
 /* ... for two types (the scalar evaluator at every level; with the second
  * type on a slab, the AVX-512 evaluator on the batches of one type), and for one type
  * with each case of w_R and rc = 1 and 1.5 (one type: the AVX-512 evaluator,
- * pair_dpd.h, and its two forms of r / rc) */
+ * pair_avx512.c, and its two forms of r / rc) */
 static void levels_same_forces(void **state)
 {
     (void)state;
@@ -789,6 +891,7 @@ int main(void)
         cmocka_unit_test(lees_edwards_wrap),
         cmocka_unit_test(le_offset_increment),
         cmocka_unit_test(lees_edwards_unwrapped_continuous),
+        cmocka_unit_test(sheared_state_feels_no_dissipative_force),
         cmocka_unit_test(neighbor_list_shear_vs_brute),
         cmocka_unit_test(neighbor_list_shear_dynamics),
         cmocka_unit_test(ik_distribute_hand),

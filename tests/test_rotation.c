@@ -10,6 +10,7 @@
 #include "rotation.h"
 #include "simd.h"
 #include "forces.h"
+#include "pairutil.h"
 #include "neighbor.h"
 #include "random.h"
 
@@ -205,10 +206,11 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
     system_free(&s);
 }
 
-/* The force loop of steps without the virial (forces.c pan_walk_batch: the
- * pairs lane by lane, vectorised at each instruction set; on AVX-512 also
- * the measurement steps of one-type batches, with the virial) gives the same
- * bits as the pair-by-pair evaluator of measurement steps (pan_pair_force, the portable level),
+/* The force loop of steps without the virial (pair_pan2008.c pan_batch_lanes:
+ * the pairs lane by lane, vectorised at each instruction set; on AVX-512 also
+ * the measurement steps of one-type batches, with the virial: pair_avx512.c
+ * pan_one_type_avx512) gives the same bits as the style's evaluator pair by
+ * pair on measurement steps (pan_pair through the walk, the portable level),
  * forces and torques, at every weight exponent case (s = 0.5, 1, 2 and pow),
  * with and without gamma^S, with and without Lees-Edwards shear, with two
  * types and with one (whose parameters the lanes read once: uniform; its

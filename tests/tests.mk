@@ -13,7 +13,7 @@ else
   TEST_DPD := $(BIN)
 endif
 
-$(BUILD)/tests/test_%: tests/test_%.c tests/testutil.h tests/runutil.h $(BUILD)/libdpd.a $(HDRS)
+$(BUILD)/tests/test_%: tests/test_%.c tests/testutil.h tests/runutil.h tests/pairutil.h $(BUILD)/libdpd.a $(HDRS)
 	@mkdir -p $(BUILD)/tests
 	@echo "CC $<"
 	@$(CC) $(CFLAGS_ALL) $(PKG_CFLAGS) $(INCLUDES) -o $@ $< $(BUILD)/libdpd.a $(PKG_LIBS) $(CMOCKA_FLAGS) -lm $(TEST_LDFLAGS)

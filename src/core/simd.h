@@ -30,4 +30,18 @@ int simd_cap(int cap);
 #define SIMD_PICK(portable, avx2, avx512) (portable)
 #endif
 
+/* A function compiled for AVX2 or AVX-512 (x86-64 builds; elsewhere the
+ * portable code again), and a kernel that exists in x86-64 builds only
+ * (NULL elsewhere): a file that compiles one kernel for every level, or
+ * names the pair backend's (pair_avx512.h), needs no guard of its own. */
+#ifdef DPD_HAVE_X86_SIMD
+#define SIMD_TARGET_AVX2 __attribute__((target("avx2")))
+#define SIMD_TARGET_AVX512 __attribute__((target("avx512f")))
+#define SIMD_X86(kernel) (kernel)
+#else
+#define SIMD_TARGET_AVX2
+#define SIMD_TARGET_AVX512
+#define SIMD_X86(kernel) NULL
+#endif
+
 #endif

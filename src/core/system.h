@@ -35,6 +35,8 @@ typedef struct {
     double sigma_shear;       /* sqrt(2 gamma^S kBT), derived */
     double rc;
     double rc2;               /* rc^2, derived */
+    double coef[7];           /* parameters of a pair style of its own (src/pair/pair_style.h); 7: the
+                               * struct is 128 bytes, an entry of the pair table a shift away */
 } PairParams;
 
 typedef struct {
@@ -64,6 +66,9 @@ typedef struct {
      * NULL otherwise. Angular velocity, its Groot-Warren prediction, torque: 3 n each */
     int rotation;
     double *omega, *omega_pred, *torque;
+    /* the pair style (src/pair/pair_style.h); NULL: the registered style that
+     * serves the scene (rotation scenes Pan et al. 2008, else standard DPD) */
+    const struct PairStyle *pair_style;
 } System;
 
 int  system_alloc(System *s, int n);

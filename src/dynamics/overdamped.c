@@ -11,6 +11,7 @@
 #include <gsl/gsl_linalg.h>
 #include "overdamped.h"
 #include "forces.h"
+#include "pair_style.h"
 #include "integrator.h"
 #include "random.h"
 #include "timers.h"
@@ -140,13 +141,15 @@ static void count_block(void *ctx, int i, int j, const double d[3], double r2, d
 typedef struct {
     OdSystem *od;
     const System *s;
+    const PairStyle *style;   /* the scene's pair style: each pair's terms */
     double inv_sqrt_dt;
     int fill;                 /* blocks written: rows in order, so row ri's land in ostart[ri] .. */
 } AssemblyPass;
 
-/* Pass 2: one pair's share of A (eq. 16) and f (eq. 18). image_vx is the x
- * velocity of j's Lees-Edwards image relative to j: the relative velocity is
- * v_i - v_j - image_vx, and its known part goes into f. */
+/* Pass 2: one pair's share of A (eq. 16) and f (eq. 18), from the pair
+ * style's terms F_ij = (fcr - g e_ij . v_ij) e_ij (PairStyle.overdamped).
+ * image_vx is the x velocity of j's Lees-Edwards image relative to j: the
+ * relative velocity is v_i - v_j - image_vx, and its known part goes into f. */
 static void assemble_pair(void *ctx, int i, int j, const double d[3], double r2, double image_vx)
 {
     AssemblyPass *ap = ctx;
@@ -157,12 +160,9 @@ static void assemble_pair(void *ctx, int i, int j, const double d[3], double r2,
     const double r = sqrt(r2);
     const double e[3] = {d[0] / r, d[1] / r, d[2] / r};
     const PairParams *p = &s->pair[s->type[i]][s->type[j]];
-    const double wc = 1.0 - r / p->rc;                          /* w_C, eq. 5 */
-    const double wd = dissipative_weight(wc, p->s);             /* w_D, eq. 6 */
-    const double wr = random_weight(wc, p->s);                  /* w_R = sqrt(w_D), eq. 7 */
     const double theta = rng_pair_normal(s->seed, s->step, s->id[i], s->id[j]);
-    const double fcr = p->a * wc + p->sigma * wr * theta * ap->inv_sqrt_dt; /* eq. 18, first part */
-    const double g = p->gamma * wd;
+    double fcr, g;   /* eq. 18's first part, and A's coefficient (eq. 16) */
+    ap->style->overdamped(p, r, theta, ap->inv_sqrt_dt, &fcr, &g);
     const double ee_img = g * e[0] * image_vx;                  /* g e e^T (image_vx, 0, 0) = ee_img e */
     if (ri >= 0 && rj >= 0) {                                   /* eq. 16: both unknown */
         add_outer(od->diag + 9 * (size_t)ri, g, e);
@@ -227,7 +227,8 @@ int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
     memset(od->f, 0, 3 * (size_t)nm * sizeof(double));
     memset(od->wall, 0, sizeof od->wall);
     memset(od->fbody, 0, sizeof od->fbody);
-    AssemblyPass pass = {.od = od, .s = s, .inv_sqrt_dt = 1.0 / sqrt(s->dt)};
+    AssemblyPass pass = {.od = od, .s = s, .style = pair_style_of(s), .inv_sqrt_dt = 1.0 / sqrt(s->dt)};
+    if (!pass.style || !pass.style->overdamped || pass.style->nvar != 1) return -1;   /* no m = 0 form */
     pair_visit(s, nl, assemble_pair, &pass);
     /* body force of the mobile particles, as body_forces() in forces.c */
     if (s->has_body_force)

@@ -1,6 +1,6 @@
 /* rotation.c - the angular velocities of rotating particles (Pan, Pivkin &
  * Karniadakis 2008): initial spins and their Groot-Warren integration. Their
- * pair forces and torques are in pair_pan2008.h. */
+ * pair forces and torques are the pair style of src/pair/pair_pan2008.c. */
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>

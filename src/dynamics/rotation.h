@@ -1,7 +1,7 @@
 /* rotation.h - rotating DPD particles with central and shear dissipation
  * (Pan, Pivkin & Karniadakis 2008, eqs 1 and 13-15; the fluid particle model of
  * Espanol 1998 with A~ = 0). Used only by scenes with `rotation = true`: they
- * get angular velocities, torques and the pair evaluator of pair_pan2008.h;
+ * get angular velocities, torques and the pair style of pair_pan2008.c;
  * other scenes pay nothing. */
 #ifndef DPD_ROTATION_H
 #define DPD_ROTATION_H

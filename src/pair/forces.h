@@ -1,6 +1,7 @@
-/* forces.h - the pair driver: DPD pair forces of every model (standard:
- * Groot & Warren 1997, Mai-Duy et al. 2019 eqs 2-7, pair_dpd.h; rotating
- * particles: Pan et al. 2008 eqs 1 and 13-15, pair_pan2008.h) and body forces.
+/* forces.h - the pair driver: the pair forces of the scene's pair style
+ * (pair_style.h; standard DPD: Groot & Warren 1997, Mai-Duy et al. 2019 eqs
+ * 2-7, pair_dpd.c; rotating particles: Pan et al. 2008 eqs 1 and 13-15,
+ * pair_pan2008.c) and body forces.
  * Sums are deterministic for any thread count: the pair list is cut into
  * FORCE_CHUNKS fixed ranges, each accumulates into its own buffer, and the
  * buffers are added in a fixed order. */
@@ -29,11 +30,12 @@ unsigned char *forces_chunk_mask(ForceWork *w, int c);
  * untouched blocks skipped: the same sums); the same for t0/trest if not NULL. */
 void forces_sum_chunks(const ForceWork *w, double *f0, const double *rest, double *t0, const double *trest);
 
-/* Work buffers for the s->n particles of s, and torque buffers if s->rotation
- * (allocated here, never in the force call). Returns 0, or -1 if out of memory. */
+/* Work buffers for the s->n particles of s, and torque buffers if its pair
+ * style has spins (allocated here, never in the force call). Returns 0, or -1
+ * if out of memory or no pair style serves s (pair_style_of). */
 int  forces_init(ForceWork *w, const System *s, int nbins);
 void forces_free(ForceWork *w);
-/* f = pair forces (with v_pred as the velocity; rotation scenes: and the
+/* f = pair forces (with v_pred as the velocity; a style with spins: and the
  * torques, with omega_pred) + body forces. If pv != NULL the virial is
  * accumulated into it (zeroed first; pv->Wbin must hold PAIR_PARTS x nbins x 9
  * doubles when nbins > 0). */
@@ -51,20 +53,5 @@ void forces_body(System *s);
  * Lees-Edwards image relative to j (0 without shear). For the m = 0 assembly. */
 typedef void (*PairVisitor)(void *ctx, int i, int j, const double d[3], double r2, double image_vx);
 void pair_visit(const System *s, const NeighborList *nl, PairVisitor visit, void *ctx);
-
-/* The evaluators' single pairs, exposed for tests. Standard: the three force
- * magnitudes along e_ij; theta is the N(0,1) variate, inv_sqrt_dt scales the
- * noise (theta/sqrt(dt)). */
-void dpd_pair_magnitudes(const PairParams *p, double r, double e_dot_v, double theta,
-                         double inv_sqrt_dt, double *fc, double *fd, double *fr);
-/* Pan et al. 2008: force F_ij on i (F_ji = -F_ij) and torque tau on each of i
- * and j (eq. 1: T_i = T_j = -(r_ij / 2) x F_ij). d = r_i - r_j, dv = v_i - v_j,
- * wsum = Omega_i + Omega_j, theta ~ N(0,1) (central noise), xi[3] ~ N(0,1)
- * (antisymmetric noise). F parts: [0] conservative, [1] dissipative
- * (translational + rotational), [2] random, each a vector; Ftot their sum,
- * rounded as the standard kernel rounds it (bit-identical when gamma^S = 0). */
-void pan2008_pair_force(const PairParams *p, const double d[3], const double dv[3],
-                        const double wsum[3], double theta, const double xi[3],
-                        double inv_sqrt_dt, double F[3][3], double Ftot[3], double tau[3]);
 
 #endif

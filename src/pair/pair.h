@@ -4,10 +4,12 @@
  * writes its forces and torques into, and the virial by part.
  *
  * The pair driver (forces.c) walks the neighbour list of a chunk of particles
- * a batch of PAIR_BATCH entries at a time and hands each batch to an evaluator
- * (pair_dpd.h: standard DPD; pair_pan2008.h: rotating particles), the way
- * HOOMD-blue's PotentialPair hands pairs to an Evaluator. The m = 0 assembly
- * (overdamped.c) visits the same pairs through pair_visit (forces.h). */
+ * a batch of PAIR_BATCH entries at a time (pair_walk.h) and hands each pair to
+ * the evaluator of the scene's pair style (pair_style.h; pair_dpd.c: standard
+ * DPD, pair_pan2008.c: rotating particles), the way HOOMD-blue's PotentialPair
+ * hands pairs to an Evaluator. The m = 0 assembly (overdamped.c) visits the
+ * same pairs through pair_visit (forces.h) and takes each pair's terms from
+ * the style. */
 #ifndef DPD_PAIR_H
 #define DPD_PAIR_H
 
@@ -16,6 +18,9 @@
 #include "neighbor.h"
 #include "weight_pow.h"
 #include "simd.h"
+
+/* the pair table's entries a shift apart (system.h PairParams.coef) */
+_Static_assert(sizeof(PairParams) == 128, "PairParams is 128 bytes");
 
 /* Pairs closer than this have no direction: they exert no force (LAMMPS'
  * EPSILON in pair_dpd.cpp). Springs use it too (bonds.c). */
@@ -137,67 +142,38 @@ static inline double pair_image_vx(const System *s, int i, int j, const int le)
     return DPD_MODULES && le ? box_image_vx(&s->box, s->x[3 * i + 1] - s->x[3 * j + 1]) : 0.0;
 }
 
-#ifdef DPD_HAVE_X86_SIMD
-#include <immintrin.h>
-/* r / rc in eight lanes, as the scalar evaluators divide (eq. 5); when rc is a
- * power of two (rc = 1 in most scenes) the product r * (1 / rc) is the same
- * number, without the divider, which the lanes' square roots keep busy.
- * inv_rc: rc_power_of_two_inverse(rc), formed once. */
-static inline double rc_power_of_two_inverse(double rc)
+/* Some type pair of the scene has a general weight exponent (weight_general) */
+static inline int scene_weights_general(const System *s)
 {
-    int e;
-    return frexp(rc, &e) == 0.5 ? 1.0 / rc : 0.0;
-}
-static inline __attribute__((target("avx512f"), always_inline))
-__m512d r_over_rc_avx512(__m512d r, double rc, double inv_rc)
-{
-    return inv_rc != 0.0 ? _mm512_mul_pd(r, _mm512_set1_pd(inv_rc)) : _mm512_div_pd(r, _mm512_set1_pd(rc));
+    for (int a = 0; a < s->ntypes; a++)
+        for (int b = 0; b < s->ntypes; b++)
+            if (s->pair[a][b].active && weight_general(s->pair[a][b].s)) return 1;
+    return 0;
 }
 
-/* The lanes of live whose r^2 interacts (pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts) */
-static inline __attribute__((target("avx512f"), always_inline))
-__mmask8 pair_interacts_avx512(__m512d r2, __m512d rc2, __m512d eps2, __mmask8 live)
+/* w_R (eq. 7) of every pair of a walk batch [i, ie) (separations and r^2 in
+ * dd, count[p - i] entries of particle p) that interacts with a general
+ * exponent, all at once (weight_pow_batch); other entries get a placeholder.
+ * w_C = 1 - r/rc as the evaluators form it, so the same bits as
+ * random_weight one pair at a time. The styles of the DPD family prepare
+ * their batches with it (PairEvaluator.prepare). */
+static inline void pair_random_weights(const System *s, int i, int ie, const double (*dd)[4], const int *near,
+                                       const int *count, double *wr)
 {
-    return live & ~(_mm512_cmp_pd_mask(r2, rc2, _CMP_GE_OQ) | _mm512_cmp_pd_mask(r2, eps2, _CMP_LT_OQ));
-}
-
-/* Pairs q0 .. q0 + cnt - 1 (cnt <= 8) of a particle's run in the walk's
- * planes (pl: x, y, z, r^2, PAIR_PLANE apart; near: j): their separations,
- * 3 j for the gathers, the live lanes and those that interact
- * (pair_interacts: !(r2 >= rc2 || r2 < eps2), a NaN interacts). */
-typedef struct { __m512d d0, d1, d2, r2; __m256i j3; __mmask8 live, act; int cnt; } PairLanes8;
-static inline __attribute__((target("avx512f"), always_inline))
-PairLanes8 pair_lanes_load_avx512(const double *pl, const int *near, int q0, int m, __m512d rc2, __m512d eps2)
-{
-    PairLanes8 g;
-    g.cnt = m - q0 < 8 ? m - q0 : 8;
-    g.live = (__mmask8)((1u << g.cnt) - 1);
-    g.d0 = _mm512_maskz_loadu_pd(g.live, pl + q0);
-    g.d1 = _mm512_maskz_loadu_pd(g.live, pl + PAIR_PLANE + q0);
-    g.d2 = _mm512_maskz_loadu_pd(g.live, pl + 2 * PAIR_PLANE + q0);
-    g.r2 = _mm512_maskz_loadu_pd(g.live, pl + 3 * PAIR_PLANE + q0);
-    g.act = pair_interacts_avx512(g.r2, rc2, eps2, g.live);
-    const __m256i j = _mm512_castsi512_si256(_mm512_maskz_loadu_epi32((__mmask16)g.live, near + q0));
-    g.j3 = _mm256_add_epi32(j, _mm256_add_epi32(j, j));
-    return g;
-}
-
-/* A measurement step's sums of eight pairs: their virial terms (t[k], lane l
- * pair l's component k = 9 part + 3 a + b, PairVirial W's order) and energies
- * e, added pair by pair in list order (the lanes set in act) into W and epot
- * as the pair-by-pair evaluators add them: the same bits. */
-static inline __attribute__((target("avx512f"), always_inline))
-void virial_lanes_add(PairVirial *pv, const __m512d t[PAIR_PARTS * 9], __m512d e, __mmask8 act)
-{
-    double T[PAIR_PARTS * 9][8], E[8], *W = &pv->W[0][0][0];
-    for (int k = 0; k < PAIR_PARTS * 9; k++) _mm512_storeu_pd(T[k], t[k]);
-    _mm512_storeu_pd(E, e);
-    for (unsigned b = act; b; b &= b - 1) {
-        const int l = __builtin_ctz(b);
-        for (int k = 0; k < PAIR_PARTS * 9; k++) W[k] += T[k][l];
-        pv->epot += E[l];
+    double w[PAIR_BATCH + 8], e[PAIR_BATCH + 8];
+    int k = 0;
+    for (int p = i; p < ie; p++) {
+        const int ti = s->type[p];
+        for (int q = 0; q < count[p - i]; q++, k++) {
+            const PairParams *pp = &s->pair[ti][s->type[near[k]]];
+            const double r2k = dd[k][3];
+            const int use = weight_general(pp->s) && pair_interacts(pp, r2k);
+            w[k] = use ? 1.0 - sqrt(r2k) / pp->rc : 1.0;
+            e[k] = use ? 0.5 * pp->s : 1.0;
+        }
     }
+    for (int q = k; q < k + 8; q++) w[q] = e[q] = 1.0;
+    weight_pow_batch(w, e, wr, k);
 }
-#endif
 
 #endif
