@@ -1,7 +1,7 @@
 #!/bin/bash
 # run-tests.sh BIN... - run cmocka test binaries and the scripts tests/scene_errors.sh,
 # tests/checkpoint.sh, tests/io_errors.sh, tests/blowup.sh, tests/bare.sh (BARE: the bare build), tests/fit_line.sh, tests/tcaf_fit.sh,
-# tests/numerics.sh (the analyses' statistics, tools/lib/numerics.awk)
+# tests/numerics.sh (the analyses' statistics, tools/lib/numerics.awk), tests/precision.sh (issue 38: the precision each claim needs)
 # tests/library_exits.sh and tests/h5md.sh (MDAnalysis reads the trajectories; skipped, saying so, without it),
 # add up their checks, print "N passed, M failed", exit 1 if M > 0.
 # A binary that dies before cmocka's summary (crash, sanitizer abort) counts
@@ -43,7 +43,7 @@ for bin in "$@"; do
     pass=$((pass + p)); fail=$((fail + f))
     rm -f "$log"
 done
-for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh; do
+for script in tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/precision.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh; do
 name=$(basename "$script")
 log=$(mktemp)
 t0=$(date +%s.%N)
