@@ -4,6 +4,10 @@
 # box, from the committed results alone (nothing is simulated).
 #
 #   precision.sh [CLAIMS]   TSV on stdout (CLAIMS: the table of claims below, default claims.tsv here)
+#   PRECISION_REL=R precision.sh ENTRIES
+#                           the same for a relative stderr R of each entry instead of a band (item 5:
+#                           Pan's 0.5 %): ENTRIES has a sixth column, the paper's value; se to reach is
+#                           R x |paper's value| and R x |our value|; lo, hi and the verdict are "-"
 #
 # The rule: a claim's band [lo, hi] is never widened; with the run's stderr se the claim PASSes when
 # value +- 2 se lies inside the band, FAILs when it lies wholly outside, else is UNRESOLVED. So a run
@@ -46,10 +50,13 @@ run_cost() {
 out=$(mktemp); trap 'rm -f "$out"' EXIT
 {
 printf 'experiment\tquantity\tlo\thi\tpaper\tvalue\tse\tverdict_now\tse_decides_paper\tse_decides_ours\tprod_time_now\tcpu_h_now\tcpu_h_paper\tcpu_h_ours\tlongest_sim_h_paper\tnote\n'
-while IFS=$'\t' read -r exp tier q groups note; do
+while IFS= read -r line; do
+    # fields split at tabs, empty ones kept (a tab in IFS would merge them)
+    IFS=$'\037' read -r exp tier q groups note paper_value <<< "$(printf '%s' "$line" | tr '\t' '\037')"
     case $exp in ''|'#'*|experiment) continue ;; esac
     res=$root/results/$exp/$tier expdir=$root/experiments/$exp
-    band=$(awk -F'\t' -v q="$q" '$1 == q && $2 == "paper" { print $3 "\t" $4 "\t" $6; exit }' "$expdir/bands.tsv")
+    if [ -n "${PRECISION_REL:-}" ]; then band="-	-	${paper_value:--}"
+    else band=$(awk -F'\t' -v q="$q" '$1 == q && $2 == "paper" { print $3 "\t" $4 "\t" $6; exit }' "$expdir/bands.tsv"); fi
     vs=$(awk -F'\t' -v q="$q" '$1 == q { print $2 "\t" $3; exit }' "$res/summary.tsv")
     [ -n "$band" ] && [ -n "$vs" ] || { echo "precision.sh: $exp $q: no paper band or no committed value" >&2; exit 1; }
     # each group: its runs' production CPU (a_k = se_k^2 x CPU_k), equilibration CPU, time units
@@ -67,7 +74,7 @@ while IFS=$'\t' read -r exp tier q groups note; do
         rel=-; [ "$relq" != - ] && rel=$(awk -F'\t' -v q="$relq" '$1 == q { print $3 / ($2 < 0 ? -$2 : $2); exit }' "$res/summary.tsv")
         parts="$parts $pc:$ec:$tu:$rel:$(echo "$runs" | tr ',' ' ' | wc -w)"
     done
-    printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$exp" "$q" "$band" "$vs" "$parts" "${note:-}" | awk -F'\t' '
+    printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$exp" "$q" "$band" "$vs" "$parts" "${note:-}" | awk -F'\t' -v relmode="${PRECISION_REL:-}" '
         function dist(x) { return x < lo ? lo - x : (x > hi ? x - hi : (x - lo < hi - x ? x - lo : hi - x)) }
         function hours(se,    c) { if (se <= 0) return "inf"; c = S * S / (se * se) + EQ; return sprintf("%.4g", c / 3600) }
         function longest(se,    c) { if (se <= 0) return "inf"; c = S * S / (se * se) / NR_ + EQ / NR_; return sprintf("%.4g", c / 3600) }
@@ -79,8 +86,9 @@ while IFS=$'\t' read -r exp tier q groups note; do
               if (rel[i] != "-") { s2[i] = (v * rel[i]) ^ 2; fixed += s2[i] } }
           for (i = 1; i <= n; i++) { if (rel[i] == "-") s2[i] = var - fixed; if (s2[i] < 0) s2[i] = 0
               S += sqrt(s2[i] * pc[i]); EQ += ec[i]; if (i == 1) { T = f[3] + 0; split(g[1], f1, ":"); T = f1[3]; NR_ = nr[1] } }
+          if (relmode != "") { verdict = "-"; sp = paper == "-" ? -1 : relmode * (paper < 0 ? -paper : paper); so = relmode * (v < 0 ? -v : v) } else {
           verdict = (v - 2 * se >= lo && v + 2 * se <= hi) ? "PASS" : ((v + 2 * se < lo || v - 2 * se > hi) ? "FAIL" : "UNRESOLVED")
-          sp = paper == "-" ? -1 : dist(paper) / 2; so = dist(v) / 2
+          sp = paper == "-" ? -1 : dist(paper) / 2; so = dist(v) / 2 }
           cnow = 0; for (i = 1; i <= n; i++) cnow += pc[i] + ec[i]
           printf "%s\t%s\t%s\t%s\t%s\t%.6g\t%.4g\t%s\t%.3g\t%.3g\t%.6g\t%.3g\t%s\t%s\t%s\t%s\n", ex, q, lo, hi, paper, v, se, verdict,
                  sp, so, T, cnow / 3600, hours(sp), hours(so), longest(sp), note }'
