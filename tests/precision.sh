@@ -46,7 +46,7 @@ if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims.tsv" >
     near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; exit !(d <= 1e-3 * (b < 0 ? -b : b) + 1e-12 && -d <= 1e-3 * (b < 0 ? -b : b) + 1e-12) }'; }
     check() {   # QUANTITY COLUMN EXPECTED WHY
         local v; v=$(col "$1" "$2")
-        if [ "$3" = inf ] || [ "$3" = PASS ] || [ "$3" = FAIL ] || [ "$3" = UNRESOLVED ]; then
+        if [ "$3" = inf ] || [ "$3" = PASS ] || [ "$3" = FAIL ] || [ "$3" = UNRESOLVED ] || [ "$3" = - ]; then
             [ "$v" = "$3" ] && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
         else
             near "$v" "$3" && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
@@ -68,6 +68,29 @@ if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims.tsv" >
     check eq prod_time_now 80 "8000 production steps x dt 0.01"
 else
     bad "precision.sh on the synthetic tree" "$(cat "$tmp/err")"
+fi
+# issue 37's bands.tsv (a kind column; columns found by name; a gate row of the same name skipped)
+mkdir -p "$t/experiments/pan-2008/fake2" "$t/results/pan-2008/fake2/reduced/runs"
+cp "$t/experiments/pan-2008/fake/plain.cfg" "$t/experiments/pan-2008/fake2/"
+printf 'quantity\ttier\tkind\tlo\thi\tk_sigma\tresolution\tpaper\tsource\n' > "$t/experiments/pan-2008/fake2/bands.tsv"
+printf 'inside\tpaper\tgate\t0\t9\t3\t-\t-\tset-up\ninside\tpaper\tclaim\t0.9\t1.1\t-\t-\t1.0\tsynthetic\n' >> "$t/experiments/pan-2008/fake2/bands.tsv"
+cp "$res/summary.tsv" "$t/results/pan-2008/fake2/reduced/"; cp -r "$res/runs/r1" "$t/results/pan-2008/fake2/reduced/runs/"
+printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake2	reduced	inside	r1	" > "$t/claims2.tsv"
+if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims2.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+    check inside se_decides_paper 0.05 "issue 37's format: the claim row's band, not the gate's"
+    check inside cpu_h_ours 0.32 "issue 37's format: as before"
+else
+    bad "precision.sh on issue 37's bands format" "$(cat "$tmp/err")"
+fi
+# the relative mode (item 5): a stderr of 0.5 % of the paper's value and of ours, no band needed
+printf '%s\n' "experiment	tier	quantity	groups	note	paper" "pan-2008/fake	reduced	inside	r1		1.0" > "$t/entries.tsv"
+if PRECISION_REL=0.005 DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/entries.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+    check inside se_decides_paper 0.005 "0.5 % of the paper's 1.0"
+    check inside cpu_h_paper 8 "0.5 h x (0.02 / 0.005)^2"
+    check inside cpu_h_ours 7.256 "0.5 h x (0.02 / 0.00525)^2"
+    check inside verdict_now - "no band"
+else
+    bad "precision.sh PRECISION_REL=0.005" "$(cat "$tmp/err")"
 fi
 # a claim without a paper band is refused, naming it
 printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	nosuch	r1	" > "$t/bad.tsv"

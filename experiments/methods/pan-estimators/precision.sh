@@ -56,7 +56,8 @@ while IFS= read -r line; do
     case $exp in ''|'#'*|experiment) continue ;; esac
     res=$root/results/$exp/$tier expdir=$root/experiments/$exp
     if [ -n "${PRECISION_REL:-}" ]; then band="-	-	${paper_value:--}"
-    else band=$(awk -F'\t' -v q="$q" '$1 == q && $2 == "paper" { print $3 "\t" $4 "\t" $6; exit }' "$expdir/bands.tsv"); fi
+    else band=$(awk -F'\t' -v q="$q" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }   # columns by name (issue 37 adds some)
+        $1 == q && $2 == "paper" && (!("kind" in c) || $c["kind"] == "claim") { print $c["lo"] "\t" $c["hi"] "\t" $c["paper"]; exit }' "$expdir/bands.tsv"); fi
     vs=$(awk -F'\t' -v q="$q" '$1 == q { print $2 "\t" $3; exit }' "$res/summary.tsv")
     [ -n "$band" ] && [ -n "$vs" ] || { echo "precision.sh: $exp $q: no paper band or no committed value" >&2; exit 1; }
     # each group: its runs' production CPU (a_k = se_k^2 x CPU_k), equilibration CPU, time units
