@@ -59,7 +59,8 @@ for w in $LIN; do
     paste <(get . torque_ratio_gS5.5_W$W) <(get . torque_ratio_gS5.5) | num_awk -F'\t' -v W=$W -v W0=$OMEGA '{
         num_ratio($1, $2, $3, $4, o); print num_row("linearity_W" W "_over_W" W0, o) }' >> "$OUT/summary.tsv"
 done
-# slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares)
-num_awk -F'\t' 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3; s[n] = $4 }
+# slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares), at the paper's
+# Omega = -0.4: a run at another Omega (the paper tier's -2) scaled by 0.4 / |Omega| (Stokes flow)
+num_awk -F'\t' -v f=$(awk -v w=$OMEGA 'BEGIN { printf "%.10g", 0.4 / (w < 0 ? -w : w) }') 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3 * f; s[n] = $4 * f }
     END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \
     "$OUT/torque.tsv" >> "$OUT/summary.tsv"
