@@ -111,6 +111,9 @@ windows() {
 pair_blocks() {
     local f=$OUT/runs/$1/sphere_blocks.tsv nb=50
     [ -f "$f" ] && return 0
+    # (a planned run has no run.h5 yet: the pass stops here, as tab03's; without this check the
+    # failing h5_series inside paste would leave a table of nan blocks that later passes keep)
+    [ -f "$OUT/runs/$1/run.h5" ] || { echo "pan-estimators: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
     paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
           <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
         num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
