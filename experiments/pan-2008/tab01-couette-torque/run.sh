@@ -8,8 +8,9 @@ MU=3.6388 R=0.2737     # the paper's mu and R in eq. 21
 # row runs long enough for a stderr of about 6 % of its eq. 21 torque: 2500, 800, 800, 400 time units.
 # 50 blocks (25 to 8 time units each, all far longer than the correlation time) estimate the
 # stderr to about 10 %, against 16 % with 20.
-# Paper tier (not run): the paper's 0.5 % on each row's torque, with variance x run length 2.0 (the
-# reduced tier's rows: 1.5-2.2): 590000, 145000, 145000, 65000 time units.
+# Paper tier (issue 38, README): each row long enough to decide its band under issue 37's rule (a
+# stderr a third of the paper value's distance to the band's edge, with variance x run length 2.0):
+# 34000 (two replicas of 17000), 6000, 9000, 16000 time units.
 case $TIER in
     quick) tier=(--set steps=6000); ROWS="1 4" ;;
     reduced|paper) tier=(--set measure.blocks=50); ROWS="1 2 3 4" ;;
@@ -17,7 +18,7 @@ esac
 tier+=(--set measure.profile.per_block=true)   # the vorticity's error from the blocks (block_slope)
 row_steps() { case $TIER in quick) ;;
     reduced) case $1 in 1) echo 250000;; 2|3) echo 80000;; 4) echo 40000;; esac;;
-    paper) case $1 in 1) echo 59000000;; 2|3) echo 14500000;; 4) echo 6500000;; esac;; esac; }
+    paper) case $1 in 1) echo 1700000;; 2) echo 600000;; 3) echo 900000;; 4) echo 1600000;; esac;; esac; }
 row_omega() { case $1 in 1|2) echo 0.0;; 3|4) echo -0.2;; esac; }
 row_curl()  { case $1 in 1|3) echo 0.2;; 2|4) echo 0.4;; esac; }
 paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) echo 1.0659;; esac; }
@@ -26,7 +27,7 @@ paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) e
 # (seed 9011), decided before it ran: row 1 is the equal-weight mean of the two runs, its expected
 # stderr 0.080 / sqrt 2 = 0.057. The torque's noise is thermal and the same in every row (README), so
 # a harder drive is the paper's row 2 (curl/2 = 0.4), the linear-response check beside it.
-row_runs() { case $TIER:$1 in reduced:1) echo "row1 row1r2";; *) echo "row$1";; esac; }
+row_runs() { case $TIER:$1 in reduced:1|paper:1) echo "row1 row1r2";; *) echo "row$1";; esac; }
 run_seed() { case $1 in row1r2) echo 9011;; *) echo $((9000 + ${1#row}));; esac; }
 # the simulations: one per row (row 1 of the reduced tier: two)
 for r in $ROWS; do

@@ -10,12 +10,22 @@ case $TIER in
 esac
 # Reduced tier (the committed result, README): rows 1, 2, 3 run 21000, 5300 and 1100 time units, the
 # lengths at which the torque's stderr is about 10 % of eq. 22 (torque noise variance x run length
-# about 1.4 in torque^2 x time, measured at 500 time units). Paper tier (not run): the paper's 0.5 %
-# on each row's torque with the same 1.4: 8.6e6, 2.15e6 and 5.4e5 time units (the empty channel's
+# about 1.4 in torque^2 x time, measured at 500 time units). Paper tier (issue 38, README): each row's
+# torque to a stderr a third of the paper value's distance to its band's edge (issue 37's rule; the
+# reduced rows' noise): 530000, 63000 and 9000 time units, as 20, 3 and 1 independent runs of 26500,
+# 21000 and 9000 (no run above about an hour); the drags are then decided too (the empty channel's
 # 400 already gives u_h to 0.4 %).
 row_steps() { case $TIER in
     reduced) case $1 in 1) echo 2100000;; 2) echo 530000;; 3) echo 110000;; esac;;
-    paper) case $1 in 1) echo 860000000;; 2) echo 215000000;; 3) echo 54000000;; esac;; esac; }
+    paper) case $1 in 1) echo 2650000;; 2) echo 2100000;; 3) echo 900000;; esac;; esac; }
+# the runs of a row: one, or at the paper tier replicas row<r>, row<r>r2, ... (seeds 2200 + r, then
+# 2200 + 10 k + r for replica k)
+row_reps() { case $TIER:$1 in paper:1) echo 20;; paper:2) echo 3;; *) echo 1;; esac; }
+row_runs() { local k; echo row$1; for k in $(seq 2 $(row_reps $1)); do echo row$1r$k; done; }
+run_seed() { case $1 in row?r*) echo $((2200 + 10 * ${1##*r} + ${1:3:1}));; *) echo $((2200 + ${1#row}));; esac; }
+# mean_runs: the equal-weight mean of "value<TAB>stderr" lines (replicas of equal length), stderr
+# sqrt(sum se^2) / n
+mean_runs() { num_awk -F'\t' '{n++; x[n] = $1; e[n] = $2} END{num_set(o, num_mean(x, n), num_quad(e, n) / n); printf "%s", num_pair(o)}'; }
 row_g()     { case $1 in 1) echo 0.05;; 2) echo 0.10;; 3) echo 0.20;; esac; }
 paper_F()   { case $1 in 1) echo 4.4881;; 2) echo 9.689;; 3) echo 18.881;; esac; }
 paper_T()   { case $1 in 1) echo 0.0838;; 2) echo 0.163;; 3) echo 0.313;; esac; }
@@ -24,7 +34,9 @@ dpd_run empty poiseuille-empty.cfg "${emp[@]}" --set "types.[0].body_force=[$GRE
     --set measure.profile.per_block=true
 for r in $ROWS; do
     len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
-    dpd_run row$r poiseuille-sphere.cfg "${sph[@]}" "${len[@]}" --set "types.[0].body_force=[$(row_g $r),0.0,0.0]" --set "seed=$((2200 + r))"
+    for n in $(row_runs $r); do
+        dpd_run $n poiseuille-sphere.cfg "${sph[@]}" "${len[@]}" --set "types.[0].body_force=[$(row_g $r),0.0,0.0]" --set "seed=$(run_seed $n)"
+    done
 done
 # the analysis
 # undisturbed channel at g = GREF: u at z = 3 (mean of the two 0.25-wide bins either side, per
@@ -45,7 +57,9 @@ for r in $ROWS; do
         F = 6*pi*m*$1*R * (1 - q^2/9) / (1 - 0.6526*q + 0.3160*q^3 - 0.242*q^4)
         T = 8/3*pi*m*$1*R^3/h * (1 + 0.0758*q + 0.049*q^2)
         printf "%.10g %.10g\n", F, T}')
-    F=$(get row$r drag_on_colloid_x) T=$(get row$r torque_on_colloid_y)   # both without the zero-mean random part
+    # both without the zero-mean random part; replicas: their equal-weight mean
+    F=$(for n in $(row_runs $r); do get $n drag_on_colloid_x; done | mean_runs)
+    T=$(for n in $(row_runs $r); do get $n torque_on_colloid_y; done | mean_runs)
     emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$uh"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $g "$uh" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table2.data.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\n' $r "$uh" "$F" "$T" $Fth $Tth | awk -F'\t' -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
@@ -67,7 +81,7 @@ if [ "$TIER" != quick ]; then
         done
     done
     for r in $ROWS; do
-        get . torque_row$r | awk -F'\t' -v t=$(( $(row_steps $r) / 100 )) -v r=$r '{v = $2 * $2 * t
+        get . torque_row$r | awk -F'\t' -v t=$(( $(row_steps $r) * $(row_reps $r) / 100 )) -v r=$r '{v = $2 * $2 * t
             printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / 49)}' >> "$OUT/summary.tsv"
     done
 fi

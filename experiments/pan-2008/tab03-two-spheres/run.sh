@@ -12,13 +12,19 @@ case $TIER in
     # reduced (the committed result, README): the paper's box; 50 + 600 time units per row (blocks
     # of 30, above the box's slowest shear mode L^2 / (4 pi^2 nu) = 19), about 1.2 CPU-hours per row
     reduced) L=30; ROWS="1 2 3"; len=(--set equilibration=5000 --set steps=60000) ;;
-    # paper (not run): the paper's box, each row long enough for the paper's 0.5 % on its torque
-    # (paper_steps; README)
+    # paper (issue 38, README): the paper's box; each row long enough to decide its drag under issue 37's
+    # rule (a stderr a third of the paper value's distance to the band's edge): 1500, 2300 and 7200
+    # time units, row 3 as three runs of 2400 (no run above about 2 hours), which also decides its
+    # torque if it is as far from eq. 23 as the 12^3 box's (README); rows 1-2's torques stay undecided
     paper) L=30; ROWS="1 2 3"; len=(--set equilibration=5000) ;;
 esac
-# the paper tier's production per row: 4.7e7, 1.27e7 and 2.5e6 time units (the reduced tier's torque
-# stderr, 0.037, 0.033 and 0.030 in 600 time units, scaled to 0.5 % of eq. 23's torque)
-paper_steps() { case $1 in 1) echo 4700000000L;; 2) echo 1270000000;; 3) echo 250000000;; esac; }   # L: a 64-bit integer (libconfig)
+# the paper tier's production per run (issue 38): 1500, 2300 and 3 x 2400 time units for rows 1-3
+# (until issue 38: 4.7e7, 1.27e7 and 2.5e6, the reduced tier's torque stderr scaled to 0.5 % of
+# eq. 23's torque: about 45,000 CPU-hours, not run)
+paper_steps() { case $1 in 1) echo 150000;; 2) echo 230000;; 3) echo 240000;; esac; }
+# the runs of a row: one, or (paper tier, row 3) replicas row3, row3r2, row3r3 (seeds 2303, 2323, 2333)
+row_runs() { case $TIER:$1 in paper:3) echo "row3 row3r2 row3r3";; *) echo row$1;; esac; }
+run_seed() { case $1 in row?r*) echo $((2300 + 10 * ${1##*r} + ${1:3:1}));; *) echo $((2300 + ${1#row}));; esac; }
 row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
@@ -28,9 +34,11 @@ for r in $ROWS; do
     l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
     ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
     rl=(); [ "$TIER" = paper ] && rl=(--set "steps=$(paper_steps $r)")
-    dpd_run row$r two-spheres.cfg "${len[@]}" "${rl[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
-        --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
-        --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2300 + r))"
+    for n in $(row_runs $r); do
+        dpd_run $n two-spheres.cfg "${len[@]}" "${rl[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
+            --set "types.[0].hold_mean_velocity=[$U,0.0,0.0]" --set "measure.blocks=$B" \
+            --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$(run_seed $n)"
+    done
 done
 # Linear response of a harder drive (reduced tier only; issue 23 item 5, README "Harder drive"): the
 # torque's signal grows with u while its thermal noise should not, so a stronger drive is the cheapest
@@ -77,6 +85,8 @@ sphere_blocks() {
                     for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
                     printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
 }
+# row_blocks R: the sphere_blocks of row R's runs, one header
+row_blocks() { local n; echo "block	drag	torque"; for n in $(row_runs $1); do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
 column_mean() {
     num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%s", num_pair(o) }' "$1"
@@ -88,8 +98,9 @@ for r in $ROWS; do
     u="$U	0"
     emit "u_row$r" $u
     # drag per sphere (without the zero-mean random part) and the antisymmetric torque
-    sphere_blocks row$r
-    F=$(column_mean "$OUT/runs/row$r/sphere_blocks.tsv" 2) T=$(column_mean "$OUT/runs/row$r/sphere_blocks.tsv" 3)
+    # (replicas of equal length: the blocks of all of them, each block an independent mean)
+    for n in $(row_runs $r); do sphere_blocks $n; done
+    F=$(row_blocks $r | column_mean /dev/stdin 2) T=$(row_blocks $r | column_mean /dev/stdin 3)
     read -r Fth Tth < <(eq23 $l $U)
     emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$u"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $l "$u" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table3.data.tsv"
@@ -99,12 +110,12 @@ for r in $ROWS; do
 done
 # the torque's noise: variance of the mean x production time (torque^2 x time), the quantity that
 # sets every projected run length (README); equilibration 5000 steps (reduced), 1500 (quick scene)
-eq_steps() { case $TIER in reduced) echo 5000;; *) echo 1500;; esac; }
+eq_steps() { case $TIER in reduced|paper) echo 5000;; *) echo 1500;; esac; }
 # (its stderr: that of a variance from n blocks, sqrt(2 / (n - 1)))
 noise() { awk -v s=$1 -v t=$2 -v n=$3 'BEGIN{v = s * s * t; printf "%.4g\t%.2g", v, v * sqrt(2 / (n - 1))}'; }
 for r in $ROWS; do
-    t=$(get row$r steps | awk -v e=$(eq_steps) '{print ($1 - e) * 0.01}')
-    emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $B)
+    t=$(for n in $(row_runs $r); do get $n steps; done | awk -F'\t' -v e=$(eq_steps) '{ s += ($1 - e) * 0.01 } END { print s }')
+    emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $((B * $(row_runs $r | wc -w))))
 done
 # the harder drive's linear response (reduced tier): the antisymmetric torque and the drag per sphere
 # per unit u at each u, their ratios between successive u (banded: 1.2 against 0.6), the torque's
