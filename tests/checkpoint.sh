@@ -285,12 +285,17 @@ cp tests/checkpoint-tcaf.cfg "$rx/experiments/t/e/tcaf.cfg"
 cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
-dpd_run rot rot.cfg
-dpd_run c3d c3d.cfg
-dpd_run tcaf tcaf.cfg --threads 2
-emit_from rot particles n_rot
-emit_from c3d colloids n_colloids
-emit_from tcaf tcaf_origins n_origins
+simulations() {
+    dpd_run rot rot.cfg
+    dpd_run c3d c3d.cfg
+    dpd_run tcaf tcaf.cfg --threads 2
+}
+analysis() {
+    emit_from rot particles n_rot
+    emit_from c3d colloids n_colloids
+    emit_from tcaf tcaf_origins n_origins
+}
+experiment
 EOF2
 cat > "$rx/crashing-dpd" <<'EOF2'
 #!/usr/bin/env bash

@@ -697,10 +697,15 @@ EOF2
 cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
+simulations() {
 dpd_run a s.cfg --set x=1
 dpd_run b s.cfg --set x=2
+}
+analysis() {
 emit_from a q q_a
 emit_from b q q_b
+}
+experiment
 EOF2
 chmod +x "$rx/fake-dpd" "$rx/experiments/t/e/run.sh"
 echo 'x = 1;' > "$rx/experiments/t/e/s.cfg"
@@ -734,7 +739,7 @@ else bad "run-experiment: after a change ran: $(tr '\n' ' ' < "$log")"; fi
 # simulations of an interrupted attempt; another binary starts afresh
 cp "$rx/experiments/t/e/run.sh" "$root/run.sh.orig"
 T "run-experiment: interrupted once more" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
-echo 'emit extra 1 0' >> "$rx/experiments/t/e/run.sh"
+sed -i 's/^emit_from b q q_b$/&\nemit extra 1 0/' "$rx/experiments/t/e/run.sh"
 : > "$log"
 T "run-experiment: resumes after a change of the analysis" 0 RX "$rx/tools/run-experiment" t/e quick
 if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "run-experiment: analysis change keeps the finished simulation"
@@ -762,28 +767,87 @@ T "run-experiment: unknown option refused" 1 RX "$rx/tools/run-experiment" t/e q
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
 T "run-experiment --reanalyse: back to the original arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
 # declare, then dispatch: a plan pass records the simulations, the pool runs them at once, the
-# next pass plans again; a run.sh that interleaves simulations and analysis takes rounds
+# next pass plans again; a run.sh whose later simulations take arguments from its analysis declares rounds
 mkdir -p "$rx/experiments/t/p"
 cat > "$rx/experiments/t/p/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
-for x in 1 2 3; do dpd_run p$x s.cfg --set x=$x; done
-emit_from p1 q q_p1
-dpd_run late s.cfg --set x=$(get p1 q | cut -f1)
-dpd_run late s.cfg --set x=$(get p1 q | cut -f1)
-emit_from late q q_late
+simulations() { for x in 1 2 3; do dpd_run p$x s.cfg --set x=$x; done; }
+analysis() { emit_from p1 q q_p1; }
+# round 2: its argument from the analysis of round 1 (declared twice: planned once)
+simulations_2() {
+    dpd_run late s.cfg --set x=$(from_analysis q_p1 | cut -f1)
+    dpd_run late s.cfg --set x=$(from_analysis q_p1 | cut -f1)
+}
+analysis_2() { emit_from late q q_late; }
+experiment
 EOF2
 chmod +x "$rx/experiments/t/p/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/p/"
 T "plan: lists the first round without running anything" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$rx/tools/plan" t/p quick
 has "plan: the three declared simulations" '^p3	s.cfg	--set	x=3$'
 lacks "plan: not the one that needs an analysis" '^late'
-has "plan: says where the pass stopped" 'then the analysis reads them'
+has "plan: says the experiment declares a later round" 'simulations in the first round; 1 later round'
 : > "$log"
 T "run-experiment: rounds until a pass plans nothing" 0 RX FAKE_SLEEP=1 "$rx/tools/run-experiment" t/p quick
 if [ "$(sort "$log" | tr '\n' ' ')" = "late resume=1 p1 resume=1 p2 resume=1 p3 resume=1 " ]; then ok "run-experiment: every simulation ran once"
 else bad "run-experiment: rounds ran: $(tr '\n' ' ' < "$log")"; fi
 in_file "run-experiment: two rounds and the analysis" "$rx/results/t/p/quick/provenance.tsv" '^rounds	3$'
 in_file "run-experiment: the late simulation's argument came from the first round" "$rx/results/t/p/quick/runs/late/.args" '^x=1.5$'
+# the plan is declared: tools/plan calls the declaration of the first round alone, so an analysis
+# that would fail, or take long, never runs (the former planner ran run.sh until a step failed,
+# analysis included); a simulation declared in the analysis is refused
+mkdir -p "$rx/experiments/t/s"
+cat > "$rx/experiments/t/s/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+simulations() { dpd_run s1 s.cfg --set x=1; dpd_run s2 s.cfg --set x=2; }
+# an analysis that reads no simulation, takes a minute and fails
+analysis() { : > "$FAKE_LOG.analysis"; sleep "${FAKE_ANALYSIS_SLEEP:-0}"; echo "the analysis failed" >&2; exit 1; }
+experiment
+EOF2
+chmod +x "$rx/experiments/t/s/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/s/"
+rm -f "$log.analysis"
+T "plan: a slow, failing analysis is not run" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" FAKE_ANALYSIS_SLEEP=60 timeout 20 "$rx/tools/plan" t/s quick
+has "plan: its declared simulations listed" '^s2	s.cfg	--set	x=2$'
+if [ -e "$log.analysis" ]; then bad "plan: ran the analysis"; else ok "plan: no analysis step ran"; fi
+sed -i 's/^analysis() { /&dpd_run s3 s.cfg --set x=3; /' "$rx/experiments/t/s/run.sh"
+T "run-experiment: a simulation in the analysis is refused" 1 RX "$rx/tools/run-experiment" t/s quick
+has "run-experiment: says where to declare it" 'dpd_run s3 in the analysis of .*: declare it in its simulations'
+# an analysis that runs simulations itself (declared: analysis_runs_simulations=1, the stability
+# map's bisections): the declared ones on the pool first, then the analysis in the normal mode
+mkdir -p "$rx/experiments/t/d"
+cat > "$rx/experiments/t/d/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+analysis_runs_simulations=1
+simulations() { dpd_run a s.cfg --set x=1; }
+analysis() {
+    emit_from a q q_a
+    "$DPD" run s.cfg --out "$OUT/runs/direct" --set x=9
+    emit_from direct q q_direct
+}
+experiment
+EOF2
+chmod +x "$rx/experiments/t/d/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/d/"
+T "plan: an analysis that runs simulations itself" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$rx/tools/plan" t/d quick
+has "plan: says so" '1 simulations in the first round; its analysis runs simulations itself'
+: > "$log"
+T "run-experiment: an analysis that runs simulations itself" 0 RX "$rx/tools/run-experiment" t/d quick
+if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 direct resume=0 " ]; then ok "run-experiment: the declared simulation on the pool, then the analysis's own"
+else bad "run-experiment: ran: $(tr '\n' ' ' < "$log")"; fi
+in_file "run-experiment: the analysis read its own simulation" "$rx/results/t/d/quick/summary.tsv" '^q_direct	1.5	0.1$'
+# every experiment of the repository declares its simulations (functions simulations and analysis,
+# run.sh ending with the line experiment: tools/lib/exp.sh), or runs another's run.sh that does
+# (fig05-relative-viscosity-a650: fig04's with another repulsion)
+: > "$root/out"
+for f in "$tools"/../experiments/*/*/run.sh; do
+    last=$(grep -v '^[[:space:]]*\(#\|$\)' "$f" | tail -1)
+    case $last in 'exec "$(dirname "$0")/../'*'/run.sh" "$@"') continue ;; esac
+    grep -q '^simulations() {' "$f" && grep -q '^analysis() {' "$f" &&
+        [ "$last" = experiment ] || echo "${f#"$tools"/../}" >> "$root/out"
+done
+if [ ! -s "$root/out" ] && [ -n "$(ls "$tools"/../experiments/*/*/run.sh)" ]; then ok "experiments: every run.sh declares its simulations and analysis"
+else bad "experiments: run.sh without the declaration (simulations, analysis, experiment)" "$root/out"; fi
 # the pool: the first round's three one-second simulations overlap on two slots
 cat > "$root/overlap.sh" <<'EOF2'
 #!/usr/bin/env bash
@@ -798,10 +862,13 @@ mkdir -p "$rx/experiments/t/u"
 cat > "$rx/experiments/t/u/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
-dpd_run ok s.cfg --set x=1
-dpd_run bad s.cfg --set x=2 || true
-st=0; dpd_run bad s.cfg --set x=2 || st=$?
-emit bad_status $st 0
+simulations() {
+    dpd_run ok s.cfg --set x=1
+    dpd_run bad s.cfg --set x=2 || true
+    st=0; dpd_run bad s.cfg --set x=2 || st=$?
+}
+analysis() { emit bad_status $st 0; }
+experiment
 EOF2
 chmod +x "$rx/experiments/t/u/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/u/"
 : > "$log"
@@ -824,14 +891,18 @@ cat > "$rx/experiments/t/n/run.sh" <<'EOF2'
 needs any t/e
 needs paper t/p
 needs any t/p@paper
+simulations() { :; }
+analysis() {
 emit up "$(awk -F'\t' '$1 == "q_a" { print $2 }' "$(upstream t/e)/summary.tsv")" 0
 [ -z "$(upstream_if t/p@paper)" ] && emit optional_absent 1 0
 upstream t/u
+}
+experiment
 EOF2
 chmod +x "$rx/experiments/t/n/run.sh"
 T "needs: an undeclared upstream result is refused" 1 RX "$rx/tools/run-experiment" t/n quick
 has "needs: says what to declare" "read but not declared (add a line 'needs quick t/u'"
-sed -i '$d' "$rx/experiments/t/n/run.sh"
+sed -i '/^upstream t\/u$/d' "$rx/experiments/t/n/run.sh"
 T "needs: declared upstream results read" 0 RX "$rx/tools/run-experiment" t/n quick
 in_file "needs: the same tier's result" "$rx/results/t/n/quick/summary.tsv" '^up	1.5	0$'
 in_file "needs: an absent optional result" "$rx/results/t/n/quick/summary.tsv" '^optional_absent	1	0$'
@@ -881,7 +952,7 @@ has "verify-result: names the rerun" "would be rerun"
 cp "$root/s.cfg.keep" "$e/s.cfg"; cp "$e/run.sh" "$root/run.sh.keep"
 sed -i 's/--set x=2/--set x=5/' "$e/run.sh"
 T "verify-result: changed run arguments are stale" 1 V
-cp "$root/run.sh.keep" "$e/run.sh"; echo 'emit extra 1 0' >> "$e/run.sh"
+cp "$root/run.sh.keep" "$e/run.sh"; sed -i 's/^emit_from b q q_b$/&\nemit extra 1 0/' "$e/run.sh"
 T "verify-result: changed analysis is stale" 1 V
 has "verify-result: names the summary" "another summary.tsv"
 cp "$root/run.sh.keep" "$e/run.sh"
@@ -909,8 +980,9 @@ cat > "$rx/experiments/t/r/run.sh" <<'EOF2'
 #!/usr/bin/env bash
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any t/e
-reuse_run a t/e quick
-emit_from a q q_a
+simulations() { reuse_run a t/e quick; }
+analysis() { emit_from a q q_a; }
+experiment
 EOF2
 chmod +x "$rx/experiments/t/r/run.sh"
 : > "$log"

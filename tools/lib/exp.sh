@@ -19,20 +19,20 @@ mkdir -p "$OUT/runs"
 # worktree matches), the scene by the sha256 recorded in .scene_sha256 (runs made before it was
 # recorded are matched by their arguments alone).
 # Three modes:
-#  - DPD_PLAN=1 (tools/run-experiment, a plan pass): a simulation that must run is recorded, not
-#    run: its directory gets .args, .scene_sha256 and .cwd (all tools/run-simulation needs) and its
-#    name goes to $OUT/.plan; dpd_run returns 0 and the script goes on to the next one. The pass
-#    ends at the first analysis step that reads an unfinished simulation (a failing command under
-#    set -e); run-experiment then runs the planned simulations on its engine and plans again,
-#    until a pass plans nothing: that pass is the analysis. So a run.sh declares its simulations
-#    first and analyses after; a simulation whose arguments come from an earlier analysis is
-#    planned in a later round.
+#  - DPD_PLAN=1 (tools/run-experiment and tools/plan, a plan pass of one round, DPD_ROUND, see
+#    `experiment` below): a simulation that must run is recorded, not run: its directory gets
+#    .args, .scene_sha256 and .cwd (all tools/run-simulation needs) and its name goes to
+#    $OUT/.plan; dpd_run returns 0 and the declaration goes on to the next one. run-experiment
+#    then runs the planned simulations on its engine.
 #  - DPD_VERIFY=1 (tools/verify-result): never run; a simulation that would run marks the result
 #    stale ($OUT/.verify-stale) and stops the script.
 #  - neither: run it here and now (tools/run-simulation), as a script run by hand does.
+# dpd_run is called from a run.sh's declared simulations (simulations, simulations_K), never from
+# its analysis unless the run.sh declares analysis_runs_simulations=1.
 dpd_run() {
     local name=$1 scene=$2; shift 2
     local dir=$OUT/runs/$name args sha st
+    _declared_here dpd_run "$name"
     args=$(printf '%s\n' "$scene" "$@" | _args_norm)
     sha=missing; [ -f "$scene" ] && sha=$(sha256sum < "$scene" | cut -c1-64)
     if [ "$(_args_recorded "$dir")" = "$args" ] &&
@@ -92,6 +92,69 @@ _verify_refuse() {
     exit 97
 }
 
+# ---- the declaration: an experiment's simulations apart from its analysis ----------------------
+# Every run.sh states its simulations in functions and its analysis in others, and ends with the
+# line `experiment`:
+#   simulations     round 1: the simulations (dpd_run, reuse_run) whose arguments the tier fixes
+#   analysis        reads them: the tables, summary.tsv
+#   simulations_2   (only where needed) round 2: simulations whose arguments an earlier analysis
+#                   gives; it reads them with `from_analysis QUANTITY` (a row of summary.tsv the
+#                   analysis wrote), which names what it reads
+#   analysis_2      (optional) reads round 2; and so on (simulations_3, analysis_3, ...)
+# The code outside these functions is the set-up (the tier's lengths and sizes, `needs` lines,
+# helper functions); it reads no simulation. dpd_run and reuse_run are refused outside the
+# simulations functions: the plan is what they declare, not what an analysis happens to reach.
+# An experiment whose analysis runs simulations itself (`dpd run` called directly: the stability
+# map's bisections, whose next trial depends on the last) says so by setting
+# analysis_runs_simulations=1 in its set-up; tools/run-experiment then runs its analysis on its
+# own job slot in the normal mode.
+# experiment: runs the declaration. With DPD_ROUND=K (a plan pass, DPD_PLAN=1: tools/plan K = 1,
+# tools/run-experiment every round): the simulations and analyses of rounds 1 .. K-1 (every one
+# of their simulations finished), then round K's simulations, and nothing after; it records
+# the number of rounds and analysis_runs_simulations in $OUT/.declared. Without DPD_ROUND (the
+# analysis pass of tools/run-experiment, tools/verify-result, a run by hand): every round's
+# simulations, each followed by its analysis.
+_exp_step=
+experiment() {
+    # (names of its own: the functions it calls assign their variables globally, and bash would
+    # give them these locals)
+    local _exp_n=1 _exp_k _exp_f
+    declare -F simulations > /dev/null && declare -F analysis > /dev/null ||
+        { echo "exp.sh: $EXP/run.sh declares no functions simulations and analysis (tools/lib/exp.sh, experiment)" >&2; exit 1; }
+    while declare -F "simulations_$((_exp_n + 1))" > /dev/null; do _exp_n=$((_exp_n + 1)); done
+    if [ "${DPD_PLAN:-0}" = 1 ]; then
+        printf 'rounds\t%s\nanalysis_runs_simulations\t%s\n' "$_exp_n" "${analysis_runs_simulations:-0}" > "$OUT/.declared"
+    fi
+    case ${DPD_ROUND:-} in ""|[1-9]|[1-9][0-9]) ;; *) echo "exp.sh: DPD_ROUND=$DPD_ROUND: not a round number" >&2; exit 1 ;; esac
+    [ "${DPD_ROUND:-0}" -le "$_exp_n" ] || { echo "exp.sh: DPD_ROUND=$DPD_ROUND: $EXP/run.sh declares $_exp_n round(s)" >&2; exit 1; }
+    for ((_exp_k = 1; _exp_k <= _exp_n; _exp_k++)); do
+        _exp_f=simulations; [ "$_exp_k" = 1 ] || _exp_f=simulations_$_exp_k
+        _exp_step=simulations
+        "$_exp_f"
+        _exp_step=
+        [ "${DPD_ROUND:-}" != "$_exp_k" ] || return 0
+        _exp_f=analysis; [ "$_exp_k" = 1 ] || _exp_f=analysis_$_exp_k
+        declare -F "$_exp_f" > /dev/null || continue
+        _exp_step=analysis
+        "$_exp_f"
+        _exp_step=
+    done
+}
+# _declared_here WHAT NAME: refuse a simulation outside the declaration
+_declared_here() {
+    case $_exp_step:${analysis_runs_simulations:-0} in
+        simulations:*|analysis:1) return 0 ;;
+        analysis:*) echo "exp.sh: $1 $2 in the analysis of $EXP/run.sh: declare it in its simulations" \
+                         "(simulations_K, a later round, if its arguments come from the analysis)" >&2 ;;
+        *) echo "exp.sh: $1 $2 outside the declaration of $EXP/run.sh: call it from its function simulations" \
+                "(and end run.sh with the line experiment)" >&2 ;;
+    esac
+    exit 1
+}
+# from_analysis QUANTITY -> "value<TAB>stderr": a row that an earlier round's analysis wrote to the
+# experiment's summary, read by a later round's simulations (the declared input of that round)
+from_analysis() { get . "$1"; }
+
 # reuse_run NAME PAPER/EXP TIER [SOURCE_NAME]: the simulation SOURCE_NAME (default NAME) of another
 # experiment's complete result (declared with needs), copied into $OUT/runs/NAME instead of run
 # again (the same system and settings, e.g. Mai-Duy et al.'s Tables 1 and 2 come from one set of
@@ -99,6 +162,7 @@ _verify_refuse() {
 # CPU time again.
 reuse_run() {
     local name=$1 id=$2 tier=$3 src_name=${4:-$1} up
+    _declared_here reuse_run "$name"
     up=$(upstream "$id@$tier") || exit 1
     local src=$up/runs/$src_name dir=$OUT/runs/$1
     if [ ! -s "$src/summary.tsv" ] || [ -e "$src/INCOMPLETE" ]; then

@@ -3,6 +3,9 @@
 # for the solvent of section 4 (eta = 30, Sc = 500, n = 4, rc = 1.5, m = kBT = 1),
 # plus the curves s(eta), gamma(eta) at Sc = 500 for the figure. Same for both tiers.
 . "$DPD_ROOT/tools/lib/exp.sh"
+# no simulations: the tables are the formulas of `dpd params`
+simulations() { :; }
+analysis() {
 for dim in 3 2; do
     "$DPD" params --dim $dim --eta 30 --Sc 500 --n 4 --rc 1.5 --m 1 --kBT 1 | tail -n +2 >> "$OUT/summary.tsv"
 done
@@ -20,3 +23,5 @@ for eta in $(seq 10 0.5 33.5); do
     done
     printf '%s\n' "$row" >> "$OUT/curves.tsv"
 done
+}
+experiment

@@ -12,7 +12,10 @@ case $TIER in
     # the CPU share of a shared machine; the README planned 90)
     paper) tier=(--set steps=18000) ;;
 esac
+simulations() {
 dpd_run solvent solvent-tcaf.cfg "${tier[@]}"
+}
+analysis() {
 emit_from solvent tcaf_eta_k0 eta_k0
 emit_from solvent tcaf_eta_k2_coefficient eta_k2_coefficient
 emit_from solvent tcaf_eta_drop eta_drop_first_last_shell
@@ -21,3 +24,5 @@ emit_from solvent temperature temperature
 emit_from solvent time_measure_seconds time_measure_seconds
 emit_from solvent time_force_seconds time_force_seconds
 cp "$OUT/runs/solvent/tcaf.tsv" "$OUT/runs/solvent/tcaf_eta.tsv" "$OUT/"
+}
+experiment

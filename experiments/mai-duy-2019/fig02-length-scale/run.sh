@@ -10,11 +10,14 @@ case $TIER in
     paper) K=6; tier=() ;;
 esac
 count=$((6 * K * K * K))
+simulations() {
 dpd_run free free.cfg "${tier[@]}" --set "types.[1].count=$count"
 dpd_run constrained constrained.cfg "${tier[@]}" --set "types.[1].count=$count" --set "colloids.per_axis=$K"
 # the same trajectory (same seed), the TCAF of all momentum: particles plus the rigid bodies
 dpd_run constrained_bodies constrained.cfg "${tier[@]}" --set "types.[1].count=$count" --set "colloids.per_axis=$K" \
         --set measure.tcaf.include_bodies=true
+}
+analysis() {
 np=$(get free particles | cut -f1)
 awk -v c="$count" -v n="$np" 'BEGIN { printf "phi\t%.10g\t0\n", c / n }' >> "$OUT/summary.tsv"
 L=15; [ "$TIER" = quick ] && L=8          # the box's side (the scenes' 15, the quick tier's 8)
@@ -40,3 +43,5 @@ for est in "" _exp; do
         awk -F'\t' -v e="$est" '$1 ~ /^(k|lambda)_eff_x$/ { sub(/_x$/, e, $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
 done
 for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done
+}
+experiment

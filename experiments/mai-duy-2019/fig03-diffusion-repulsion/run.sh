@@ -13,6 +13,7 @@ esac
 # independent runs and takes the error from their scatter.
 A_VALUES="3.53 6.50 9.50 18.50 500"
 # the simulations: one per a; at the quick tier two more seeds for a = 500, whose D is a mean
+simulations() {
 k=0
 for a in $A_VALUES; do
     dpd_run a$a solvent-msd.cfg "${tier[@]}" --set "pairs.[0].a=$a" --set "seed=$((30190 + k))"
@@ -23,6 +24,8 @@ for a in $A_VALUES; do
     fi
     k=$((k + 1))
 done
+}
+analysis() {
 # the analysis
 for a in $A_VALUES; do
     if [ "$a" = 500 ] && [ "$TIER" = quick ]; then
@@ -39,3 +42,5 @@ done
 # ratios of the summary's D (at a = 500 in the quick tier the three-run mean)
 emit_ratio D_ratio_a18.50_a3.53 . D_a18.50 . D_a3.53
 emit_ratio D_ratio_a500_a3.53 . D_a500 . D_a3.53
+}
+experiment

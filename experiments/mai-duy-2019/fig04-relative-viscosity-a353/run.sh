@@ -62,6 +62,7 @@ pair_simulations() {
         --set "box=[$L,$L,$L]" --set "measure.tcaf.axis_nmax=$nax" --set "seed=$((40501 + 2 * i))"
 }
 # the simulations: each lattice pair's, the solvent alone, and five colloid RDF runs
+simulations() {
 i=0
 for pair in $PAIRS; do lattice_pair "$pair" 2; pair_simulations $i "$pair"; i=$((i + 1)); done
 dpd_run solvent "$HERE/solvent-shear.cfg" "${shear[@]}" "${rep[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]"
@@ -70,6 +71,8 @@ for r in 0 1 2 3 4; do
     seed=(); [ $r -gt 0 ] && seed=(--set "seed=$((40170 + r))")
     dpd_run "$(rdf_name $r)" "$HERE/colloid-rdf.cfg" "${rep3[@]}" "${seed[@]}"
 done
+}
+analysis() {
 # the analysis
 emit_from solvent viscosity eta_solvent
 emit_from solvent temperature temperature_solvent
@@ -143,3 +146,5 @@ for pair in $PAIRS; do
                   g("eta_r_cube_" t), g("eta_r_sphere_" t), g("eta_r_cube_solvent_" t), g("eta_r_sphere_solvent_" t) }' \
         "$OUT/summary.tsv" >> "$OUT/eta_r.tsv"
 done
+}
+experiment

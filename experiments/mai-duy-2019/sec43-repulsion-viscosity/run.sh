@@ -9,11 +9,14 @@ esac
 A_VALUES="3.53 6.50 9.50 18.50"
 printf 'a\teta\teta_se\tpaper\n' > "$OUT/eta.tsv"
 paper_eta() { case $1 in 3.53) echo 29.08;; 6.50) echo 29.66;; 9.50) echo 30.22;; 18.50) echo 30.66;; esac; }
+simulations() {
 k=0
 for a in $A_VALUES; do
     dpd_run a$a solvent-shear.cfg "${tier[@]}" --set "pairs.[0].a=$a" --set "seed=$((20190 + k))"
     k=$((k + 1))
 done
+}
+analysis() {
 for a in $A_VALUES; do
     emit_from a$a viscosity "eta_a$a"
     emit_from a$a temperature "temperature_a$a"
@@ -28,3 +31,5 @@ emit_diff eta_diff_a18.50_a9.50 a18.50 viscosity a9.50 viscosity
 # of the stress over that without it, at a = 3.53 (a quotient of two errors, itself without one)
 se_with=$(get a3.53 viscosity_with_random | cut -f2) se_without=$(get a3.53 viscosity | cut -f2)
 emit random_stress_error_factor_a3.53 "$(printf '%.6g' "$(bc -l <<< "$se_with / $se_without")")" 0
+}
+experiment

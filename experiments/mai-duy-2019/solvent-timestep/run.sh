@@ -19,12 +19,16 @@ run_dt() {
         --set measure.every=$every --set "seed=$((40190 + $2))"
 }
 # the simulations (an unstable one is an outcome, not a failure: the analysis records a gap)
+declare -A outcome=()   # dt -> the run's status (dpd_run: 0, or its recorded failure)
+simulations() {
 k=0
-for dt in $DTS; do run_dt $dt $k || true; k=$((k + 1)); done
-# the analysis (run_dt again returns each run's recorded outcome; nothing reruns)
+for dt in $DTS; do st=0; run_dt $dt $k || st=$?; outcome[$dt]=$st; k=$((k + 1)); done
+}
+analysis() {
+# the analysis (each run's recorded outcome, from the simulations; nothing reruns)
 best=0 k=0
 for dt in $DTS; do
-    if run_dt $dt $k; then
+    if [ "${outcome[$dt]}" = 0 ]; then
         emit_from dt$dt temperature "T_dt$dt"
         emit_from dt$dt viscosity "eta_dt$dt"
         T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(get dt$dt cpu_seconds | cut -f1)
@@ -43,3 +47,5 @@ case $TIER in
     paper) emit_ratio eta_ratio_dt0.005_dt0.0025 dt0.005 viscosity dt0.0025 viscosity
            emit_ratio eta_ratio_dt0.01_dt0.0025 dt0.01 viscosity dt0.0025 viscosity ;;
 esac
+}
+experiment

@@ -26,11 +26,14 @@ pair_simulations() {
     dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${geo[@]}" --set "colloids.per_axis=$kq" \
         --set "seed=$((60301 + 2 * $1))"
 }
-"$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
 # the simulations
+simulations() {
 i=0
 for pair in $PAIRS; do lattice_pair "$pair" 4; pair_simulations $i; i=$((i + 1)); done
+}
 # the analysis
+analysis() {
+"$DPD" wavelengths --box 15 --n 4 --p 6 --kmin 3 --kmax 13 | tail -n +2 >> "$OUT/summary.tsv"
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
     # the constrained eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37),
@@ -93,3 +96,5 @@ awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 
     FNR == 1 { print "phi\tlambda_tcaf\tse"; next } /^#/ || $1 == "k" { next }
     { q = sprintf("lambda_tcaf_phi%.4f", phi[$1]); printf "%.6f\t%s\t%s\n", phi[$1], (q in v) ? v[q] : "nan", (q in v) ? s[q] : "nan" }' \
     "$OUT/summary.tsv" paper-table1.tsv > "$OUT/lambda_tcaf.tsv"
+}
+experiment

@@ -19,6 +19,7 @@ case $TIER in
 esac
 printf 'k\tphi\tk_eff\tk_eff_se\tlambda_eff\tlambda_eff_se\teta_eff\teta_eff_se\teta_k0_free\teta_k0_free_se\tk_eff_exp\tk_eff_exp_se\teta_eff_exp\teta_eff_exp_se\tk_eff_two_mode\tk_eff_two_mode_se\teta_eff_two_mode\teta_eff_two_mode_se\n' > "$OUT/table2_data.tsv"
 # the simulations: free and constrained at each phi
+simulations() {
 i=0
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
@@ -33,6 +34,8 @@ for pair in $PAIRS; do
     fi
     i=$((i + 1))
 done
+}
+analysis() {
 # the analysis
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
@@ -78,3 +81,5 @@ if [ -f "$F01" ]; then
         printf '%s\t%s\t%s\t%s\n' "$phi" "$ke" "$ee" "$(echo "$r" | cut -f2-3)" >> "$OUT/solvent_at_paper_keff.tsv"
     done
 fi
+}
+experiment

@@ -57,6 +57,7 @@ pair_runs() {
     reuse_run freehk_a${A}_$tag $src paper freehk_$t2
 }
 # the n = 4 solvent's eta(k) (reading e) and shear viscosity (eta_0)
+simulations() {
 if [ "$TIER" = quick ]; then
     lattice_pair "${PAIRS%% *}" 4
     dpd_run solvent_tcaf_a3.53 "$F01/solvent-tcaf.cfg" "${tcaf[@]}" --set "box=[$L,$L,$L]" --set seed=61303
@@ -72,6 +73,7 @@ else
     reuse_run bodies_a3.53_phi0.0876 $MD/fig02-length-scale paper constrained_bodies
 fi
 for A in $AS; do for pair in $PAIRS; do lattice_pair "$pair" 4; pair_runs "$A"; done; done
+}
 
 # ---- analysis helpers ----
 # fit NAME MODEL RHO BOX: dpd tcaf-fit of run NAME -> runs/NAME/tcaf_fit_MODEL.tsv (per shell) and .out
@@ -115,6 +117,7 @@ at() {
         END { num_interp(k, v, s, n, q[1], q[2], o); print num_pair(o) }' "$1"
 }
 
+analysis() {
 # ---- per repulsion and pair ----
 printf '# a\tphi\tD\tE\tK\tF\tk_eff\tse\teta_eff\tse (grid.awk)\n' > "$OUT/grid_rows.tsv"
 i=0
@@ -392,3 +395,5 @@ num_awk -F'\t' -v GRID="$OUT/grid.tsv" 'FNR == 1 { file++ }
             printf "grid_%s_table2_eta_eff_rows_pass\t%d\t0\ngrid_%s_table2_k_eff_rows_pass\t%d\t0\n", c, ne[c, "pass"], c, nk[c, "pass"] } }' \
     "$PAPER2" "$OUT/summary.tsv" "$OUT/grid_rows.tsv" > "$OUT/.rows"
 cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+}
+experiment

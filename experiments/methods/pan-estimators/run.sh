@@ -44,6 +44,7 @@ esac
 # twin-sphere.cfg starts moving at V from production step 0 after 10 time units at rest (V = 0.3,
 # a tiny 0.003 and 0); torque: fig01's sphere spinning at Omega from step 0 of a run without
 # equilibration (a hot start: a frozen particle's spin cannot start later), Omega = -0.4, -0.004, 0.
+simulations() {
 for s in $SEEDS; do
     for V in 0.0 0.3 0.003; do
         dpd_run twin_drag_s${s}_V$V twin-sphere.cfg --set "steps=$TWIN_DRAG_STEPS" \
@@ -96,6 +97,7 @@ for p in $PAIRBOX; do
         --set "types.[0].count=$((3 * Lb * Lb * Lb))" --set "types.[0].hold_mean_velocity=[0.6,0.0,0.0]" --set measure.blocks=50 \
         --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((3980 + Lb))"
 done
+}
 
 # --- kept from run.h5 before it is deleted: window means of the twins' series
 # windows NAME SERIES W: means of W consecutive samples of /series/SERIES, one per line, in
@@ -122,6 +124,7 @@ pair_blocks() {
                     for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
                     printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
 }
+analysis() {
 for s in $SEEDS; do
     for V in 0.0 0.3 0.003; do windows twin_drag_s${s}_V$V drag_on_colloid_x 5; done
     for W in 0.0 -0.4 -0.004; do windows twin_rot_s${s}_W$W torque_on_colloid_z 5; done
@@ -130,3 +133,5 @@ for p in $PAIR12; do pair_blocks pair12_u${p%%:*}; done
 for p in $PAIRBOX; do pair_blocks pairbox_L${p%%:*}_u0.6; done
 
 . "$HERE/analysis.sh"
+}
+experiment

@@ -41,6 +41,7 @@ ladder_simulations() {
             unstable[$name]=1
     done; done
 }
+simulations() {
 ladder_simulations gw gw-fluid.cfg $GW_BOX $GW_T "0.5 0.65" "$GW_DTS"
 ladder_simulations maiduy maiduy-solvent.cfg $MD_BOX $MD_T "0.5 0.65" "$MD_DTS"
 ladder_simulations pan pan-fluid.cfg $PAN_BOX $PAN_T "0.5" "$PAN_DTS"
@@ -52,7 +53,9 @@ for solver in pcg scheme2_consistent; do
             --set measure.profile.per_block=true --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol --set overdamped.reference_tolerance=1e-10
     done
 done
+}
 
+analysis() {
 # ---- the analysis. 1-3: temperature against dt --------------------------------
 printf 'fluid\tlambda\tdt\tT\tT_se\tT_rot\tT_rot_se\tcpu_seconds\tcost\n' > "$OUT/ladder-dt.tsv"
 # ladder_analysis FLUID T_RUN "LAMBDAS" "DTS": cost = CPU seconds per 1000 particles per time unit
@@ -141,3 +144,5 @@ num_awk -F'\t' 'NR>1 && $9 > 0 { s=$1; if (!(s in n)) S[++ns] = s; n[s]++; X[s,n
     END { for (j=1;j<=ns;j++) { s=S[j]; k=n[s]; for (i=1;i<=k;i++) { x[i]=X[s,i]; y[i]=Y[s,i] }
           num_line(x, y, k, o); printf "true_error_slope_%s\t%.6g\t%.4g\n", s, o["slope"], (k>2) ? o["slope_se"] : 0 } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
 # (CPU of every run, the unstable ones included: tools/run-experiment sums runs/*/.cpu_seconds)
+}
+experiment

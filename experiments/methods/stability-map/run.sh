@@ -106,6 +106,12 @@ bisect() {
         printf "%s\t%s\t%s\t%.5g\t%.3g\t%s\t%s\n", f, p, v, m, se, L, H}' >> "$OUT/dt-max.tsv"
 }
 
+# The simulations are the analysis: each bisection's next trial (`dpd run`, below) depends on the
+# last, and the pairs at r -> 0 (dpd_run) follow them; tools/run-experiment runs the analysis on its
+# own job slot (tools/lib/exp.sh experiment)
+analysis_runs_simulations=1
+simulations() { :; }
+analysis() {
 # 1. gamma and s (3D fluid, a = 25; s = 2 is Groot-Warren's weight, s = 0.5 Pan's and Phan-Thien's)
 for g in $GAMMAS_S2;  do bisect gamma_s2 gamma $g fluid3d.cfg 1e-5 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=2.0"; done
 for g in $GAMMAS_S05; do [ -n "$g" ] || continue; bisect gamma_s0.5 gamma $g fluid3d.cfg 1e-5 1 $NSTEPS --set "pairs.[0].gamma=$g" --set "pairs.[0].s=0.5"; done
@@ -295,3 +301,5 @@ awk -F'\t' 'END{printf "trials\t%d\t0\n", NR-1}' "$OUT/trials.tsv" >> "$OUT/summ
 # CPU of all trials (stable and unstable; run-experiment counts only completed runs)
 times > "$OUT/times.txt"
 emit cpu_seconds $(awk 'NR==2{split($1,a,"m"); split($2,b,"m"); printf "%.3f", a[1]*60+a[2]+b[1]*60+b[2]}' "$OUT/times.txt") 0
+}
+experiment

@@ -37,6 +37,7 @@ choice_args() { case $1 in dt0.01) echo --set dt=0.01 --set equilibration=1000 -
                                    --set "colloids.inertia=$(awk -v d="${1#d}" 'BEGIN { printf "%.10g", 4 * d * d }')" ;; esac; }
 
 # ---- the simulations
+simulations() {
 n=0
 for a in $AS; do
     for M in $MASSES; do
@@ -71,7 +72,9 @@ for M in $TCAF_MASSES; do
             --set "colloids.per_axis=$kq" --set "measure.tcaf.include_bodies=$b" --set "seed=$((47100 + M))"
     done
 done
+}
 
+analysis() {
 # ---- the analysis
 printf 'choice\ta\tM\teta_r\tse\teta_susp\tse\teta_solvent\tse\ttemperature_susp\tse\n' > "$OUT/eta_r.tsv"
 row() {  # NAME(case) SUSP SOLVENT a M
@@ -114,3 +117,5 @@ for M in $TCAF_MASSES; do
     done
     emit_ratio tcaf_eta_r_M${M}_a3.53 susp_M${M}_a3.53 viscosity . eta_k0_constrained_M${M}_bodiesfalse
 done
+}
+experiment

@@ -25,6 +25,7 @@ case_simulations() {
     dpd_run solvent_a${a}_rate$rate "$FIG04/solvent-shear.cfg" "${run[@]}" --set "box=[$LSOLV,$LSOLV,$LSOLV]" \
         --set "pairs.[0].a=$a" --set "shear_rate=$rate" --set "seed=$((40601 + 2 * n))"
 }
+simulations() {
 cases=($CASES)
 for ((j = 0; j < ${#cases[@]}; j++)); do case_simulations "${cases[j]}" $j; done
 if [ "$TIER" = paper ]; then
@@ -34,6 +35,8 @@ if [ "$TIER" = paper ]; then
     reuse_run solvent_a3.53_rate0.1 mai-duy-2019/fig04-relative-viscosity-a353 paper solvent
     cases+=(6.50:0.1 3.53:0.1)
 fi
+}
+analysis() {
 # the analysis
 # strain: rate x the production time (the strain the averaged stress was sampled over)
 printf 'a\trate\teta_r\tse\teta_susp\tse\teta_solvent\tse\tstrain\n' > "$OUT/eta_r.tsv"
@@ -54,3 +57,5 @@ if [ "$TIER" = paper ]; then
 else
     emit_diff eta_r_rise_a6.50_rate0.03_minus_0.1 . eta_r_a6.50_rate0.03 . eta_r_a6.50_rate0.1
 fi
+}
+experiment

@@ -23,6 +23,7 @@ BOX_REPS=${BOX_REPS:-"1 1 1"}
 # box_runs L: the runs of box L (one, or the replicas box_L<L>_r<k>)
 box_runs() { local i=0 n; for n in $BOX_REPS; do i=$((i + 1)); [ "$(echo $BOX_L | cut -d' ' -f$i)" = "$1" ] && break; done
     if [ "$n" = 1 ]; then echo box_L$1; else seq -f "box_L$1_r%g" 1 $n; fi; }
+simulations() {
 dpd_run diff colloid-diffusion.cfg "${tier[@]}"
 # Each box: fluid density 3 (3 L^3 particles) and the colloid number density of the 10^3 box, 0.027
 # (rounded: 6, 14, 47 colloids), so crowding is alike in every box and only the periodic images
@@ -41,6 +42,8 @@ for Lb in $BOX_L; do
     done
     shift
 done
+}
+analysis() {
 emit_from diff D D_colloid
 emit_from diff D_t_ratio_late_half D_t_ratio_late_half
 # eq. 16 with c = 6: R = kBT / (6 pi mu D); error from D alone
@@ -104,3 +107,5 @@ num_awk -F'\t' -v e="$eta" -v s="$slope" -v di="$dinf" -v m=$MU 'BEGIN{split(e,E
     num_rel1(1/(6*pi*m*D), D, Dse, o); print num_row("R_extrapolated", o)
     num_rel2(1/(6*pi*E[1]*D), D, Dse, E[1], E[2], o); print num_row("R_extrapolated_measured_eta", o)
     num_set(o, E[1], E[2]); print num_row("measured_eta", o)}' >> "$OUT/summary.tsv"
+}
+experiment

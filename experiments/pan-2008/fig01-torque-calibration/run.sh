@@ -23,6 +23,7 @@ LIN=${LIN:-}
 run_steps() { [ "$TIER" = reduced ] && [ "$1" = 0.0:5.5 ] && echo 150000
               [ "$TIER" = paper ] && [ "$1" = 0.0:5.5 ] && echo 2000000 || true; }
 # the simulations: one per (gamma^C_cf, gamma^S_cf)
+simulations() {
 k=0
 for run in $RUNS; do
     gC=${run%%:*} gS=${run##*:}
@@ -38,6 +39,8 @@ for w in $LIN; do
     dpd_run lin_W${w%%:*} rotating-sphere.cfg "${tier[@]}" --set "steps=${w##*:}" --set "types.[1].spin=[0.0,0.0,${w%%:*}]" \
         --set pairs.[1].gamma=0.0 --set pairs.[1].gamma_shear=5.5 --set "seed=$((8001 + k))"
 done
+}
+analysis() {
 # the analysis
 T18=$(awk -v m=$MU -v r=$R -v w=$OMEGA 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
 emit torque_eq18 "$T18" 0
@@ -64,3 +67,5 @@ done
 num_awk -F'\t' -v f=$(awk -v w=$OMEGA 'BEGIN { printf "%.10g", 0.4 / (w < 0 ? -w : w) }') 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3 * f; s[n] = $4 * f }
     END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \
     "$OUT/torque.tsv" >> "$OUT/summary.tsv"
+}
+experiment

@@ -17,6 +17,7 @@ case $TIER in
     paper) RUNS="3.5:100000:1200000 0.0:100000:300000 7.0:100000:300000" ;;
 esac
 # the simulations: one per gamma^C_cf
+simulations() {
 k=0
 for run in $RUNS; do
     IFS=: read -r gC eq st <<< "$run"
@@ -24,6 +25,8 @@ for run in $RUNS; do
         --set "seed=$((2001 + k))"
     k=$((k + 1))
 done
+}
+analysis() {
 # the analysis
 # eq. 19: F_ext = 6 pi mu u R with F_ext = N_f g; Hasimoto: F = 6 pi mu u R / K(phi)
 read -r U19 UH PHI < <(awk -v m=$MU -v r=$R -v n=$NF -v g=$G -v L=$L 'BEGIN{pi = 3.141592653589793
@@ -50,3 +53,5 @@ done
 num_awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { num_div($2, $3, a, o); print num_row("u_ratio_eq19_gC3.5", o)
     num_div($2, $3, h, o); print num_row("u_ratio_hasimoto_gC3.5", o) }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+}
+experiment

@@ -12,12 +12,15 @@ case $TIER in
     paper) NS="1 2 3 4 5 6 7 8"; len=(--set steps=200000) ;;
 esac
 # the simulations: one chain of N spheres per N
+simulations() {
 for N in $NS; do
     pos=$(awk -v n=$N -v R=$R -v c=$C 'BEGIN{ s = "("; for (k = 0; k < n; k++)
         s = s sprintf("%s[%.4f,%.4f,%.4f]", k ? "," : "", c + (k - (n - 1)/2) * 2*R, c, c); print s ")" }')
     dpd_run N$N chain.cfg "${len[@]}" --set "types.[1].positions=$pos" --set "types.[1].spin=[$OMEGA,0.0,0.0]" \
         --set "seed=$((2400 + N))"
 done
+}
+analysis() {
 # the analysis
 printf 'N\tTs\tTs_se\ttorque\ttorque_se\n' > "$OUT/shape_factor.tsv"
 for N in $NS; do
@@ -30,3 +33,5 @@ done
 num_awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
     END { num_diff(a, sa, b, sb, o); printf "%s\nTs_drop_N8_sigmas\t%.4g\t0\n", num_row("Ts_drop_N8", o), o["v"] / o["se"] }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+}
+experiment

@@ -10,9 +10,12 @@ case $TIER in
     paper) tier=(--set steps=120000); S01=(--set equilibration=5000 --set steps=60000) ;;
 esac
 # dt = 0.005 (the scene), then dt = 0.01 for the same physical time
+simulations() {
 dpd_run rpf fluid-poiseuille.cfg "${tier[@]}" --set "types.[0].body_force=[$G,0.0,0.0]" --set measure.profile.per_block=true
 dpd_run rpf_dt0.01 fluid-poiseuille.cfg "${tier[@]}" --set "types.[0].body_force=[$G,0.0,0.0]" \
     --set dt=0.01 "${S01[@]}" --set seed=2009 --set measure.profile.per_block=true
+}
+analysis() {
 # mu from the blocks' curvatures, its error from their scatter (the bins of one profile share the
 # channel's flow fluctuations: errors from independent bins were too small, chi2/dof 0.3-0.6 and
 # the halves 3 sigma apart); chi2/dof of the weighted fit of the whole profile as a shape check
@@ -27,3 +30,5 @@ emit_from rpf rotational_temperature rotational_temperature
 emit_from rpf_dt0.01 rotational_temperature rotational_temperature_dt0.01
 cp "$OUT/runs/rpf/profile.tsv" "$OUT/profile.tsv"
 cp "$OUT/runs/rpf_dt0.01/profile.tsv" "$OUT/profile_dt0.01.tsv"
+}
+experiment

@@ -30,6 +30,7 @@ paper_T()   { case $1 in 1) echo 0.3675;; 2) echo 0.7540;; 3) echo 0.7289;; 4) e
 row_runs() { case $TIER:$1 in reduced:1|paper:1) echo "row1 row1r2";; *) echo "row$1";; esac; }
 run_seed() { case $1 in row1r2) echo 9011;; *) echo $((9000 + ${1#row}));; esac; }
 # the simulations: one per row (row 1 of the reduced tier: two)
+simulations() {
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
@@ -49,9 +50,11 @@ CV_RUNS=24
 if [ "$TIER" = reduced ]; then
     for i in $(seq 1 $CV_RUNS); do dpd_run "cv$(printf %02d $i)" random-part-cv.cfg --set "seed=$((9100 + i))"; done
 fi
+}
 # mean_runs: the equal-weight mean of "value<TAB>stderr" lines (replicas of equal length), stderr
 # sqrt(sum se^2) / n
 mean_runs() { num_awk -F'\t' '{n++; x[n] = $1; e[n] = $2} END{num_set(o, num_mean(x, n), num_quad(e, n) / n); printf "%s", num_pair(o)}'; }
+analysis() {
 # the analysis
 printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
 for r in $ROWS; do
@@ -105,3 +108,5 @@ if [ "$TIER" = reduced ]; then
              q("cv_variance_factor_best", 1 - rho * rho, 2 * (rho < 0 ? -rho : rho) * (1 - rho * rho) / sqrt(n - 3))}' \
         "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
 fi
+}
+experiment

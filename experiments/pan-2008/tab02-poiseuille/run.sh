@@ -30,6 +30,7 @@ row_g()     { case $1 in 1) echo 0.05;; 2) echo 0.10;; 3) echo 0.20;; esac; }
 paper_F()   { case $1 in 1) echo 4.4881;; 2) echo 9.689;; 3) echo 18.881;; esac; }
 paper_T()   { case $1 in 1) echo 0.0838;; 2) echo 0.163;; 3) echo 0.313;; esac; }
 # the simulations: the channel without the colloid at g = GREF, then one with it per row
+simulations() {
 dpd_run empty poiseuille-empty.cfg "${emp[@]}" --set "types.[0].body_force=[$GREF,0.0,0.0]" --set seed=2200 \
     --set measure.profile.per_block=true
 for r in $ROWS; do
@@ -38,6 +39,8 @@ for r in $ROWS; do
         dpd_run $n poiseuille-sphere.cfg "${sph[@]}" "${len[@]}" --set "types.[0].body_force=[$(row_g $r),0.0,0.0]" --set "seed=$(run_seed $n)"
     done
 done
+}
+analysis() {
 # the analysis
 # undisturbed channel at g = GREF: u at z = 3 (mean of the two 0.25-wide bins either side, per
 # block; error from the blocks: the two bins' errors are not independent), scaled linearly to
@@ -85,3 +88,5 @@ if [ "$TIER" != quick ]; then
             printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / 49)}' >> "$OUT/summary.tsv"
     done
 fi
+}
+experiment

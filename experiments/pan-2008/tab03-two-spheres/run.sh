@@ -30,6 +30,7 @@ paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
 NF=$(awk -v L=$L 'BEGIN{printf "%d", 3*L^3}')
 # the simulations: one per row, the spheres at y = L/2 -+ l/2 on the line x = z = L/2
+simulations() {
 for r in $ROWS; do
     l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
     ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
@@ -61,6 +62,8 @@ if [ "$TIER" = reduced ]; then
             --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((2310 + i))"
     done
 fi
+}
+analysis() {
 # the analysis
 eq23() {  # l u -> F_the T_the (eq. 23)
     awk -v l=$1 -v u=$2 -v m=$MU -v R=$R 'BEGIN{pi = 3.141592653589793; q = R/l
@@ -165,3 +168,5 @@ if [ "$TIER" = reduced ]; then
                 t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
     done
 fi
+}
+experiment

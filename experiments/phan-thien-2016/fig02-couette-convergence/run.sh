@@ -10,9 +10,12 @@ case $TIER in
 esac
 solvers="scheme1 scheme2_paper scheme2_consistent pcg"
 # the simulations
+simulations() {
 for solver in $solvers; do
     dpd_run $solver couette.cfg "${tier[@]}" --set "overdamped.solver=\"$solver\""
 done
+}
+analysis() {
 # the analysis
 for solver in $solvers; do
     emit_from $solver solver_iterations "iterations_$solver"
@@ -25,3 +28,5 @@ sed -i 's/^iterations_scheme2_paper\t/iterations_scheme2\t/; s/^true_error_schem
 emit_ratio cpu_ratio_scheme1_scheme2 scheme1 solver_seconds_per_step scheme2_paper solver_seconds_per_step
 emit_ratio iteration_ratio_scheme1_pcg scheme1 solver_iterations pcg solver_iterations
 cp "$OUT/runs/pcg/profile.tsv" "$OUT/profile_pcg.tsv"
+}
+experiment

@@ -17,12 +17,15 @@ declare -A ladder=([scheme1]="1e-7 1e-8 1e-9" [scheme2_paper]="1e-6 1e-7 1e-8"
                    [scheme2_consistent]="1e-6 1e-7 1e-8" [pcg]="1e-5 1e-6 1e-7 1e-8" [pcg_2level]="1e-5 1e-6 1e-7 1e-8")
 solvers="scheme1 scheme2_paper scheme2_consistent pcg pcg_2level"
 # the simulations
+simulations() {
 for solver in $solvers; do
     for tol in ${ladder[$solver]}; do
         dpd_run ${solver}_$tol $scene "${len[@]}" --set "overdamped.solver=\"$solver\"" --set overdamped.tolerance=$tol \
             --set overdamped.reference_own_fixed_point=true
     done
 done
+}
+analysis() {
 # the analysis
 printf 'solver\ttolerance\titerations\titerations_se\ttrue_error\tcpu_seconds\tcpu_seconds_se\n' > "$OUT/ladder.tsv"
 for solver in $solvers; do
@@ -60,3 +63,5 @@ num_awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,
       printf "best_iterations_is_pcg_2level\t%d\t0\n", bi == "pcg_2level"
       printf "best_time_is_pcg_2level\t%d\t0\n", bt == "pcg_2level"
   }' "$OUT/ladder.tsv" >> "$OUT/summary.tsv"
+}
+experiment

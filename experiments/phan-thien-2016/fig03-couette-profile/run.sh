@@ -14,10 +14,13 @@ case $TIER in
     paper) declare -A len=([pcg]="--set steps=140000" [scheme2_paper]="--set steps=70000" [le]="--set equilibration=1000 --set steps=12000") ;;
 esac
 # the simulations (the Lees-Edwards cross-check below takes its density and rate from their analysis)
+simulations() {
 for solver in pcg scheme2_paper; do
     # shellcheck disable=SC2086
     dpd_run $solver couette.cfg ${len[$solver]} --set "overdamped.solver=\"$solver\"" --set measure.profile.per_block=true
 done
+}
+analysis() {
 # the analysis
 for solver in pcg scheme2_paper; do
     sfx=; [ $solver = pcg ] || sfx=_scheme2
@@ -56,13 +59,21 @@ emit shear_rate_scheme2_minus_pcg $(num_awk -F'\t' '$1=="shear_rate"{a=$2; as=$3
 read -r rho rhose < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
     $1>=r[1] && $1<=r[2] {n++; d[n]=$2; e[n]=$3} END{printf "%.6f\t%.4g\n", num_mean(d, n), num_quad(e, n)/n}' "$OUT/profile.tsv")
 emit density_bulk "$rho" "$rhose"
+}
+# round 2, a simulation after the analysis: its density and shear rate are the measured rho and g,
+# which it reads from the analysis above (density_bulk, shear_rate of summary.tsv)
+simulations_2() {
+rho=$(from_analysis density_bulk | cut -f1)
 read -r g _ < <(awk -F'\t' '$1=="shear_rate"{print $2 "\t" $3}' "$OUT/summary.tsv")
-# a simulation after the analysis: its density and shear rate are the measured rho and g
 # shellcheck disable=SC2086
 dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg" ${len[le]} \
     --set "types.[0].density=$rho" --set "shear_rate=$g" --set dt=0.01 --set seed=2017
+}
+analysis_2() {
 emit_from le viscosity eta_lees_edwards_bulk_density
 # the LE density is held at the measured mean: its error enters through d eta / d rho ~ 2 eta / rho
 emit eta_wall_minus_lees_edwards $(num_awk -F'\t' -v r=$rho -v rs=$rhose -v le="$(get le viscosity)" '
     $1=="eta"{a=$2; as=$3} END{split(le, L, "\t"); e[1] = as; e[2] = L[2]; e[3] = 2*L[1]/r*rs
         printf "%.10g\t%.4g", a-L[1], num_quad(e, 3)}' "$OUT/summary.tsv")
+}
+experiment

@@ -9,6 +9,7 @@ case $TIER in
     paper) seeds=(1 2 3 4 5 6 7 8); len=(); b0=1000; b1=400; ts=30 ;;
 esac
 # the simulations
+simulations() {
 for m in m0 m1; do
     for seed in "${seeds[@]}"; do
         if [ $m = m0 ]; then blk=(--set measure.every=1 --set measure.blocks=$b0)   # blocks of 4 steps
@@ -16,6 +17,8 @@ for m in m0 m1; do
         dpd_run ${m}_s$seed $m.cfg "${len[@]}" "${blk[@]}" --set seed=$seed
     done
 done
+}
+analysis() {
 # the analysis
 for m in m0 m1; do
     files=()
@@ -35,3 +38,5 @@ for m in m0 m1; do
     emit_mean "temperature_$m" temperature "${runs[@]}"
 done
 emit_ratio t90_ratio_m1_m0 . t90_m1 . t90_m0
+}
+experiment

@@ -10,6 +10,11 @@ case $TIER in
     quick) tier=(--set equilibration=1000 --set steps=80000) ;;
     paper) tier=(--set equilibration=2000 --set steps=3200000) ;;
 esac
+simulations() {
 dpd_run noflow cylinder.cfg "${tier[@]}"
+}
+analysis() {
 for q in exclusion_radius force_on_cylinder_x force_on_cylinder_y torque_on_cylinder_z; do emit_from noflow $q; done
 for t in around density_map force_map rdf; do cp "$OUT/runs/noflow/$t.tsv" "$OUT/$t.tsv"; done
+}
+experiment

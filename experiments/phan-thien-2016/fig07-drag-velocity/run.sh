@@ -7,18 +7,21 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any phan-thien-2016/fig06-cylinder-exclusion
 scene=$DPD_ROOT/experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
-fig06=$(upstream phan-thien-2016/fig06-cylinder-exclusion)/summary.tsv
 case $TIER in
     quick) Ps="0.1 0.5 1.0"; tier=(--set equilibration=500 --set steps=8000); shear=(--set equilibration=300 --set steps=3000) ;;
     paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; tier=(--set equilibration=1000 --set steps=50000)
            shear=(--set equilibration=1000 --set steps=20000) ;;
 esac
 # the simulations
+simulations() {
 dpd_run shear shear.cfg "${shear[@]}"
 for P in $Ps; do   # sampled every step: the m = 0 velocities are nearly white in time
     dpd_run "P$P" "$scene" "${tier[@]}" --set "types.[0].body_force=[$P,0.0]" --set measure.every=1 \
         --set seed=$((7000 + 10#${P/./}))
 done
+}
+analysis() {
+fig06=$(upstream phan-thien-2016/fig06-cylinder-exclusion)/summary.tsv
 # the analysis
 emit_from shear viscosity eta_solvent
 a=$(awk -F'\t' '$1=="exclusion_radius"{print $2 "\t" $3}' "$fig06")
@@ -44,3 +47,5 @@ for P in $Ps; do
         printf "%s\t%g\t%g\t%g\t%g\t%g\t%g\n", P, D[1], D[2], V[1], V[2], FH, FH * rel > "/dev/stderr"
     }' >> "$OUT/summary.tsv" 2>> "$OUT/drag.tsv"
 done
+}
+experiment

@@ -12,6 +12,7 @@ case $TIER in
     paper) Ps="0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"; seeds="1 2 3"; tier=(--set equilibration=1000 --set steps=20000) ;;
 esac
 # the simulations: the flows, and the equation of state of the m = 1 fluid (Mach number, below)
+simulations() {
 for m in 0 1; do
     scene=$m0; [ $m = 1 ] && scene=$m1
     for P in $Ps; do
@@ -22,6 +23,8 @@ for m in 0 1; do
     done
 done
 for N in 137 151; do dpd_run "eos_N$N" eos-m1.cfg --set "types.[0].count=$N" --set seed=$((8500 + N)); done
+}
+analysis() {
 # the analysis
 printf 'P\tm\tresidual\tresidual_se\tdivu\tdivu_se\tU\tU_se\n' > "$OUT/fields.tsv"
 for m in 0 1; do
@@ -66,3 +69,5 @@ num_awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2,
           ratio("residual_growth_ratio_m1_m0", G["residual_growth_m1"], E["residual_growth_m1"], G["residual_growth_m0"], E["residual_growth_m0"])
           ratio("divu_growth_ratio_m1_m0", G["divu_growth_m1"], E["divu_growth_m1"], G["divu_growth_m0"], E["divu_growth_m0"]) }' \
     "$OUT/fields.tsv" >> "$OUT/summary.tsv"
+}
+experiment

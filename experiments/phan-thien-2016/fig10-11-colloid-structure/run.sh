@@ -9,8 +9,11 @@ case $TIER in
     paper) tier=(--set equilibration=2000 --set steps=150000) ;;
 esac
 # the simulations
+simulations() {
 dpd_run field triangle.cfg
 dpd_run colloid colloid.cfg "${tier[@]}"
+}
+analysis() {
 # the analysis
 cp "$OUT/runs/field/force_map.tsv" "$OUT/force_map.tsv"
 emit_from colloid colloid_radius
@@ -24,3 +27,5 @@ emit_from colloid mean_velocity_solvent_y
 awk -F'\t' 'NR > 1 && $2 >= 0.001 { printf "solvent_radius\t%.6g\t0\n", $1 - 0.005; exit }' \
     "$OUT/runs/colloid/rdf.tsv" >> "$OUT/summary.tsv"
 for t in rdf msd colloid_msd colloid_around; do cp "$OUT/runs/colloid/$t.tsv" "$OUT/$t.tsv"; done
+}
+experiment

@@ -10,11 +10,14 @@ case $TIER in
 esac
 ks="1 2 3 4 6 8"
 # the simulations: the solvent alone (k = 0) and the suspensions
+simulations() {
 dpd_run k0 shear.cfg "${tier[@]}" --set colloids2d.count=0 --set types.[1].count=0 --set seed=1200
 for k in $ks; do
     dpd_run "k$k" shear.cfg "${tier[@]}" --set colloids2d.count=$k --set "types.[1].count=$((3 * k))" \
         --set seed=$((1200 + k))
 done
+}
+analysis() {
 # the analysis
 emit_from k0 viscosity eta_solvent
 printf 'k\tphi\teta\teta_se\teta_r\teta_r_se\teta_r_minus_1\teta_spring\teta_spring_se\n' > "$OUT/eta_r.tsv"
@@ -31,3 +34,5 @@ done
 awk -F'\t' '$1=="slope"{printf "eta_r_slope\t%s\t%s\n", $2, $3} $1=="chi2_dof"{printf "eta_r_slope_chi2_dof\t%s\t0\n", $2}' "$OUT/fit.tsv" >> "$OUT/summary.tsv"
 # the spring stress at the most concentrated suspension (the paper: oscillatory, zero mean)
 emit_from k8 viscosity_spring eta_spring_k8
+}
+experiment

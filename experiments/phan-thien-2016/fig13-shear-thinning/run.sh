@@ -7,12 +7,12 @@
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any phan-thien-2016/fig10-11-colloid-structure
 scene=$DPD_ROOT/experiments/phan-thien-2016/fig12-relative-viscosity/shear.cfg
-f1011=$(upstream phan-thien-2016/fig10-11-colloid-structure)/summary.tsv
 case $TIER in
     quick) rates="0.25 1 4 33"; tier=(--set equilibration=300 --set steps=8000) ;;
     paper) rates="0.25 0.5 1 2 4 8 16 33"; tier=(--set equilibration=1000 --set steps=40000) ;;
 esac
 # the simulations: the suspension (k1) and the solvent alone (k0) at each rate
+simulations() {
 n=0
 for r in $rates; do
     n=$((n + 1))
@@ -20,6 +20,9 @@ for r in $rates; do
     dpd_run "k0_rate$r" "$scene" "${tier[@]}" --set shear_rate=$r --set seed=$((1400 + n)) \
         --set colloids2d.count=0 --set types.[1].count=0
 done
+}
+analysis() {
+f1011=$(upstream phan-thien-2016/fig10-11-colloid-structure)/summary.tsv
 # the analysis
 a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
 emit colloid_radius "$a" 0
@@ -41,3 +44,5 @@ awk -F'\t' '$1=="thinning_ratio"{ printf "thinning_significance\t%.6g\t0\n", ($2
 num_awk -F'\t' -v lo=$lo -v hi=$hi 'NR > 1 && $1 == lo { a = $7; as = $8 } NR > 1 && $1 == hi { b = $7; bs = $8 }
     END { num_ratio(a, as, b, bs, o); print num_row("relative_thinning_ratio", o) }' \
     "$OUT/thinning.tsv" >> "$OUT/summary.tsv"
+}
+experiment

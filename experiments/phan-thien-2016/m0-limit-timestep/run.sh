@@ -23,6 +23,7 @@ analyse() {
 }
 mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
 # the simulations: 1. the m = 0 solve and the inertial runs at decreasing m; 2. the m = 0 time steps
+simulations() {
 dpd_run m0 $od --set measure.profile.per_block=true --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
 for m in $masses; do
     dt=$(mdt $m)
@@ -34,6 +35,8 @@ for dt in $dts; do
     dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
 done
+}
+analysis() {
 # 1. m -> 0
 analyse m0 m0
 printf 'm\tdt\tshear_rate\tshear_rate_se\ttemperature\n' > "$OUT/m-limit.tsv"
@@ -55,3 +58,5 @@ awk -F'\t' -v dts="$dts" 'BEGIN{n=split(dts,D," ")} {v[$1]=$2; s[$1]=$3}
             ok=(e/e0 > 0.9 && e/e0 < 1.1 && dd < 0.1); if(ok && bad==0) best=d; if(!ok) bad=1
             printf "%s\t%s\t%s\t%s\t%s\t%s\t%d\n", d, v["shear_rate_dt" d], s["shear_rate_dt" d], e, s["eta_dt" d], dd, ok >> out}
         printf "dt_max_sound\t%s\t0\n", best}' out="$OUT/dt-scan.tsv" "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+}
+experiment

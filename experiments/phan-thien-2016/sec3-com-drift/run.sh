@@ -15,6 +15,7 @@ emit_list() { local q=$1; shift
     num_awk -v q="$q" -v v="$*" 'BEGIN { k = split(v, x, " "); num_mean_se(x, k, o); if (k == 1) o["se"] = 0
         print num_row(q, o) }' >> "$OUT/summary.tsv"; }
 # the simulations
+simulations() {
 for solver in scheme1 scheme2_paper; do
     for seed in "${seeds[@]}"; do
         dpd_run "${solver}_s$seed" com.cfg "${tier[@]}" --set seed=$seed --set "overdamped.solver=\"$solver\""
@@ -24,6 +25,8 @@ if [ "$TIER" = paper ]; then
     # the published Scheme 2's velocity sum is a solver-tolerance effect: one run at 1e-10
     dpd_run scheme2_tol1e-10 com.cfg --set seed=1 --set 'overdamped.solver="scheme2_paper"' --set overdamped.tolerance=1e-10
 fi
+}
+analysis() {
 # the analysis
 for solver in scheme1 scheme2_paper; do
     short=${solver%_paper}
@@ -47,3 +50,5 @@ if [ "$TIER" = paper ]; then
     emit_from scheme2_tol1e-10 velocity_sum_max velocity_sum_max_scheme2_tol1e-10
     emit_from scheme2_tol1e-10 com_displacement_max com_displacement_max_scheme2_tol1e-10
 fi
+}
+experiment
