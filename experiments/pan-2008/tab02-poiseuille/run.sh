@@ -85,3 +85,12 @@ if [ "$TIER" != quick ]; then
             printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / 49)}' >> "$OUT/summary.tsv"
     done
 fi
+# how many times its run each row's torque would need for a stderr of 0.5 % of eq. 22 (the paper
+# tier's aim, README), (se / 0.005)^2 of torque_ratio_row (the error falling as 1 / sqrt(length)); its
+# stderr that of a variance from the row's blocks, sqrt(2 / (runs x 49))
+if [ "$TIER" != quick ]; then
+    for r in $ROWS; do
+        get . torque_ratio_row$r | awk -F'\t' -v k=$(row_reps $r) -v r=$r '{v = ($2 / 0.005) * ($2 / 0.005)
+            printf "torque_ratio_time_factor_half_percent_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / (k * 49))}' >> "$OUT/summary.tsv"
+    done
+fi

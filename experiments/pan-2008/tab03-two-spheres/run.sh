@@ -165,3 +165,7 @@ if [ "$TIER" = reduced ]; then
                 t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
     done
 fi
+# the linear-response ladder's cost (reduced tier): the CPU seconds of its three runs (a count: no error)
+if [ "$TIER" = reduced ]; then
+    for u in $LR_U; do get lr_u$u cpu_seconds; done | awk -F'\t' '{s += $1} END {printf "lr_cpu_seconds\t%.10g\t0\n", s}' >> "$OUT/summary.tsv"
+fi
