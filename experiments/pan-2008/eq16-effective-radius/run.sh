@@ -113,3 +113,8 @@ for Lb in $BOX_L; do
     paste <(get . D_colloid_L$Lb) <(echo "$cyh") | num_awk -F'\t' -v L=$Lb '{ num_lin2(1, $1, $2, 1 / L, $3, $4, o)
         print num_row("D_colloid_L" L "_yeh_hummer_corrected", o) }' >> "$OUT/summary.tsv"
 done
+# what paper.md says in words (issue 40 item 7): each D and R against the paper's (bands.tsv), and
+# D(8) - D(6)
+for q in D_colloid D_colloid_box_corrected D_colloid_extrapolated; do emit_pct ${q}_pct_from_paper "$(get . $q)" "$(paper_number D_colloid)"; done
+for q in R R_box_corrected R_extrapolated; do emit_pct ${q}_pct_from_paper "$(get . $q)" "$(paper_number R)"; done
+emit_minus D_colloid_L8_minus_L6 "$(get . D_colloid_L8)" "$(get . D_colloid_L6)"

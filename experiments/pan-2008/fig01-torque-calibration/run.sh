@@ -74,3 +74,7 @@ if [ -n "$(run_steps 0.0:5.5)" ]; then
         v = $2 * $2 * t; printf "torque_noise_gC0.0_gS5.5\t%.4g\t%.2g\n", v, v * f
         h = t * ($4 / 0.005) * ($4 / 0.005); printf "time_half_percent_gS5.5\t%.4g\t%.2g\n", h, h * f}' >> "$OUT/summary.tsv"
 fi
+# what paper.md says in words (issue 40 item 7): the calibrated torque's deviation from eq. 18 and its
+# ratio's difference from the paper's (bands.tsv)
+emit_pct torque_ratio_gS5.5_pct_from_eq18 "$(get . torque_ratio_gS5.5)" 1
+emit_minus torque_ratio_gS5.5_minus_paper "$(get . torque_ratio_gS5.5)" "$(paper_number torque_ratio_gS5.5)"

@@ -116,3 +116,7 @@ if [ "$TIER" != quick ]; then
             printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / (k * 49))}' >> "$OUT/summary.tsv"
     done
 fi
+# what paper.md says in words (issue 40 item 7): each row's measured curl/2 against its nominal drive,
+# and the control variate's total noise over D's
+for r in $ROWS; do emit_pct curl2_row${r}_pct_from_nominal "$(get . curl2_row$r)" "$(row_curl $r)"; done
+if [ "$TIER" = reduced ]; then emit_ratio cv_noise_total_over_D . cv_noise_total . cv_noise_D; fi

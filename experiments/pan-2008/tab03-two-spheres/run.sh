@@ -169,3 +169,7 @@ fi
 if [ "$TIER" = reduced ]; then
     for u in $LR_U; do get lr_u$u cpu_seconds; done | awk -F'\t' '{s += $1} END {printf "lr_cpu_seconds\t%.10g\t0\n", s}' >> "$OUT/summary.tsv"
 fi
+# what paper.md says in words (issue 40 item 7): each drag's deviation from eq. 23, and row 2's drag
+# over row 1's
+for r in $ROWS; do emit_pct drag_ratio_row${r}_pct_from_eq23 "$(get . drag_ratio_row$r)" 1; done
+if [ "$(echo $ROWS | wc -w)" -ge 2 ]; then emit_ratio drag_row2_over_row1 . drag_row2 . drag_row1; fi
