@@ -172,4 +172,4 @@ fi
 # what paper.md says in words (issue 40 item 7): each drag's deviation from eq. 23, and row 2's drag
 # over row 1's
 for r in $ROWS; do emit_pct drag_ratio_row${r}_pct_from_eq23 "$(get . drag_ratio_row$r)" 1; done
-if [ "$(echo $ROWS | wc -w)" -ge 2 ]; then emit_ratio drag_row2_over_row1 . drag_row2 . drag_row1; fi
+case " $ROWS " in *" 2 "*) emit_ratio drag_row2_over_row1 . drag_row2 . drag_row1 ;; esac   # (row 2 is not run at the quick tier)
