@@ -15,7 +15,7 @@ plot '+' u 1:(pDlo):(pDhi) w filledcurves fs transparent solid 0.15 noborder lc 
 # D(L) in the three boxes against 1/L, the weighted line extrapolated to 1/L = 0 (Yeh-Hummer)
 set output out.'/d-of-L-'.tier.'.png'
 set title "Colloid D in periodic boxes L = 6, 8, 12 against 1/L (tier: ".tier.")"
-set xlabel "1 / L"; set ylabel "D"; set key rmargin top; set xrange [-0.01:0.18]; set yrange [0.042:0.058]
+set xlabel "1 / L"; set ylabel "D"; set key rmargin top; set xrange [-0.01:0.18]; set autoscale y; set offsets 0, 0, graph 0.05, graph 0.05
 set terminal @PNG size 2200,960
 d0 = S("fit-d-of-L.tsv", "value_at_centre", 2); s1 = S("fit-d-of-L.tsv", "slope", 2)
 cyh = S("summary.tsv", "yeh_hummer_coefficient", 2)

@@ -6,11 +6,11 @@ set output out.'/two-spheres-'.tier.'.png'
 set multiplot layout 1,2 title "Two fixed spheres, flow normal to their line, u held at 0.3 (tier: ".tier.")"
 set xlabel "row of Table 3 (l = 2, 1.5, 1)"; set key top right
 set xrange [0.5:3.5]; set xtics 1
-set ylabel "drag per sphere / eq. 23"; set yrange [0.7:1.4]
+set ylabel "drag per sphere / eq. 23"; set autoscale y; set offsets 0, 0, graph 0.35, graph 0.05   # room above the data for the key
 plot PAPER_POINTS("^drag_ratio_row") u ($1 + 0.15):2:3:4 w yerrorbars ls PAPER t "paper, ± its band", \
      res.'/table3.data.tsv' u 1:($5 / $7):($6 / $7) skip 1 w yerrorbars ls OURS t "this package", \
      1 w l dt 2 lw 2 lc rgb 'black' t "eq. 23"
-set ylabel "torque per sphere / eq. 23"; set yrange [-1.2:3.4]
+set ylabel "torque per sphere / eq. 23"
 plot PAPER_POINTS("^torque_ratio_row") u ($1 + 0.15):2:3:4 w yerrorbars ls PAPER t "paper, ± its band", \
      res.'/table3.data.tsv' u 1:($9 / $11):($10 / $11) skip 1 w yerrorbars ls OURS t "this package", \
      1 w l dt 2 lw 2 lc rgb 'black' t "eq. 23"
