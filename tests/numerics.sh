@@ -195,6 +195,28 @@ is "num_block_mean: blocks summed in the file's order" "$got" 0
 got=$(printf '%s\n' "$rows" | num_awk -F'\t' '{ num_block_add($1, $2, $3) } END { for (j = 1; j <= NUM_NBLK; j++) printf "%s ", NUM_BLKS[j] }')
 [ "$got" = "7 3 1 " ] && ok "num_block_add: blocks in the order of their first row" || bad "block order" "$got"
 
+# ---- exp.sh's quoting helpers (issue 40 item 7: what paper.md says in words is a quantity the
+# analysis writes): emit_pct, emit_minus, paper_number, in a scratch result directory
+mkdir -p "$tmp/exp/res"
+printf 'quantity\ttier\tkind\tlo\thi\tk_sigma\tresolution\tpaper\tsource\n' > "$tmp/exp/bands.tsv"
+printf 'q\tpaper\tclaim\t1\t2\t-\t-\t1.5\tx\nq\treduced\tclaim\t1\t2\t-\t-\t1.25\tx\ng\tpaper\tgate\t1\t2\t-\t-\t9\tx\n' >> "$tmp/exp/bands.tsv"
+expq() { ( cd "$tmp/exp" && DPD=true OUT="$tmp/exp/res" TIER=$1 DPD_ROOT="$OLDPWD" && export DPD OUT TIER DPD_ROOT && shift &&
+           . "$DPD_ROOT/tools/lib/exp.sh" && "$@" ) 2> "$tmp/exp/err"; }
+row() { awk -F'\t' -v q="$1" '$1 == q { print $2 " " $3 }' "$tmp/exp/res/summary.tsv"; }
+expq reduced emit_pct p1 "$(printf '2.0\t0.1')" 1.6
+got=$(row p1); is "emit_pct: 100 (a / b - 1) from an exact b" "${got% *}" 25; is "emit_pct: its error 100 se_a / b" "${got#* }" 6.25
+expq reduced emit_pct p2 "$(printf '2\t0.1')" "$(printf '4\t0.2')"
+got=$(row p2); is "emit_pct: a and b with errors" "${got% *}" -50; is "emit_pct: relative errors in quadrature" "${got#* }" "$(x '50 * sqrt(0.005)')" 1e-3
+expq reduced emit_pct p3 "$(printf 'nan\t0.1')" 2
+[ "$(row p3)" = "nan nan" ] && ok "emit_pct: a nan operand gives nan" || bad "emit_pct nan" "$(row p3)"
+expq reduced emit_minus m1 "$(printf '2\t0.3')" "$(printf '1\t0.4')"
+got=$(row m1); is "emit_minus: a - b" "${got% *}" 1; is "emit_minus: errors in quadrature" "${got#* }" 0.5
+[ "$(expq reduced paper_number q)" = 1.25 ] && ok "paper_number: the claim row of the tier" || bad "paper_number reduced" "$(expq reduced paper_number q)"
+[ "$(expq quick paper_number q)" = 1.5 ] && ok "paper_number: else the paper tier's" || bad "paper_number quick" "$(expq quick paper_number q)"
+if expq paper paper_number g > /dev/null; then bad "paper_number: a gate has no paper number" "exit 0"
+elif grep -q "no paper number for 'g' in bands.tsv" "$tmp/exp/err"; then ok "paper_number: a gate's row is refused, named"
+else bad "paper_number: message" "$(cat "$tmp/exp/err")"; fi
+
 # ---- num_awk passes awk's options and files through
 got=$(printf 'a:4\n' | num_awk -F: -v k=2 -vj=3 '{ print $2 * k * j }')
 [ "$got" = 24 ] && ok "num_awk: -F, -v VAR=VALUE and -vVAR=VALUE" || bad "num_awk options" "$got"

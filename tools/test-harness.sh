@@ -185,10 +185,6 @@ Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}};
 
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
-## pan-2008/calc: expressions, kept for the sections of pan-2008
-
-Calc: {{calc:%.1f:[x/y:eta]/[x/y:eta:se]}}; {{calc:%.3g:[tsv:data/t.tsv:0.4940:eta_r]*2}}; {{calc:%.2f:[x/y@quick:eta]-29}}; {{calc:%.0f:sqrt(16)+(2^3)}}.
-
 Bench: {{bench:rot.tsv:cost ratio:value}}; {{bench:none.tsv:cost ratio:value}}; {{bench:rot.tsv:no such row:value}}.
 
 Quick: {{x/paperonly@quick:q}}; committed {{x/paperonly:q}}.
@@ -377,11 +373,6 @@ if [ -f "$G" ]; then
     in_file "paper-filter: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
     in_file "paper-filter: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
     in_file "paper-filter: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
-    # 30.9 / 0.3 = 103; 2 x 5.17; quick 29.317 - 29; sqrt(16) + 2^3
-    in_file "paper-filter: calc of a value and its stderr" "$G" '^Calc: 103.0; '
-    in_file "paper-filter: calc of a tsv cell" "$G" '; 10.3; '
-    in_file "paper-filter: calc from a pinned quick tier, marked" "$G" '; 0.32 (quick tier); '
-    in_file "paper-filter: calc with sqrt and powers" "$G" '; 12\.$'
     in_file "paper-filter: a value in a printf format, its stderr after it" "$G" '^Formats: 30.9 +- 0.3; '
     in_file "paper-filter: a value in a format, no stderr of zero" "$G" '; 3.710; '
     in_file "paper-filter: a formatted value of a pinned tier, marked" "$G" '; 29 +- 0.25 (quick tier); '
@@ -462,12 +453,25 @@ printf '# A\n\ntext\n## B glued\n' > "$root/glued.md"
 T "render-paper: a heading without a blank line before it fails" 1 "$tools/render-paper" -i "$root/glued.md" -o "$root/build/glued.html"
 has "render-paper: names the line" 'glued.md:4: ## B glued'
 
-# {{calc:}} only in the sections of pan-2008 (issue 40 item 7)
-printf '%s\n' '# A' '' 'a {{calc:%.1f:1+1}}' '' '## pan-2008/x: kept' '' 'b {{calc:%.1f:1+1}}' '' '## other/x: not' '' 'c {{calc:%.1f:2}}' > "$root/calcout.md"
-T "render-paper: {{calc:}} outside pan-2008's sections fails" 1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
+# no expressions in the text (issue 40 item 7): {{calc:}}, the former expression language, is refused
+# everywhere, the sections of pan-2008 included, in a draft too, each named; by render-paper before
+# pandoc runs, and by the filter itself (pandoc with the filter alone)
+printf '%s\n' '# A' '' 'a {{calc:%.1f:1+1}}' '' '## pan-2008/x: once kept' '' 'b {{calc:%.1f:[x/y:eta]*2}}' '' '## other/x: not' '' 'c {{calc:%.1f:2}}' > "$root/calcout.md"
+T "render-paper: {{calc:}} fails" 1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
 has "render-paper: names the first" 'calcout.md:3: a {{calc'
+has "render-paper: names the one in pan-2008's section" 'calcout.md:7: b {{calc'
 has "render-paper: names the last" 'calcout.md:11: c {{calc'
-lacks "render-paper: not the one in pan-2008's section" 'calcout.md:7'
+has "render-paper: says what to write instead" 'let the analysis write the quantity'
+if [ -e "$root/build/calcout.md" ]; then bad "render-paper: wrote output despite {{calc:}}" "$root/build/calcout.md"; else ok "render-paper: writes nothing on {{calc:}}"; fi
+T "render-paper: {{calc:}} fails in a draft (MKPAPER_ALLOW_MISSING=1)" 1 env MKPAPER_ALLOW_MISSING=1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
+has "render-paper: the draft names it" 'calcout.md:7: b {{calc'
+if command -v pandoc >/dev/null; then
+    T "paper-filter: {{calc:}} fails in the filter alone" 1 env DPD_ROOT="$root" pandoc "$root/calcout.md" --lua-filter "$tools/lib/paper-filter.lua" -t markdown -o "$root/build/calcout.filter.md"
+    has "paper-filter: calc is no expression: refused, the first named" '{{calc:%.1f:1+1}}: no expressions in the text'
+    has "paper-filter: calc in pan-2008's section refused" '{{calc:%.1f:\[x/y:eta\]\*2}}: no expressions in the text'
+    has "paper-filter: calc refused, the last named" '{{calc:%.1f:2}}: no expressions in the text'
+    has "paper-filter: counts the three" '^paper-filter: 3 placeholder(s) could not be filled'
+fi
 
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
@@ -495,8 +499,8 @@ printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
     'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
-    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' '' '## pan-2008/bad: calc' '' \
-    'm {{calc:%.1f:[x/y:nonesuch]}} n {{calc:%.1f:system(1)}} o {{calc:%s:1}} p {{calc:%.1f:1/0}} q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
+    'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' '' '## pan-2008/bad: more' '' \
+    'q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
 T "paper-filter: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
 has "paper-filter: names a pinned tier without results" '{{x/y@reduced:eta}}: no such quantity in results/x/y/{reduced}'
 has "paper-filter: names a pinned CPU without results" '{{cpu:x/y@reduced}}'
@@ -510,12 +514,8 @@ has "paper-filter: names a derived value with a missing operand" '{{pct:x/y:eta/
 has "paper-filter: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
 has "paper-filter: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
 has "paper-filter: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
-has "paper-filter: calc names a missing operand" '{{calc:%.1f:\[x/y:nonesuch\]}}: operand \[x/y:nonesuch\]: no such quantity'
-has "paper-filter: calc refuses anything but arithmetic" '{{calc:%.1f:system(1)}}: expression holds something other'
-has "paper-filter: calc refuses a non-numeric format" '{{calc:%s:1}}: expected calc:FMT:EXPR'
-has "paper-filter: calc refuses a non-finite result" '{{calc:%.1f:1/0}}: cannot evaluate'
 has "paper-filter: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
-has "paper-filter: counts every failed placeholder" '17 placeholder(s) could not be filled'
+has "paper-filter: counts every failed placeholder" '13 placeholder(s) could not be filled'
 lacks "paper-filter: no quick-tier count without such placeholders" 'await the quick tier'
 
 # the quick tier, never committed: x/paperonly has a paper tier and no quick tier; what names
@@ -525,7 +525,7 @@ cat > "$root/quick.md" <<'EOF2'
 ## pan-2008/quick: one section
 
 a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}} c {{diff:x/paperonly@quick:q-q_tol1e-10}} d {{sigmas:x/paperonly:q_tol1e-10-x/paperonly@quick#q}}.
-e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}} f {{calc:%.2f:[x/paperonly@quick:q]*2+[x/paperonly:q]}} g {{calc:%.2f:[tsv:results/x/paperonly/quick/cells.tsv:1:eta]/[x/y:eta]}}.
+e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}}.
 h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
 
 <!-- figure: x/paperonly/plot-quick.png | q against nothing -->
@@ -534,10 +534,10 @@ h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
 EOF2
 QG="$root/build/quick.gen.md"
 T "paper-filter: placeholders of a quick tier not computed here are no error" 0 "$M" -i "$root/quick.md" -o "$QG"
-has "paper-filter: one line counts them" '^paper-filter: 10 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
+has "paper-filter: one line counts them" '^paper-filter: 8 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
 if [ "$(grep -c 'await the quick tier' "$root/out")" = 1 ]; then ok "paper-filter: the count is a single line"; else bad "paper-filter: count lines" "$root/out"; fi
 in_file "paper-filter: quick value, CPU, diff, sigmas marked" "$QG" "^a $QM b $QM c $QM d $QM\\.\$"
-in_file "paper-filter: quick tsv cell and calc operands marked" "$QG" "^e $QM f $QM g $QM\\.\$"
+in_file "paper-filter: quick tsv cell marked" "$QG" "^e $QM\\.\$"
 in_file "paper-filter: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
 in_file "paper-filter: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
 in_file "paper-filter: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
@@ -554,12 +554,12 @@ else bad "paper-filter: notices per section" "$(cat "$root/qsec.notices") in $ro
 if awk '/^# A/ { getline; getline; ok = /^::: quick-notice/ } END { exit !ok }' "$root/build/qsec.gen.md"; then ok "paper-filter: the notice follows its heading"
 else bad "paper-filter: the notice's place" "$root/build/qsec.gen.md"; fi
 T "paper-filter: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
-has "paper-filter: draft counts them" '^paper-filter: 10 placeholder(s) await the quick tier'
+has "paper-filter: draft counts them" '^paper-filter: 8 placeholder(s) await the quick tier'
 if grep -q 'missing' "$QG"; then bad "paper-filter: draft calls a quick placeholder missing" "$QG"; else ok "paper-filter: draft does not call them missing"; fi
-# still errors: committed tiers, a quick tier that exists, an unknown experiment, a malformed expression
-printf '%s\n' '## pan-2008/qbad: calc' '' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
-    'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}} g {{calc:%.1f:[x/paperonly@quick:q]+[x/paperonly:nonesuch]}}' \
-    'h {{calc:%.1f:[x/paperonly@quick:q]+system(1)}} i {{diff:x/paperonly@quick:q-x/nonesuch#q}} j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
+# still errors: committed tiers, a quick tier that exists, an unknown experiment
+printf '%s\n' '## pan-2008/qbad: errors' '' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
+    'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}}' \
+    'i {{diff:x/paperonly@quick:q-x/nonesuch#q}} j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
     'k {{tsv:results/x/paperonly/paper/none.tsv:1:a}} l {{verdict:x/nores}}' \
     '<!-- figure: x/paperonly/other-paper.png -->' '<!-- figure: x/y/fig-quick.png -->' '<!-- figure: x/nores/fig-reduced.png -->' \
     '<!-- tsv: results/x/y/quick/none.tsv -->' '<!-- tsv: results/x/paperonly/paper/none.tsv -->' '<!-- tsv: results/x/nonesuch/quick/t.tsv -->' \
@@ -571,8 +571,6 @@ has "paper-filter: a quantity absent from an existing quick tier fails" '{{x/y@q
 has "paper-filter: an INCOMPLETE quick tier fails" '{{x/incomplete@quick:q}}: no such quantity'
 has "paper-filter: a missing reduced tier fails" '{{x/paperonly@reduced:q}}: no such quantity'
 has "paper-filter: a quantity absent from the paper tier fails" '{{x/paperonly:nonesuch}}: no such quantity'
-has "paper-filter: calc with a quick operand and a missing one fails" 'operand \[x/paperonly:nonesuch\]: no such quantity'
-has "paper-filter: calc with a quick operand and a bad expression fails" 'system(1)}}: expression holds something other'
 has "paper-filter: derived with a quick operand and an unknown one fails" '{{diff:x/paperonly@quick:q-x/nonesuch#q}}: no quantity'
 has "paper-filter: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
 has "paper-filter: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
@@ -583,7 +581,7 @@ has "paper-filter: a missing reduced-tier figure fails" 'fig-reduced.png does no
 has "paper-filter: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
 has "paper-filter: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
 has "paper-filter: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
-has "paper-filter: counts them all as failures" '^paper-filter: 20 placeholder(s) could not be filled'
+has "paper-filter: counts them all as failures" '^paper-filter: 18 placeholder(s) could not be filled'
 lacks "paper-filter: none of them counted as awaiting the quick tier" 'await the quick tier'
 # once the quick tier exists, the same placeholders are filled from it (and marked as quick)
 mkres x/paperonly quick 12.4 <<EOF2
@@ -599,7 +597,7 @@ T "paper-filter: the quick tier computed, its placeholders are filled" 0 "$M" -i
 lacks "paper-filter: nothing awaits the quick tier" 'await the quick tier'
 # 0.75 +- 0.05 - 0.5 +- 0.05 = 0.25 +- 0.071; (0.25 - 0.75)/0.0707 = -7.1; 0.75 x 2 + 0.5; 3/30.9; 30.9/0.75 = 41.2 (+4020 +- 280 %)
 in_file "paper-filter: quick value, CPU, diff, sigmas filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier) c +0.25 +- 0.071 (quick tier) d -7.1 (quick tier)\.$'
-in_file "paper-filter: quick tsv cell and calc filled" "$QG" '^e 3 (quick tier) f 2.00 (quick tier) g 0.10 (quick tier)\.$'
+in_file "paper-filter: quick tsv cell filled" "$QG" '^e 3 (quick tier)\.$'
 in_file "paper-filter: derived with another experiment's quick operand filled" "$QG" '^h +4e+03 +- 2.8e+02 % (quick tier) i 0.5 +- 0\.$'
 in_file "paper-filter: quick figure shown" "$QG" '^!\[q against nothing\](figures/x/paperonly/plot-quick.png)$'
 in_file "paper-filter: quick tsv table shown" "$QG" '^| 1 | 2 |$'
@@ -609,13 +607,12 @@ T "paper-filter: a stale quick figure stays an error" 1 "$M" -i "$root/quick.md"
 has "paper-filter: stale quick figure named" 'plot-quick.png is older than results/x/paperonly/quick/summary.tsv'
 rm -rf "$root/results/x/paperonly/quick" "$root/figures/x/paperonly"
 
-# {{calc:}}'s parser: precedence and associativity as awk's, functions, operands; the '*' and '^'
-# of expressions that the markdown reader pairs with each other or with the text around
-cat > "$root/calc.md" <<'EOF2'
-## pan-2008/calc: expressions
+# emphasis and a superscript of the text around placeholders, table cells, a figure line inside a
+# paragraph; a placeholder where the filter does not look (a heading, the metadata) is an error
+cat > "$root/inline.md" <<'EOF2'
+## x/inline: placeholders in running text
 
-c1 {{calc:%.0f:2^3^2}} c2 {{calc:%.0f:-2^2}} c3 {{calc:%.2f:2^-1}} c4 {{calc:%.0f:2+3*4-6/2}} c5 {{calc:%.3f:exp(log(2))+sqrt([x/y:eta]-[x/y:eta]+4)}} c6 {{calc:%.2f:-(1+2)*-[x/y:eta:se]}} c7 {{calc:%.0f: 1 + 2 }} c8 {{calc:%g:1e3/4}}.
-s1 {{calc:%.0f:[x/y:eta]*2}} and {{calc:%.0f:2*[x/y:eta]}} s2 {{calc:%.0f:[x/y:eta:se]^2*100}} in x^2 y {{calc:%.0f:100*([x/y:eta:se])^2}} s3 *{{x/y:eta}}* s4 {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
+s1 {{x/y:eta:%.0f}} and x^2 y {{x/y:eta:%.1f}} s3 *{{x/y:eta}}* s4 {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
 | what | value |
 |---|---|
@@ -625,32 +622,19 @@ before
 <!-- figure: x/y/fig.png | inline -->
 after
 EOF2
-CG="$root/build/calc.gen.md"
-T "paper-filter: calc, emphasis, table cells, a figure line in a paragraph" 0 "$M" -i "$root/calc.md" -o "$CG"
-# 2^(3^2); -(2^2); 2^(-1); 2 + 12 - 3; 2 + sqrt(4); -3 x -0.3; 3; 250
-in_file "paper-filter: calc as awk: ^ right-associative and above unary minus, functions, operands" "$CG" \
-    '^c1 512 c2 -4 c3 0.50 c4 11 c5 4.000 c6 0.90 c7 3 c8 250\.$'
-# 30.9 x 2; 0.3^2 x 100 (the reader's superscript across "x^2 y" undone: plain spaces, no NBSP)
-in_file "paper-filter: '*' and '^' of expressions are not emphasis or superscripts" "$CG" \
-    '^s1 62 and 62 s2 9 in x^2 y 9 s3 \*30.9 +- 0.3\* s4 1.49\.$'
+CG="$root/build/inline.gen.md"
+T "paper-filter: emphasis, a superscript, table cells, a figure line in a paragraph" 0 "$M" -i "$root/inline.md" -o "$CG"
+in_file "paper-filter: the text's '*' and '^' around placeholders kept" "$CG" \
+    '^s1 31 +- 0.3 and x^2 y 30.9 +- 0.3 s3 \*30.9 +- 0.3\* s4 1.49\.$'
 in_file "paper-filter: a placeholder in a table cell" "$CG" '^| eta | 30.9 +- 0.3 |$'
 if awk '/^before$/ { getline a; getline b; ok = (a == "![inline](figures/x/y/fig.png)" && b == "after") } END { exit !ok }' "$CG"; then
     ok "paper-filter: a figure line inside a paragraph stays in it"
 else bad "paper-filter: a figure line inside a paragraph left it" "$CG"; fi
-printf '%s\n' '---' 'subtitle: "{{x/y@paper:eta}}"' '---' '# Heading {{x/y:eta}}' '' '## pan-2008/calc: expressions' '' 'a {{calc:%.1f:1+}} b {{calc:%.1f:(1}} c {{calc:%.1f:2**3}} d {{calc:%.1f:sqrt 4}}' \
-    'e {{calc:%.1f:log(-1)}} f {{calc:%.1f:[x/y:eta]e}} g {{calc:%.1f:os.exit(0)}} h {{calc:%.1f:[x/y:eta}}' > "$root/calcbad.md"
-T "paper-filter: malformed expressions fail" 1 "$M" -i "$root/calcbad.md" -o "$root/build/calcbad.gen.md"
-has "paper-filter: an expression ending early" '{{calc:%.1f:1+}}: cannot evaluate 1+: unexpected end'
-has "paper-filter: an unclosed parenthesis" "{{calc:%.1f:(1}}: cannot evaluate (1: expected ')'"
-has "paper-filter: two operators" "{{calc:%.1f:2\*\*3}}: cannot evaluate 2\*\*3: unexpected '\*'"
-has "paper-filter: a function without parentheses" "{{calc:%.1f:sqrt 4}}: cannot evaluate sqrt 4: expected '('"
-has "paper-filter: a non-finite result" '{{calc:%.1f:log(-1)}}: cannot evaluate log(-1): not finite'
-has "paper-filter: a letter after an operand" '{{calc:%.1f:\[x/y:eta\]e}}: expression holds something other'
-has "paper-filter: a name other than sqrt, log, exp" '{{calc:%.1f:os.exit(0)}}: expression holds something other'
-has "paper-filter: an unclosed operand" '{{calc:%.1f:\[x/y:eta}}: expression holds something other'
-has "paper-filter: a placeholder in a heading is an error" 'calcbad.md:4: {{x/y:eta}}: placeholder in a place the filter does not fill'
-has "paper-filter: a placeholder in the metadata is an error" 'calcbad.md:2: {{x/y@paper:eta}}: placeholder in a place the filter does not fill'
-has "paper-filter: counts them" '^paper-filter: 10 placeholder(s) could not be filled'
+printf '%s\n' '---' 'subtitle: "{{x/y@paper:eta}}"' '---' '# Heading {{x/y:eta}}' '' '## x/inline: text' '' 'a {{x/y:eta}}' > "$root/placebad.md"
+T "paper-filter: placeholders where the filter does not look fail" 1 "$M" -i "$root/placebad.md" -o "$root/build/placebad.gen.md"
+has "paper-filter: a placeholder in a heading is an error" 'placebad.md:4: {{x/y:eta}}: placeholder in a place the filter does not fill'
+has "paper-filter: a placeholder in the metadata is an error" 'placebad.md:2: {{x/y@paper:eta}}: placeholder in a place the filter does not fill'
+has "paper-filter: counts them" '^paper-filter: 2 placeholder(s) could not be filled'
 
 # ---------------------------------------------------------------- render
 if command -v pandoc >/dev/null; then

@@ -354,3 +354,26 @@ couette_viscosity() {
     num_awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \
         'BEGIN { num_ratio(t, ts, g, gs, o); printf "%s %s %s %s %.10g %.4g\n", g, gs, t, ts, o["v"], o["se"] }'
 }
+
+# What paper.md says of a result in words ("4 % below the paper's", "the halves differ by") is a
+# quantity the analysis writes, not arithmetic in the text (issue 40 item 7):
+# paper_number QUANTITY: the paper's number of a claim row of the experiment's bands.tsv (the `paper`
+# column, the row of this tier, else of the paper tier); fails if there is none
+paper_number() {
+    awk -F'\t' -v q="$1" -v t="$TIER" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+        $1 == q && $(c["kind"]) == "claim" && ($(c["tier"]) == t || $(c["tier"]) == "paper") { v[$(c["tier"])] = $(c["paper"]) }
+        END { x = (t in v) ? v[t] : v["paper"]; if (x == "" || x == "-") exit 1; print x }' bands.tsv \
+        || { echo "exp.sh: no paper number for '$1' in bands.tsv" >&2; return 1; }
+}
+# emit_pct QUANTITY A B: 100 (a / b - 1), a's deviation from b in per cent; A and B each "value<TAB>stderr"
+# (as get gives it) or a number (exact: the paper's, a theory's); first-order error of independent a, b
+emit_pct() {
+    num_awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { if (split(a, x, "\t") < 2) x[2] = 0; if (split(b, y, "\t") < 2) y[2] = 0
+        if (num_isnan(num_ratio(x[1], x[2], y[1], y[2], r))) num_set(o, "nan", "nan"); else num_scale(r["v"] - 1, r["se"], 100, o)
+        print num_row(q, o) }' >> "$OUT/summary.tsv"
+}
+# emit_minus QUANTITY A B: a - b, A and B as for emit_pct, errors in quadrature
+emit_minus() {
+    num_awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { if (split(a, x, "\t") < 2) x[2] = 0; if (split(b, y, "\t") < 2) y[2] = 0
+        num_diff(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+}

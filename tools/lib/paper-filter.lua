@@ -19,11 +19,6 @@
 --                                          (else the reduced, else the quick tier, marked)
 --   {{PAPER/EXP:QUANTITY:FMT}}             the value in the printf number format FMT (%.2f, %.1e ...),
 --                                          "+- stderr" after it only if the stderr is positive
---   {{calc:FMT:EXPR}}                      (pan-2008's sections only, until their analyses write these
---                                          quantities; tools/render-paper refuses it elsewhere) an
---                                          arithmetic expression printed with FMT: operands
---                                          [PAPER/EXP[@TIER]:Q] (value), [PAPER/EXP[@TIER]:Q:se] (stderr),
---                                          [tsv:PATH:ROW:COL]; numbers, + - * / ^ ( ), sqrt log exp
 --   {{verdict:PAPER/EXP}}                  the experiment's verdict from its bands, with the tier
 --   {{cpu:PAPER/EXP}}                      CPU seconds of the tier its numbers come from (provenance.tsv,
 --                                          rounded; the tier is named unless it is paper); several
@@ -47,7 +42,8 @@
 --   {{bench:FILE:ROW:COL}}                 one cell of bench/FILE (make bench) with the date and commit
 --                                          of its "date, commit" row; "not measured (run `make bench`)"
 --                                          if the file or the row is absent
--- Arithmetic a section needs is a quantity its experiment's analysis (run.sh) writes, not an expression here.
+-- Arithmetic a section needs is a quantity its experiment's analysis (run.sh) writes, not an expression here:
+-- there is no expression language ({{calc:...}}, its former one, is an error naming the placeholder; issue 40).
 -- The summary table (<!-- summary-table -->) opens with one sentence per paper and every claim by group,
 -- each experiment linked to its section (a heading "## PAPER/EXP: ..." gets the anchor exp-PAPER-EXP).
 -- Each placeholder's expansion is markdown, read by pandoc's markdown reader in its place. An inline
@@ -944,8 +940,8 @@ local function row_test(row)
 end
 
 -- one cell of a TSV file (COL, or VCOL+-SECOL for "value +- stderr"; numbers printed to 4 and 2
--- digits unless RAW): the cell text, or nil and the reason
-local function tsv_cell(lines, row, col, raw)
+-- digits): the cell text, or nil and the reason
+local function tsv_cell(lines, row, col)
     local header, columns, rows = tsv_rows(lines)
     if not header then return nil, 'empty file' end
     local vname, sename = col, nil
@@ -953,7 +949,7 @@ local function tsv_cell(lines, row, col, raw)
     local names, matches = row_test(row)
     names[#names + 1] = vname; names[#names + 1] = sename
     for _, n in ipairs(names) do if not columns[n] then return nil, 'no column ' .. n end end
-    local function cell(f, name, p) local c = f[columns[name]] or ''; return raw and c or fmt_if_number(p, c) end
+    local function cell(f, name, p) return fmt_if_number(p, f[columns[name]] or '') end
     for _, f in ipairs(rows) do
         if matches(f, columns) then
             return cell(f, vname, '%.4g') .. (sename and ' +- ' .. cell(f, sename, '%.2g') or '')
@@ -963,7 +959,7 @@ local function tsv_cell(lines, row, col, raw)
 end
 
 -- {{tsv:PATH:ROW:COL}}: returns 'ok', text, tier ('' if not a result's file) | 'quick', id | 'error', markdown
-local function tsv_lookup(spec, raw)
+local function tsv_lookup(spec)
     local ph, shown = '{{tsv:' .. spec .. '}}', 'missing: tsv:' .. spec
     local parts = split(spec, ':')
     if #parts ~= 3 or parts[3] == '' then return 'error', missing(ph, 'expected tsv:PATH:ROW:COL', shown) end
@@ -977,137 +973,16 @@ local function tsv_lookup(spec, raw)
     end
     local lines = read_lines(ROOT .. '/' .. p)
     if not lines then return 'error', missing(ph, 'no file ' .. p, shown) end
-    local v, why = tsv_cell(lines, row, col, raw)
+    local v, why = tsv_cell(lines, row, col)
     if not v then return 'error', missing(ph, p .. ': ' .. why, shown) end
     return 'ok', v, tier or ''
 end
 
 local function inline_tsv(spec)
-    local status, v, tier = tsv_lookup(spec, false)
+    local status, v, tier = tsv_lookup(spec)
     if status == 'quick' then return pending(v) end
     if status == 'error' then return v end
     return v .. (tier ~= '' and tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
-end
-
--- ---- {{calc:}} (kept only for the sections of pan-2008 until their analyses write those quantities, issue 40
--- item 7; tools/render-paper refuses it elsewhere): a recursive-descent parser of + - * / ^ ( ), sqrt log exp and numbers;
--- operands ([...]) are resolved to numbers before. Grammar (as awk's precedence):
---   sum = product {(+|-) product};  product = unary {(*|/) unary};  unary = (+|-) unary | power;
---   power = atom [^ unary];  atom = number | operand | (sum) | sqrt(sum) | log(sum) | exp(sum)
-local CALC_FUNCTIONS = { sqrt = math.sqrt, log = math.log, exp = math.exp }
-
--- tokens of EXPR: {kind = 'num'|'op'|'fn'|'operand', text}; nil and the offending text if a
--- character or a word is none of these
-local function calc_tokens(expr)
-    local tokens, i = {}, 1
-    while i <= #expr do
-        local c = expr:sub(i, i)
-        local num = expr:match('^%d+%.?%d*[eE][+-]?%d+', i) or expr:match('^%.%d+[eE][+-]?%d+', i)
-            or expr:match('^%d+%.?%d*', i) or expr:match('^%.%d+', i)
-        if c:match('%s') then i = i + 1
-        elseif num then tokens[#tokens + 1] = { kind = 'num', text = num }; i = i + #num
-        elseif c:match('[-+*/^()]') then tokens[#tokens + 1] = { kind = 'op', text = c }; i = i + 1
-        elseif c == '[' then
-            local body = expr:match('^%[([^]]+)%]', i)
-            if not body then return nil, expr:sub(i) end
-            tokens[#tokens + 1] = { kind = 'operand', text = body }; i = i + #body + 2
-        else
-            local word = expr:match('^%a+', i)
-            if word and CALC_FUNCTIONS[word] then tokens[#tokens + 1] = { kind = 'fn', text = word }; i = i + #word
-            else return nil, expr:sub(i) end
-        end
-    end
-    return tokens
-end
-
--- the value of TOKENS, operands looked up in VALUES (by token index); error() on a syntax error
-local function calc_evaluate(tokens, values)
-    local pos = 1
-    local function peek() return tokens[pos] end
-    local function accept(text) if tokens[pos] and tokens[pos].kind == 'op' and tokens[pos].text == text then pos = pos + 1; return true end end
-    local function expect(text) if not accept(text) then error("expected '" .. text .. "'", 0) end end
-    local sum
-    local function atom()
-        local t = peek()
-        if not t then error('unexpected end', 0) end
-        pos = pos + 1
-        if t.kind == 'num' then return tonumber(t.text) * 1.0 end
-        if t.kind == 'operand' then return values[pos - 1] end
-        if t.kind == 'fn' then expect('('); local x = sum(); expect(')'); return CALC_FUNCTIONS[t.text](x) end
-        if t.text == '(' then local x = sum(); expect(')'); return x end
-        error("unexpected '" .. t.text .. "'", 0)
-    end
-    local unary
-    local function power() local x = atom(); if accept('^') then return x ^ unary() end; return x end
-    unary = function()
-        if accept('-') then return -unary() end
-        if accept('+') then return unary() end
-        return power()
-    end
-    local function product()
-        local x = unary()
-        while true do
-            if accept('*') then x = x * unary() elseif accept('/') then x = x / unary() else return x end
-        end
-    end
-    sum = function()
-        local x = product()
-        while true do
-            if accept('+') then x = x + product() elseif accept('-') then x = x - product() else return x end
-        end
-    end
-    local x = sum()
-    if pos <= #tokens then error("unexpected '" .. tokens[pos].text .. "'", 0) end
-    return x
-end
-
--- an operand's number: 'ok', value, tier | 'quick', id | 'error', markdown (already reported)
-local function calc_operand(ph, shown, tok)
-    if tok:sub(1, 4) == 'tsv:' then
-        local status, v, tier = tsv_lookup(tok:sub(5), true)
-        if status ~= 'ok' then return status, v end
-        if not is_number(v) then return 'error', missing(ph, 'operand [' .. tok .. '] is not a finite number (' .. v .. ')', shown) end
-        return 'ok', tonumber(v) * 1.0, tier
-    end
-    local id, q = before(tok, ':'), after(tok, ':')
-    local want_se = q and q:match(':se$')
-    if want_se then q = q:sub(1, -4) end
-    local status, v, se, tier = 'missing'
-    if q then status, v, se, tier = quantity_of(id, q) end
-    if status == 'quick' then return 'quick', v end
-    if status ~= 'ok' then return 'error', missing(ph, 'operand [' .. tok .. ']: no such quantity', shown) end
-    if want_se then v = se end
-    if not is_number(v) then return 'error', missing(ph, 'operand [' .. tok .. '] is not a finite number (' .. v .. ')', shown) end
-    return 'ok', tonumber(v) * 1.0, tier
-end
-
-local function inline_calc(arg)
-    local ph, shown = '{{calc:' .. arg .. '}}', 'missing: calc:' .. arg
-    local format, expr = before(arg, ':'), after(arg, ':')
-    if not expr or not (format:match('^%%[-+ 0#]*%d*[eEfgG]$') or format:match('^%%[-+ 0#]*%d*%.%d+[eEfgG]$')) then
-        return missing(ph, 'expected calc:FMT:EXPR with FMT a printf number format (%.3g, %.0f ...)', shown)
-    end
-    local tokens, bad = calc_tokens(expr)
-    local values, mark, awaiting = {}, nil, nil
-    for i, t in ipairs(tokens or {}) do
-        if t.kind == 'operand' then
-            local status, v, tier = calc_operand(ph, shown, t.text)
-            if status == 'error' then return '**' .. shown .. '**' end   -- reported under its own name
-            if status == 'quick' then awaiting = v; values[i] = 1.0
-            else
-                values[i] = v
-                if tier ~= '' and tier ~= '-' and tier ~= 'paper' then mark = tier end
-            end
-        end
-    end
-    if not tokens then
-        return missing(ph, 'expression holds something other than numbers, operators and sqrt/log/exp (at "' .. bad .. '")', shown)
-    end
-    local ok, x = pcall(calc_evaluate, tokens, values)
-    if not ok then return missing(ph, 'cannot evaluate ' .. expr .. ': ' .. x, shown) end
-    if awaiting then return pending(awaiting) end     -- every other operand checked: not evaluated
-    if x ~= x or x == math.huge or x == -math.huge then return missing(ph, 'cannot evaluate ' .. expr .. ': not finite', shown) end
-    return string.format(format, x) .. (mark and ' (' .. mark .. ' tier)' or '')
 end
 
 local function inline_bench(arg)
@@ -1134,7 +1009,9 @@ local function expand_inline(kind, arg)
     elseif kind == 'cpu-h' then return inline_cpu(arg, true)
     elseif kind == 'tsv' then return inline_tsv(arg)
     elseif kind == 'pct' or kind == 'ratio' or kind == 'diff' or kind == 'sigmas' then return inline_derived(kind, arg)
-    elseif kind == 'calc' then return inline_calc(arg)
+    elseif kind == 'calc' then
+        return missing('{{calc:' .. arg .. '}}', 'no expressions in the text: a number a section needs is a quantity its'
+            .. " experiment's analysis writes, quoted as {{PAPER/EXP:QUANTITY[:FMT]}} (issue 40 item 7)", 'missing: calc:' .. arg)
     elseif kind == 'bench' then return inline_bench(arg)
     else return inline_value(kind, arg) end
 end

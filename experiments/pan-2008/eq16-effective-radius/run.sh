@@ -107,5 +107,19 @@ num_awk -F'\t' -v e="$eta" -v s="$slope" -v di="$dinf" -v m=$MU 'BEGIN{split(e,E
     num_rel1(1/(6*pi*m*D), D, Dse, o); print num_row("R_extrapolated", o)
     num_rel2(1/(6*pi*E[1]*D), D, Dse, E[1], E[2], o); print num_row("R_extrapolated_measured_eta", o)
     num_set(o, E[1], E[2]); print num_row("measured_eta", o)}' >> "$OUT/summary.tsv"
+# Yeh-Hummer read the other way (post hoc, no band; paper.md): the difference D(8) - D(6) it expects,
+# c (1/6 - 1/8), and each box's D corrected by c / L with the measured eta (errors of D and c in
+# quadrature: c comes from the fluid's viscosity, independent of the boxes' runs)
+cyh=$(get . yeh_hummer_coefficient)
+num_awk -F'\t' -v c="$cyh" 'BEGIN{split(c, C, "\t"); num_scale(C[1], C[2], 1/6 - 1/8, o); print num_row("yeh_hummer_D_L8_minus_L6", o)}' >> "$OUT/summary.tsv"
+for Lb in $BOX_L; do
+    paste <(get . D_colloid_L$Lb) <(echo "$cyh") | num_awk -F'\t' -v L=$Lb '{ num_lin2(1, $1, $2, 1 / L, $3, $4, o)
+        print num_row("D_colloid_L" L "_yeh_hummer_corrected", o) }' >> "$OUT/summary.tsv"
+done
+# what paper.md says in words (issue 40 item 7): each D and R against the paper's (bands.tsv), and
+# D(8) - D(6)
+for q in D_colloid D_colloid_box_corrected D_colloid_extrapolated; do emit_pct ${q}_pct_from_paper "$(get . $q)" "$(paper_number D_colloid)"; done
+for q in R R_box_corrected R_extrapolated; do emit_pct ${q}_pct_from_paper "$(get . $q)" "$(paper_number R)"; done
+emit_minus D_colloid_L8_minus_L6 "$(get . D_colloid_L8)" "$(get . D_colloid_L6)"
 }
 experiment

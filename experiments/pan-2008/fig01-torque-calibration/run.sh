@@ -67,5 +67,19 @@ done
 num_awk -F'\t' -v f=$(awk -v w=$OMEGA 'BEGIN { printf "%.10g", 0.4 / (w < 0 ? -w : w) }') 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3 * f; s[n] = $4 * f }
     END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \
     "$OUT/torque.tsv" >> "$OUT/summary.tsv"
+# the calibrated run's torque noise (reduced and paper tiers, 50 blocks): variance of the mean x
+# production time (torque^2 x time), and the production time at which that noise would give eq. 18's
+# ratio a stderr of 0.5 % (the paper's precision), t (se / 0.005)^2; their stderr that of a variance
+# from 50 blocks, sqrt(2 / 49)
+if [ -n "$(run_steps 0.0:5.5)" ]; then
+    t=$(awk -v n=$(run_steps 0.0:5.5) 'BEGIN { print n * 0.01 }')    # dt = 0.01 (rotating-sphere.cfg)
+    paste <(get . torque_gC0.0_gS5.5) <(get . torque_ratio_gS5.5) | awk -F'\t' -v t=$t '{f = sqrt(2 / 49)
+        v = $2 * $2 * t; printf "torque_noise_gC0.0_gS5.5\t%.4g\t%.2g\n", v, v * f
+        h = t * ($4 / 0.005) * ($4 / 0.005); printf "time_half_percent_gS5.5\t%.4g\t%.2g\n", h, h * f}' >> "$OUT/summary.tsv"
+fi
+# what paper.md says in words (issue 40 item 7): the calibrated torque's deviation from eq. 18 and its
+# ratio's difference from the paper's (bands.tsv)
+emit_pct torque_ratio_gS5.5_pct_from_eq18 "$(get . torque_ratio_gS5.5)" 1
+emit_minus torque_ratio_gS5.5_minus_paper "$(get . torque_ratio_gS5.5)" "$(paper_number torque_ratio_gS5.5)"
 }
 experiment

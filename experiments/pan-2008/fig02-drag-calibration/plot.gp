@@ -1,14 +1,13 @@
-# Pan et al. 2008, Fig. 2: superficial velocity past a fixed colloid against gamma^C_cf.
-set terminal pngcairo size 700,480 font ",10"
+# Pan et al. 2008, Fig. 2: superficial velocity past a fixed colloid against gamma^C_cf; eq. 19 and
+# Hasimoto's array from summary.tsv, the paper's point and its band from bands.tsv.
+load '../../plot-style.gp'
+set terminal @PNG size 1400,960
 set output out.'/superficial-'.tier.'.png'
-set datafile separator "\t"
-mu = 3.6388; R = 0.2737; F = 3000*0.001877; phi = 4*pi*R**3/3/1000.
-u19 = F/(6*pi*mu*R); uH = u19*(1 - 1.7601*phi**(1./3) + phi - 1.5593*phi**2)
+S(q) = real(system("awk -F'\t' '$1==\"".q."\"{print $2}' ".res."/summary.tsv"))
+u19 = S("u_eq19"); uH = S("u_hasimoto")
 set title "Superficial velocity past one fixed colloid, 10^3 box, gamma^S_{cf} = 5.5 (tier: ".tier.")"
 set xlabel "gamma^C_{cf}"; set ylabel "superficial velocity u (eq. 20)"; set key top right
-set xrange [-0.5:7.5]; set yrange [0.2:0.45]
-plot res.'/superficial.tsv' u 1:2:3 w yerrorbars pt 7 t "this package", \
-     '-' u 1:2 w p pt 6 ps 1.5 t "paper (gamma^C_{cf} = 3.5)", \
-     u19 w l dt 2 t "eq. 19 (paper mu, R)", uH w l dt 3 t "Hasimoto, simple cubic array"
-3.5	0.2986
-e
+set xrange [-0.5:7.5]; set autoscale y; set offsets 0, 0, graph 0.35, graph 0.05   # room above the data for the key
+plot PAPER_POINTS("^u_gC") u ($1 + 0.15):2:3:4 w yerrorbars ls PAPER t PAPER_TITLE, \
+     res.'/superficial.tsv' u 1:2:3 skip 1 w yerrorbars ls OURS t "this package", \
+     u19 w l dt 2 lw 2 lc rgb 'black' t "eq. 19 (paper mu, R)", uH w l dt 3 lw 2 lc rgb 'black' t "Hasimoto, simple cubic array"

@@ -53,5 +53,16 @@ done
 num_awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { num_div($2, $3, a, o); print num_row("u_ratio_eq19_gC3.5", o)
     num_div($2, $3, h, o); print num_row("u_ratio_hasimoto_gC3.5", o) }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+# how much the blocks underestimate u's error: the Ornstein-Uhlenbeck error over the blocks' (per run);
+# its stderr that of the blocks' error from the scene's 20 blocks, 1 / sqrt(2 x 19) relative (taken as
+# if the blocks were independent: their correlation is what the ratio shows), with half of u's
+# relative error, the Ornstein-Uhlenbeck error's, in quadrature
+num_awk -F'\t' 'NR > 1 { r = $5 / $4; num_set(o, r, r * sqrt(1 / 38 + num_sq(0.5 * $3 / $2)))
+    print num_row("u_se_ou_over_blocks_gC" $1, o) }' "$OUT/superficial.tsv" >> "$OUT/summary.tsv"
+# what paper.md says in words (issue 40 item 7): Hasimoto's u against eq. 19's, and the calibrated u
+# against the paper's (bands.tsv)
+emit_pct u_hasimoto_pct_from_eq19 "$UH" "$U19"
+emit_pct u_gC3.5_pct_from_paper "$(get . u_gC3.5)" "$(paper_number u_gC3.5)"
+emit_minus u_gC3.5_minus_paper "$(get . u_gC3.5)" "$(paper_number u_gC3.5)"
 }
 experiment

@@ -33,5 +33,7 @@ done
 num_awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
     END { num_diff(a, sa, b, sb, o); printf "%s\nTs_drop_N8_sigmas\t%.4g\t0\n", num_row("Ts_drop_N8", o), o["v"] / o["se"] }' \
     "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+# what paper.md says in words (issue 40 item 7): the single sphere's T_s against eq. 18's 1
+emit_pct Ts_N1_pct_from_eq18 "$(get . Ts_N1)" 1
 }
 experiment

@@ -30,5 +30,12 @@ emit_from rpf rotational_temperature rotational_temperature
 emit_from rpf_dt0.01 rotational_temperature rotational_temperature_dt0.01
 cp "$OUT/runs/rpf/profile.tsv" "$OUT/profile.tsv"
 cp "$OUT/runs/rpf_dt0.01/profile.tsv" "$OUT/profile_dt0.01.tsv"
+# what paper.md says of mu in words (issue 40 item 7): its deviation from the paper's mu (bands.tsv)
+# at both steps, the step's effect, and the two halves' difference at each step
+emit_pct mu_pct_from_paper "$(get . mu)" "$(paper_number mu)"
+emit_pct mu_dt0.01_pct_from_paper "$(get . mu_dt0.01)" "$(paper_number mu)"
+emit_pct mu_dt0.01_pct_from_dt0.005 "$(get . mu_dt0.01)" "$(get . mu)"
+emit_minus mu_upper_minus_lower "$(get . mu_upper)" "$(get . mu_lower)"
+emit_minus mu_upper_minus_lower_dt0.01 "$(get . mu_upper_dt0.01)" "$(get . mu_lower_dt0.01)"
 }
 experiment

@@ -108,5 +108,20 @@ if [ "$TIER" = reduced ]; then
              q("cv_variance_factor_best", 1 - rho * rho, 2 * (rho < 0 ? -rho : rho) * (1 - rho * rho) / sqrt(n - 3))}' \
         "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
 fi
+# the torque's noise per row (reduced and paper tiers, 50 blocks per run): variance of the row's mean x
+# its production time (torque^2 x time, all its runs; dt = 0.01, couette-sphere.cfg), the number that
+# sets each row's run length (README); its stderr that of a variance from the runs' blocks,
+# sqrt(2 / (runs x 49))
+if [ "$TIER" != quick ]; then
+    for r in $ROWS; do
+        k=$(row_runs $r | wc -w)
+        get . torque_row$r | awk -F'\t' -v t=$(( $(row_steps $r) * k / 100 )) -v k=$k -v r=$r '{v = $2 * $2 * t
+            printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / (k * 49))}' >> "$OUT/summary.tsv"
+    done
+fi
+# what paper.md says in words (issue 40 item 7): each row's measured curl/2 against its nominal drive,
+# and the control variate's total noise over D's
+for r in $ROWS; do emit_pct curl2_row${r}_pct_from_nominal "$(get . curl2_row$r)" "$(row_curl $r)"; done
+if [ "$TIER" = reduced ]; then emit_ratio cv_noise_total_over_D . cv_noise_total . cv_noise_D; fi
 }
 experiment

@@ -88,5 +88,19 @@ if [ "$TIER" != quick ]; then
             printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / 49)}' >> "$OUT/summary.tsv"
     done
 fi
+# how many times its run each row's torque would need for a stderr of 0.5 % of eq. 22 (the paper
+# tier's aim, README), (se / 0.005)^2 of torque_ratio_row (the error falling as 1 / sqrt(length)); its
+# stderr that of a variance from the row's blocks, sqrt(2 / (runs x 49))
+if [ "$TIER" != quick ]; then
+    for r in $ROWS; do
+        get . torque_ratio_row$r | awk -F'\t' -v k=$(row_reps $r) -v r=$r '{v = ($2 / 0.005) * ($2 / 0.005)
+            printf "torque_ratio_time_factor_half_percent_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / (k * 49))}' >> "$OUT/summary.tsv"
+    done
+fi
+# what paper.md says in words (issue 40 item 7): each drag's deviation from eq. 22, and the empty
+# channel's u_h against the no-slip parabola g n (z - 1)(9 - z) / (2 mu) at z = 3 (walls at z = 1
+# and 9, n = 3, the paper's mu)
+for r in $ROWS; do emit_pct drag_ratio_row${r}_pct_from_eq22 "$(get . drag_ratio_row$r)" 1; done
+emit_pct u_h_gref_pct_from_no_slip "$(get . u_h_gref)" "$(awk -v g=$GREF -v z=$ZH -v m=$MU 'BEGIN { printf "%.10g", g * 3 * (z - 1) * (9 - z) / (2 * m) }')"
 }
 experiment

@@ -168,5 +168,13 @@ if [ "$TIER" = reduced ]; then
                 t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
     done
 fi
+# the linear-response ladder's cost (reduced tier): the CPU seconds of its three runs (a count: no error)
+if [ "$TIER" = reduced ]; then
+    for u in $LR_U; do get lr_u$u cpu_seconds; done | awk -F'\t' '{s += $1} END {printf "lr_cpu_seconds\t%.10g\t0\n", s}' >> "$OUT/summary.tsv"
+fi
+# what paper.md says in words (issue 40 item 7): each drag's deviation from eq. 23, and row 2's drag
+# over row 1's
+for r in $ROWS; do emit_pct drag_ratio_row${r}_pct_from_eq23 "$(get . drag_ratio_row$r)" 1; done
+case " $ROWS " in *" 2 "*) emit_ratio drag_row2_over_row1 . drag_row2 . drag_row1 ;; esac   # (row 2 is not run at the quick tier)
 }
 experiment
