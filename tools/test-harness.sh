@@ -675,7 +675,7 @@ echo "$(basename "$out") resume=$resume" >> "$FAKE_LOG"
 code=FAKE_EXIT_$(basename "$out"); [ -n "${!code:-}" ] && exit "${!code}"
 sleep "${FAKE_SLEEP:-0}"
 printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
-printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
+printf 'key\tvalue\ncpu_seconds\t1\ndate\t2020-0%s-01T00:00:00Z\n' "$(( $(basename "$out" | cksum | cut -c1) % 9 + 1 ))" > "$out/provenance.tsv"
 rm "$out/INCOMPLETE"
 EOF2
 cat > "$rx/experiments/t/e/run.sh" <<'EOF2'
@@ -737,11 +737,22 @@ if [ "$(sort "$log" | tr '\n' ' ')" = "a resume=1 b resume=1 " ]; then ok "run-e
 else bad "run-experiment: with another binary ran: $(tr '\n' ' ' < "$log")"; fi
 # --reanalyse: the complete result's simulations, only those whose arguments changed rerun
 cp "$root/run.sh.orig" "$rx/experiments/t/e/run.sh"
+# (the provenance before: its date and host made distinct, as if the run were made elsewhere)
+sed -i 's/^date	.*/date	2001-01-01T00:00:00Z/; s/^host_cpu	.*/host_cpu	somewhere else/' "$rx/results/t/e/quick/provenance.tsv"
+cp "$rx/results/t/e/quick/provenance.tsv" "$rx/prov.before"
 : > "$log"
 T "run-experiment --reanalyse: analysis only" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
 if [ ! -s "$log" ]; then ok "run-experiment --reanalyse: no simulation"; else bad "run-experiment --reanalyse ran: $(tr '\n' ' ' < "$log")"; fi
 if grep -q '^extra' "$rx/results/t/e/quick/summary.tsv"; then bad "run-experiment --reanalyse: old analysis kept" "$rx/results/t/e/quick/summary.tsv"
 else ok "run-experiment --reanalyse: the current analysis"; fi
+# a reanalysis simulates nothing: where and when the simulations ran stays as recorded
+prov=$rx/results/t/e/quick/provenance.tsv
+in_file "run-experiment --reanalyse: says when it reanalysed" "$prov" '^reanalysed	'
+in_file "run-experiment --reanalyse: the simulations' date range" "$prov" '^simulated	.* [.][.] .* (2 simulations)$'
+if [ "$(awk -F'\t' '$1 == "date" { print $2 }' "$prov")" = "$(awk -F'\t' '$1 == "date" { print $2 }' "$rx/prov.before")" ] &&
+   [ "$(awk -F'\t' '$1 == "host_cpu" { print $2 }' "$prov")" = "$(awk -F'\t' '$1 == "host_cpu" { print $2 }' "$rx/prov.before")" ]; then
+    ok "run-experiment --reanalyse: keeps the run's date and host"
+else bad "run-experiment --reanalyse: date or host replaced" "$prov"; fi
 sed -i 's/--set x=2/--set x=3/' "$rx/experiments/t/e/run.sh"
 : > "$log"
 T "run-experiment --reanalyse: changed arguments" 0 RX "$rx/tools/run-experiment" t/e quick --reanalyse
@@ -1057,7 +1068,7 @@ echo "$(basename "$out") start $$" >> "$FAKE_LOG"
 trap 'echo "$(basename "$out") TERM" >> "$FAKE_LOG"; exit 143' TERM
 sleep "${FAKE_SLEEP:-60}" & wait $!
 printf 'quantity\tvalue\tstderr\nq\t1.5\t0.1\n' > "$out/summary.tsv"
-printf 'key\tvalue\ncpu_seconds\t1\n' > "$out/provenance.tsv"
+printf 'key\tvalue\ncpu_seconds\t1\ndate\t2020-0%s-01T00:00:00Z\n' "$(( $(basename "$out" | cksum | cut -c1) % 9 + 1 ))" > "$out/provenance.tsv"
 rm "$out/INCOMPLETE"
 EOF2
 chmod +x "$rx/fake-slow"
