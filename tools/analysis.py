@@ -1,0 +1,996 @@
+#!/usr/bin/env python3
+"""tools/analysis.py - the analysis layer of the experiments (issue 40 item 5).
+
+One module for the numerics that the experiments' run.sh files used to carry as awk programs:
+error propagation, means and their standard errors, jackknife, weighted and plain line fits,
+interpolation and crossings, block statistics, and the experiment-specific reductions built on
+them. A run.sh calls it through tools/analyse (`"$ANALYSE" SUBCOMMAND ARGS...`, exp.sh sets
+ANALYSE), which writes TSV rows to stdout. Tests: tests/analysis.py (make test).
+
+Byte-identical tables. The committed results were written by mawk 1.3.4 running
+tools/lib/numerics.awk; this module gives the same bytes:
+  - every sum runs over the rows in file order, in the same association as the awk it replaces
+    (plain loops, no numpy: the order of a floating-point sum changes its last bits);
+  - a value read from a table is kept as its text (awk prints a field it did not compute with
+    unchanged) and converted to a number only where it is computed with (`num`: strtod's
+    leading number, "nan"/"inf" included, as mawk reads them);
+  - a computed number printed without a format goes through `astr`, mawk's conversion: an
+    integer value in [-(2^31 - 1), 2^31 - 1] as an integer, anything else by %.6g (CONVFMT);
+  - printf formats are C's (`cfmt`: Python's % conversions are C's, with a NaN printed as
+    C prints it, "-nan" when its sign bit is set);
+  - comparisons follow mawk: a field that looks like a decimal number compares as a number, any
+    other text ("nan") as a string; a NaN compares equal to every number (mawk's compare()
+    returns 0), so NaN == x, NaN <= x and NaN >= x hold and NaN != x does not (`eq`, `le`, ...);
+  - squares are x * x (numerics.awk's num_sq), powers a ** b are the C library's pow() as
+    mawk's ^ is, log/exp/sqrt the C library's (math.log and friends, with C's NaN and
+    infinity where Python would raise).
+Methods: first-order error propagation for independent operands unless said otherwise; each
+function names its method in its docstring.
+"""
+import math
+import os
+import re
+import sys
+
+# ---------------------------------------------------------------- awk's numbers and text
+
+_NUM_RE = re.compile(r'[ \t\n]*([+-]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|inf(?:inity)?|nan))', re.I)
+_DEC_RE = re.compile(r'^[ \t\n]*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[ \t\n]*$')
+NAN = float('nan')
+
+
+def num(x):
+    """awk's string-to-number conversion: the longest leading number (strtod), 0 if none.
+    mawk reads "nan", "-nan", "inf" as IEEE values."""
+    if isinstance(x, float):
+        return x
+    if isinstance(x, int):
+        return float(x)
+    m = _NUM_RE.match(x)
+    if not m:
+        return 0.0
+    t = m.group(1).lower()
+    if t.lstrip('+-') in ('nan',):
+        return -NAN if t.startswith('-') else NAN
+    if t.lstrip('+-').startswith('inf'):
+        return -math.inf if t.startswith('-') else math.inf
+    return float(t)
+
+
+def looks_numeric(s):
+    """mawk's test of whether a field compares as a number: a decimal number with optional sign,
+    point and exponent, blanks around; "nan" and "inf" are text."""
+    return isinstance(s, (int, float)) or bool(_DEC_RE.match(s))
+
+
+def astr(x):
+    """awk's output of a value without a format (print, concatenation): text unchanged; a number
+    with an integer value in [-(2^31 - 1), 2^31 - 1] as an integer (mawk), else %.6g."""
+    if isinstance(x, str):
+        return x
+    x = float(x)
+    if not math.isnan(x) and not math.isinf(x) and x == int(x) and -2147483647 <= x <= 2147483647:
+        return '%d' % int(x)
+    return cfmt('%.6g', x)
+
+
+def _cmp(a, b):
+    """mawk's comparison of two values: numeric if both are numbers or numeric-looking text,
+    else as strings; a NaN compares equal (0) to any number."""
+    if looks_numeric(a) and looks_numeric(b):
+        x, y = num(a), num(b)
+        return 1 if x > y else -1 if x < y else 0
+    x, y = astr(a), astr(b)
+    return 1 if x > y else -1 if x < y else 0
+
+
+def eq(a, b): return _cmp(a, b) == 0
+def ne(a, b): return _cmp(a, b) != 0
+def gt(a, b): return _cmp(a, b) > 0
+def lt(a, b): return _cmp(a, b) < 0
+def ge(a, b): return _cmp(a, b) >= 0
+def le(a, b): return _cmp(a, b) <= 0
+
+
+_SPEC_RE = re.compile(r'%([-+ #0]*)(\*|\d+)?(?:\.(\*|\d*))?([diouxXeEfFgGcs%])')
+
+
+def cfmt(fmt, *args):
+    """C's printf of FMT with ARGS as awk passes them: text converted by `num` for a numeric
+    conversion, numbers by `astr` for %s; NaN and infinity as glibc prints them."""
+    out, pos, k = [], 0, 0
+    args = list(args)
+    for m in _SPEC_RE.finditer(fmt):
+        out.append(fmt[pos:m.start()])
+        pos = m.end()
+        flags, width, prec, conv = m.groups()
+        if conv == '%':
+            out.append('%')
+            continue
+        if width == '*':
+            width = str(int(num(args[k]))); k += 1
+        if prec == '*':
+            prec = str(int(num(args[k]))); k += 1
+        a = args[k] if k < len(args) else ''
+        k += 1
+        spec = '%' + flags + (width or '') + ('.' + prec if prec is not None else '')
+        if conv == 's':
+            out.append((spec + 's') % astr(a))
+        elif conv == 'c':
+            out.append((spec + 's') % (astr(a)[:1] if isinstance(a, str) else chr(int(num(a)))))
+        elif conv in 'diouxX':
+            v = num(a)
+            # mawk's d_to_I: clamped to +-(2^31 - 1), a NaN to -(2^31 - 1)
+            v = 2147483647 if v >= 2147483647 else int(v) if v > -2147483647 else -2147483647
+            conv2 = 'd' if conv == 'i' else conv
+            out.append((spec + conv2) % int(v))
+        else:
+            v = num(a)
+            if math.isnan(v) or math.isinf(v):
+                s = ('-' if math.copysign(1.0, v) < 0 else ('+' if '+' in flags else ' ' if ' ' in flags else ''))
+                s += 'nan' if math.isnan(v) else 'inf'
+                if conv in 'EFG':
+                    s = s.upper()
+                w = int(width) if width else 0
+                out.append(s.ljust(w) if '-' in flags else s.rjust(w))
+            else:
+                out.append((spec + conv) % v)
+    out.append(fmt[pos:])
+    return ''.join(out)
+
+
+def div(a, b):
+    """a / b in IEEE arithmetic (mawk divides by zero to an infinity or NaN, Python raises)."""
+    try:
+        return a / b
+    except ZeroDivisionError:
+        if math.isnan(a):
+            return a
+        if a == 0:
+            return -NAN              # x86's default NaN: mawk prints 0/0 as -nan
+        return math.copysign(math.inf, a) * math.copysign(1.0, b)
+
+
+def sqrt(x):
+    """the C library's sqrt: NaN (printed -nan, as glibc's) for x < 0"""
+    if math.isnan(x):
+        return x
+    return math.sqrt(x) if x >= 0 else -NAN
+
+
+def log(x):
+    """the C library's log: -inf at 0, NaN below"""
+    if math.isnan(x):
+        return x
+    if x == 0:
+        return -math.inf
+    return math.log(x) if x > 0 else -NAN
+
+
+def exp(x):
+    """the C library's exp (inf on overflow)"""
+    try:
+        return math.exp(x)
+    except OverflowError:
+        return math.inf
+
+
+def pw(a, b):
+    """a ^ b as mawk computes it: the C library's pow()"""
+    try:
+        return math.pow(a, b)
+    except (OverflowError, ValueError):
+        return -NAN if a < 0 else math.inf
+
+
+def rows(path):
+    """the lines of a TSV file split at tabs (awk -F'\\t': a record per line, the last line
+    without its newline kept)"""
+    with open(path) as f:
+        text = f.read()
+    lines = text.split('\n')
+    if lines and lines[-1] == '':
+        lines.pop()
+    return [l.split('\t') for l in lines]
+
+
+def fld(r, i):
+    """awk's $i of a record split into r ($0 is the whole line): "" past the last field"""
+    return r[i - 1] if 0 < i <= len(r) else ''
+
+
+def is_comment(r):
+    """awk's /^#/ || $1 == "k"-style header test: a line starting with #"""
+    return fld(r, 1).startswith('#')
+
+
+# ---------------------------------------------------------------- statistics (numerics.awk)
+
+def isnan_text(x):
+    """numerics.awk's num_isnan: the value reads as the text nan (a NaN number, or the text
+    nan/-nan/+nan in any case): a summary's undefined value"""
+    return astr(x).lower() in ('nan', '-nan', '+nan')
+
+
+class Val:
+    """a value and its standard error (numerics.awk's array o: o["v"], o["se"]); each is a
+    number or the text "nan"/a field's text"""
+    __slots__ = ('v', 'se')
+
+    def __init__(self, v='nan', se='nan'):
+        self.v, self.se = v, se
+
+    def pair(self, vf='%.10g', sf='%.4g'):
+        """numerics.awk's num_pair: "value<TAB>stderr" (%.10g, %.4g), nan printed as nan"""
+        return fmt_nan(vf, self.v) + '\t' + fmt_nan(sf, self.se)
+
+    def row(self, q):
+        """numerics.awk's num_row: "Q<TAB>value<TAB>stderr\""""
+        return q + '\t' + self.pair()
+
+
+def fmt_nan(f, x):
+    """numerics.awk's num_fmt: X printed with F, "nan" for a NaN or the text nan"""
+    return 'nan' if isnan_text(x) else cfmt(f, x)
+
+
+def parse_pair(s):
+    """ "value<TAB>stderr" (as `get` gives it) -> Val of the two texts (awk's split at tab)"""
+    p = s.split('\t')
+    return Val(p[0], p[1] if len(p) > 1 else '')
+
+
+def _nan4(*xs):
+    return any(isnan_text(x) for x in xs)
+
+
+def sq(x):
+    """x * x (numerics.awk's num_sq, not pow())"""
+    x = num(x)
+    return x * x
+
+
+def v_sum(a, sa, b, sb):
+    """a + b, errors in quadrature (independent operands; num_sum)"""
+    if _nan4(a, sa, b, sb):
+        return Val()
+    return Val(num(a) + num(b), sqrt(sq(sa) + sq(sb)))
+
+
+def v_diff(a, sa, b, sb):
+    """a - b, errors in quadrature (independent operands; num_diff)"""
+    if _nan4(a, sa, b, sb):
+        return Val()
+    return Val(num(a) - num(b), sqrt(sq(sa) + sq(sb)))
+
+
+def v_rel2(x, a, sa, b, sb):
+    """x, a product or quotient of powers +-1 of a and b, with a's and b's relative errors in
+    quadrature (first order; num_rel2)"""
+    if _nan4(a, sa, b, sb) or _nan4(x):
+        return Val()
+    x = num(x)
+    return Val(x, abs(x) * sqrt(sq(div(num(sa), num(a))) + sq(div(num(sb), num(b)))))
+
+
+def v_ratio(a, sa, b, sb):
+    """a / b, relative errors in quadrature (num_ratio)"""
+    if _nan4(a, sa, b, sb):
+        return Val()
+    return v_rel2(div(num(a), num(b)), a, sa, b, sb)
+
+
+def v_product(a, sa, b, sb):
+    """a b, relative errors in quadrature (num_product)"""
+    if _nan4(a, sa, b, sb):
+        return Val()
+    return v_rel2(num(a) * num(b), a, sa, b, sb)
+
+
+def v_rel1(x, a, sa):
+    """x, a power +-1 of a times an exact factor, with a's relative error (num_rel1)"""
+    if _nan4(x, a, sa):
+        return Val()
+    x = num(x)
+    return Val(x, div(abs(x) * num(sa), abs(num(a))))
+
+
+def v_inverse(c, a, sa):
+    """c / a for an exact c, error |c| sa / a^2 (num_inverse)"""
+    if _nan4(c, a, sa):
+        return Val()
+    c, a = num(c), num(a)
+    return Val(div(c, a), div(abs(c) * num(sa), sq(a)))
+
+
+def v_lin2(w1, a, sa, w2, b, sb):
+    """w1 a + w2 b for exact weights, errors in quadrature (num_lin2)"""
+    if _nan4(a, sa, b, sb):
+        return Val()
+    w1, w2 = num(w1), num(w2)
+    return Val(w1 * num(a) + w2 * num(b), sqrt(sq(w1 * num(sa)) + sq(w2 * num(sb))))
+
+
+def v_sqrt(a, sa):
+    """sqrt(a), error sa / (2 sqrt(a)) (num_sqrt)"""
+    if _nan4(a, sa):
+        return Val()
+    r = sqrt(num(a))
+    return Val(r, div(0.5 * num(sa), r))
+
+
+def v_div(a, sa, c):
+    """(a +- sa) / c for an exact c (num_div)"""
+    if _nan4(a, sa, c):
+        return Val()
+    c = num(c)
+    return Val(div(num(a), c), div(num(sa), abs(c)))
+
+
+def v_scale(a, sa, f):
+    """f (a +- sa) for an exact factor f (num_scale)"""
+    if _nan4(a, sa, f):
+        return Val()
+    f = num(f)
+    return Val(num(a) * f, num(sa) * abs(f))
+
+
+def quad(errs):
+    """errors added in quadrature, in order (num_quad)"""
+    s = 0.0
+    for e in errs:
+        s += sq(e)
+    return sqrt(s)
+
+
+def mean(xs):
+    """arithmetic mean, in order; "nan" for no value or a nan one (num_mean)"""
+    n = len(xs)
+    if n < 1:
+        return 'nan'
+    s = 0.0
+    for x in xs:
+        if isnan_text(x):
+            return 'nan'
+        s += num(x)
+    return s / n
+
+
+def mean_se(xs):
+    """mean and standard error: sample standard deviation (two passes) / sqrt(n), for n
+    independent values; error "nan" for n < 2 (num_mean_se)"""
+    n = len(xs)
+    m = mean(xs)
+    if n < 2 or m == 'nan':
+        return Val(m, 'nan')
+    ss = 0.0
+    for x in xs:
+        ss += sq(num(x) - m)
+    return Val(m, sqrt(ss / (n - 1) / n))
+
+
+def jackknife_se(xs):
+    """X the n leave-one-out estimates: their mean and the jackknife error
+    sqrt((n - 1) / n sum (x - mean)^2) (Efron & Tibshirani 1993, ch. 11; num_jackknife_se)"""
+    n = len(xs)
+    m = mean(xs)
+    if n < 2 or m == 'nan':
+        return Val(m, 'nan')
+    ss = 0.0
+    for x in xs:
+        ss += sq(num(x) - m)
+    return Val(m, sqrt((n - 1) / n * ss))
+
+
+def wmean_se(xs, ses):
+    """inverse-variance weighted mean, error 1 / sqrt(sum of weights); values with an error
+    <= 0 or nan left out (num_wmean_se)"""
+    sw = swx = 0.0
+    for x, e in zip(xs, ses):
+        if usable(x, e):
+            w = 1 / sq(e)
+            sw += w
+            swx += w * num(x)
+    if sw == 0:
+        return Val()
+    return Val(swx / sw, 1 / sqrt(sw))
+
+
+def usable(v, se):
+    """a value with a positive error, neither nan (num_usable)"""
+    return not isnan_text(v) and not isnan_text(se) and num(se) > 0
+
+
+def sum_linear(xs, ses):
+    """the sum with the errors added linearly (fully correlated operands; num_sum_linear)"""
+    v = e = 0.0
+    for x, s in zip(xs, ses):
+        v += num(x)
+        e += num(s)
+    return Val(v, e)
+
+
+class Line:
+    """a fitted line: slope, icpt and their errors, n the rows used"""
+    def __init__(self):
+        self.slope = self.icpt = self.slope_se = self.icpt_se = 'nan'
+        self.n = 0
+
+
+def line(xs, ys):
+    """unweighted least-squares line y = icpt + slope x; errors from the residuals (n - 2
+    degrees of freedom), nan for n < 3 (num_line)"""
+    o = Line()
+    n = len(xs)
+    o.n = n
+    sx = sy = sxx = sxy = 0.0
+    for x, y in zip(xs, ys):
+        x, y = num(x), num(y)
+        sx += x; sy += y; sxx += x * x; sxy += x * y
+    d = n * sxx - sx * sx
+    if n < 2 or d == 0:
+        return o
+    b = (n * sxy - sx * sy) / d
+    a = (sy - b * sx) / n
+    o.slope, o.icpt = b, a
+    if n < 3:
+        return o
+    r = 0.0
+    for x, y in zip(xs, ys):
+        r += sq(num(y) - a - b * num(x))
+    o.slope_se = sqrt(r / (n - 2) * n / d)
+    o.icpt_se = sqrt(r / (n - 2) * sxx / d)
+    return o
+
+
+def wline(xs, ys, ses):
+    """weighted (1 / se^2) least-squares line, errors from se as a chi-square fit with known
+    errors; rows with se <= 0 or nan left out (num_wline)"""
+    o = Line()
+    sw = sx = sy = sxx = sxy = 0.0
+    m = 0
+    for x, y, e in zip(xs, ys, ses):
+        if usable(y, e) and not isnan_text(x):
+            x, y = num(x), num(y)
+            w = 1 / sq(e)
+            m += 1
+            sw += w; sx += w * x; sy += w * y; sxx += w * x * x; sxy += w * x * y
+    o.n = m
+    d = sw * sxx - sx * sx
+    if m < 2 or d == 0:
+        return o
+    b = (sw * sxy - sx * sy) / d
+    o.slope, o.icpt = b, (sy - b * sx) / sw
+    o.slope_se, o.icpt_se = sqrt(sw / d), sqrt(sxx / d)
+    return o
+
+
+def interp(xs, ys, ses, xq, xqse):
+    """Y tabulated at increasing X, at xq: linear between the two bracketing points, the error
+    from theirs (weights 1 - f, f) and through the local slope from xq's; nan outside
+    (num_interp)"""
+    n = len(xs)
+    for i in range(n - 1):
+        if le(xs[i], xq) and le(xq, xs[i + 1]):
+            x0, x1, y0, y1 = num(xs[i]), num(xs[i + 1]), num(ys[i]), num(ys[i + 1])
+            q = num(xq)
+            f = (q - x0) / (x1 - x0)
+            b = (y1 - y0) / (x1 - x0)
+            return Val((1 - f) * y0 + f * y1,
+                       sqrt(sq((1 - f) * num(ses[i])) + sq(f * num(ses[i + 1])) + sq(b * num(xqse))))
+    return Val()
+
+
+def crossing(xs, ys, ses, yq, yqse):
+    """the x where the tabulated Y (increasing X) first reaches yq, linear between the
+    bracketing points; the errors of yq and of the two points propagated to first order
+    (num_crossing)"""
+    n = len(xs)
+    q = num(yq)
+    for i in range(n - 1):
+        y0, y1 = num(ys[i]), num(ys[i + 1])
+        if le((y0 - q) * (y1 - q), 0) and ne(ys[i], ys[i + 1]):
+            x0, x1 = num(xs[i]), num(xs[i + 1])
+            f = (q - y0) / (y1 - y0)
+            dx, dy = x1 - x0, y1 - y0
+            e = [dx / dy * num(yqse), dx * (q - y1) / sq(dy) * num(ses[i]),
+                 -dx * (q - y0) / sq(dy) * num(ses[i + 1])]
+            return Val(x0 + f * (x1 - x0), quad(e))
+    return Val()
+
+
+# ---------------------------------------------------------------- the TCAF curves (mai-duy-2019)
+
+def tcaf_curve(paths):
+    """the eta(k) shells (k n2 vectors eta eta_se) of a tcaf_eta.tsv where eta is defined,
+    continued by the shells of a second (high-k) file above the first's largest k"""
+    out, kmax = [], 0.0
+    for f, p in enumerate(paths, 1):
+        for r in rows(p):
+            if is_comment(r) or fld(r, 1) == 'k':
+                continue
+            if f == 1 and fld(r, 4) != 'nan':
+                out.append('\t'.join(fld(r, i) for i in range(1, 6)))
+                if num(fld(r, 1)) > kmax:
+                    kmax = num(fld(r, 1))
+            elif f == 2 and fld(r, 4) != 'nan' and num(fld(r, 1)) > kmax * (1 + 1e-9):
+                out.append('\t'.join(fld(r, i) for i in range(1, 6)))
+    return out
+
+
+def _shells(path):
+    """the (k, eta, se) columns of a curve or tcaf_eta.tsv with eta defined"""
+    k, v, s = [], [], []
+    for r in rows(path):
+        if is_comment(r) or fld(r, 1) == 'k' or fld(r, 4) == 'nan':
+            continue
+        k.append(fld(r, 1)); v.append(fld(r, 4)); s.append(fld(r, 5))
+    return k, v, s
+
+
+def keff(path, ec, se, tag):
+    """Mai-Duy et al. 2019 section 4.2.3: the free system's k where eta_free(k) equals the
+    constrained eta(k -> 0) = ec +- se (crossing of the free curve, first from k -> 0), and
+    lambda_eff = 2 pi / k_eff; eta_eff = ec (Table 2's eta by construction). Rows
+    k_eff_TAG, lambda_eff_TAG, eta_eff_TAG (formerly keff.awk)."""
+    k, v, s = _shells(path)
+    o = crossing(k, v, s, ec, se)
+    out = ['k_eff_%s\t%s\t%s' % (tag, fmt_nan('%.10g', o.v), fmt_nan('%.4g', o.se))]
+    if ne(o.v, 'nan'):
+        o = v_inverse(2 * 3.14159265358979, o.v, o.se)
+    out.append('lambda_eff_%s\t%s\t%s' % (tag, fmt_nan('%.10g', o.v), fmt_nan('%.4g', o.se)))
+    out.append(cfmt('eta_eff_%s\t%.10g\t%.4g', tag, ec, se))
+    return out
+
+
+def normalise_curve(path, c0):
+    """a curve's eta and se divided by c0 (the free system's eta(k -> 0)): eta(k) / eta(0)"""
+    c = num(c0)
+    return [cfmt('%s\t%s\t%s\t%.10g\t%.4g', fld(r, 1), fld(r, 2), fld(r, 3), div(num(fld(r, 4)), c),
+                 div(num(fld(r, 5)), c)) for r in rows(path)]
+
+
+def _files_numbered(paths):
+    """(file number, row) over files as awk's `FNR == 1 { file++ }` counts them: an empty file
+    takes no number"""
+    f = 0
+    for p in paths:
+        rs = rows(p)
+        if rs:
+            f += 1
+        for r in rs:
+            yield f, r
+
+
+def tcaf_grid(a, phi, f_p, f_s, f_t, c_pairs, f0_pairs, free_curve, solvent_curve):
+    """Table 2's k_eff and eta_eff at one phi and repulsion under every combination of the open
+    choices of Mai-Duy et al. 2019 section 4.2.3 (tab02-readings README, "The grid"; formerly
+    grid.awk):
+      D  the density of eq. 28 for the constrained system: p particles' (factor f_p), s the
+         solvent's n = 4 (f_s = 4 / rho_p), t the total with the bodies (f_t = rho_t / rho_p);
+      E  the estimator of the constrained eta(k -> 0): exp, two_mode, integral (c_pairs[E]);
+      K  the curve k_eff is read on: free, solvent, ratio (eta_c / eta_f(k -> 0) by E on the
+         free curve divided by its own exp eta(k -> 0));
+      F  the curve eta_eff is read from: constrained (eta_c), solvent, free (interpolated at k_eff).
+    Rows: a phi D E K F k_eff se eta_eff se (crossing and interp of this module)."""
+    fk, fv, fs, sk, sv, ss = [], [], [], [], [], []
+    for f, r in _files_numbered([free_curve, solvent_curve]):
+        if is_comment(r) or fld(r, 1) == 'k':
+            continue
+        if f == 1:
+            fk.append(fld(r, 1)); fv.append(fld(r, 4)); fs.append(fld(r, 5))
+        elif f == 2:
+            sk.append(fld(r, 1)); sv.append(fld(r, 4)); ss.append(fld(r, 5))
+    fac = {'p': f_p, 's': f_s, 't': f_t}
+    cv = {e: parse_pair(c_pairs[e]) for e in c_pairs}
+    f0 = {e: parse_pair(f0_pairs[e]) for e in f0_pairs}
+    e0 = num(f0['exp'].v)
+    nv = [div(num(x), e0) for x in fv]
+    nsd = [div(num(x), e0) for x in fs]
+    out = []
+    for D in ('p', 's', 't'):
+        for E in ('exp', 'two_mode', 'integral'):
+            c = v_scale(cv[E].v, cv[E].se, fac[D])
+            for K in ('free', 'solvent', 'ratio'):
+                if K == 'free':
+                    ke = crossing(fk, fv, fs, c.v, c.se)
+                elif K == 'solvent':
+                    ke = crossing(sk, sv, ss, c.v, c.se)
+                else:
+                    r = v_ratio(c.v, c.se, f0[E].v, f0[E].se)
+                    ke = crossing(fk, nv, nsd, r.v, r.se)
+                for F in ('constrained', 'solvent', 'free'):
+                    if F == 'constrained':
+                        ee = Val(c.v, c.se)
+                    elif isnan_text(ke.v):
+                        ee = Val()
+                    elif F == 'solvent':
+                        ee = interp(sk, sv, ss, ke.v, ke.se)
+                    else:
+                        ee = interp(fk, fv, fs, ke.v, ke.se)
+                    out.append('\t'.join([a, phi, D, E, K, F, ke.pair(), ee.pair()]))
+    return out
+
+
+def summary_dict(path):
+    """a summary's rows as awk's { V[$1] = $2; S[$1] = $3 } (the last row of a name wins)"""
+    V, S = {}, {}
+    for r in rows(path):
+        V[fld(r, 1)] = fld(r, 2)
+        S[fld(r, 1)] = fld(r, 3)
+    return V, S
+
+
+def pm_text(V, S, q):
+    """ "v +- se" of a summary quantity to a number of decimals that falls with its size
+    (1 from 100, 2 from 10, 3 from 1, else 4); "-" when absent, "none" when nan"""
+    if q not in V:
+        return '-'
+    if V[q] == 'nan':
+        return 'none'
+    v, s = V[q], S[q]
+    d = _decimals(v)
+    return cfmt('%.*f +- %.*f', d, v, d, s)
+
+
+def _decimals(v):
+    if lt(v, 0):
+        v = -num(v)
+    return 1 if ge(v, 100) else 2 if ge(v, 10) else 3 if ge(v, 1) else 4
+
+
+def paper_table2(path):
+    """Mai-Duy et al.'s Table 2 (paper-table2.tsv: k phi k_eff lambda_eff eta_eff) keyed by
+    phi%.4f: (k_eff, eta_eff) texts"""
+    pk, pe = {}, {}
+    for r in rows(path):
+        if not fld(r, 1).startswith('#') and fld(r, 1) != 'k':
+            key = cfmt('phi%.4f', fld(r, 2))
+            pk[key] = fld(r, 3)
+            pe[key] = fld(r, 5)
+    return pk, pe
+
+
+def readings_tables(out, paper2, tier, as_, readings):
+    """mai-duy-2019/tab02-readings: its tables from its summary (estimators_aA.tsv,
+    table2_reading_R.tsv, eta_r_reading_R.tsv, readings_data.tsv, estimators_data.tsv,
+    readings_summary.tsv, paper: eta0_one_minus_phi.tsv). Formatting only, and per reading the
+    count of Table 2 values within 10 % (|ours / paper - 1| <= 0.1)."""
+    summ = os.path.join(out, 'summary.tsv')
+    V, S = summary_dict(summ)
+    tags = [fld(r, 1)[4:] for r in rows(summ) if fld(r, 1).startswith('phi_phi')]
+    pm = lambda q: pm_text(V, S, q)
+    pk, pe = paper_table2(paper2)
+
+    def write(name, lines):
+        with open(os.path.join(out, name), 'w') as f:
+            f.write(''.join(l + '\n' for l in lines))
+
+    for A in as_:
+        L = ['phi\teta_susp (shear, rate 0.1)\tconstrained: exp (eq. 28, C/C0 >= 0.3)\tconstrained: two-mode slow mode (rho particles)\tconstrained: integral\tintegral / eta_susp\tfree: exp\tfree: two-mode\tfree: integral']
+        for t in tags:
+            g = '_a' + A + '_' + t
+            L.append(cfmt('%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s', V.get('phi_' + t, ''), pm('eta_susp' + g),
+                          pm('eta_k0_constrained_exp' + g), pm('eta_k0_constrained_two_mode' + g),
+                          pm('eta_k0_constrained_integral' + g), pm('constrained_integral_over_susp' + g),
+                          pm('eta_k0_free_exp' + g), pm('eta_k0_free_two_mode' + g), pm('eta_k0_free_integral' + g)))
+        write('estimators_a%s.tsv' % A, L)
+    for rd in readings:
+        L = [cfmt('k\tphi\tk_eff (%s)\tk_eff, paper\teta_eff (%s)\teta_eff, paper', rd, rd)]
+        for t in tags:
+            g = '_a3.53_' + t
+            p = V.get('phi_' + t, '')
+            pn = num(p)
+            L.append(cfmt('%d\t%.4f\t%s\t%s\t%s\t%s', float(int(pw(13500 * pn / (6 * (1 - pn)), 1 / 3) + 0.5)), p,
+                          pm('reading_' + rd + '_k_eff' + g), pk.get(t, ''), pm('reading_' + rd + '_eta_eff' + g),
+                          pe.get(t, '')))
+        write('table2_reading_%s.tsv' % rd, L)
+        L = [cfmt('phi\teta_r TCAF (%s), a = 3.53\teta_r TCAF (%s), a = 6.50\teta_eff (%s), a = 6.50\tk_eff (%s), a = 6.50',
+                  rd, rd, rd, rd)]
+        for t in tags:
+            L.append(cfmt('%.4f\t%s\t%s\t%s\t%s', V.get('phi_' + t, ''), pm('reading_' + rd + '_eta_r_a3.53_' + t),
+                          pm('reading_' + rd + '_eta_r_a6.50_' + t), pm('reading_' + rd + '_eta_eff_a6.50_' + t),
+                          pm('reading_' + rd + '_k_eff_a6.50_' + t)))
+        write('eta_r_reading_%s.tsv' % rd, L)
+
+    def g(q):
+        return V[q] + '\t' + S[q] if q in V else 'nan\tnan'
+    L = ['# reading\tphi\tk_eff\tse\teta_eff\tse\teta_r_a3.53\tse\teta_r_a6.50\tse (blocks: the readings in order)']
+    for r in readings:
+        for t in tags:
+            L.append(cfmt('%s\t%.6f\t%s\t%s\t%s\t%s', r, V.get('phi_' + t, ''), g('reading_' + r + '_k_eff_a3.53_' + t),
+                          g('reading_' + r + '_eta_eff_a3.53_' + t), g('reading_' + r + '_eta_r_a3.53_' + t),
+                          g('reading_' + r + '_eta_r_a6.50_' + t)))
+        _block_end(L, tags)
+    write('readings_data.tsv', L)
+    L = ['# a\tphi\teta_susp\tse\texp\tse\ttwo_mode\tse\tintegral\tse\tfree_exp\tse\tfree_integral\tse (blocks: the repulsions in order)']
+    for A in as_:
+        for t in tags:
+            s = '_a' + A + '_' + t
+            L.append(cfmt('%s\t%.6f\t%s\t%s\t%s\t%s\t%s\t%s', A, V.get('phi_' + t, ''), g('eta_susp' + s),
+                          g('eta_k0_constrained_exp' + s), g('eta_k0_constrained_two_mode' + s),
+                          g('eta_k0_constrained_integral' + s), g('eta_k0_free_exp' + s), g('eta_k0_free_integral' + s)))
+        _block_end(L, tags)
+    write('estimators_data.tsv', L)
+
+    def off(q, p):
+        x = div(num(V[q]), num(p)) - 1
+        return 1 - div(num(V[q]), num(p)) if lt(x, 0) else x
+    defs = {'a': 'J over the particles, rho of the particles, integral',
+            'b': 'J and rho with the rigid bodies, integral',
+            'c': 'J over the particles, rho of the particles, slow mode of the two-mode fit',
+            'd': 'as (a) with rho = 4 (the solvent) for the constrained system',
+            'e': 'ratio of (a)s constrained to free eta(k -> 0) on the free curve, the solvent eta(k) there'}
+    L = ['reading\tdefinition\teta_eff within 10 % of Table 2\tk_eff within 10 % of Table 2\teta_eff at phi = 0.4940 (paper 15.5091)\teta_r at 0.49, a = 3.53 (paper 9.69)\teta_r at 0.49, a = 6.50 (paper 12.46)']
+    for r in readings:
+        ne_ = nk = me = mk = 0
+        for t in tags:
+            q = 'reading_' + r + '_eta_eff_a3.53_' + t
+            if q in V:
+                me += 1
+                if V[q] != 'nan' and le(off(q, pe.get(t, '')), 0.1):
+                    ne_ += 1
+            q = 'reading_' + r + '_k_eff_a3.53_' + t
+            if q in V:
+                mk += 1
+                if V[q] != 'nan' and le(off(q, pk.get(t, '')), 0.1):
+                    nk += 1
+        L.append(cfmt('(%s)\t%s\t%d of %d\t%d of %d\t%s\t%s\t%s', r, defs.get(r, ''), ne_, me, nk, mk,
+                      pm('reading_' + r + '_eta_eff_a3.53_phi0.4940'), pm('reading_' + r + '_eta_r_a3.53_phi0.4940'),
+                      pm('reading_' + r + '_eta_r_a6.50_phi0.4940')))
+    write('readings_summary.tsv', L)
+    if tier == 'paper':
+        L = ['phi\teta_eff, paper Table 2\teta_0 (1 - phi)\tratio']
+        for t in tags:
+            e0, s0, p = num(V.get('eta0_solvent_a3.53', '')), num(S.get('eta0_solvent_a3.53', '')), num(V.get('phi_' + t, ''))
+            L.append(cfmt('%.4f\t%s\t%.3f +- %.3f\t%s', p, pe.get(t, ''), e0 * (1 - p), s0 * (1 - p),
+                          pm('table2_eta_eff_over_eta0_one_minus_phi_' + t)))
+        write('eta0_one_minus_phi.tsv', L)
+
+
+def _block_end(lines, tags):
+    """two blank lines after a block of rows (gnuplot's index separator; awk's printf "\\n\\n")"""
+    if tags:
+        lines[-1] += '\n\n'
+    else:
+        lines.append('\n')
+
+
+def readings_grid_decision(paper2, summary, grid_rows, grid_out):
+    """mai-duy-2019/tab02-readings, "The grid" (README): per combination of the open choices,
+    Table 2's rows (a = 3.53) under the decision rule (value +- 2 se inside the paper's value
+    +- 10 %: pass; wholly outside: fail; else unresolved; none where the curve is not reached:
+    fail), eta_eff at 0.4940 and the TCAF eta_r(0.49) = eta_susp / eta_eff at both repulsions
+    (v_ratio). Writes GRID_OUT; returns the summary rows."""
+    pk, pe = paper_table2(paper2)
+    es, ess = {}, {}
+    for r in rows(summary):
+        if fld(r, 1).startswith('eta_susp_a'):
+            es[fld(r, 1)] = fld(r, 2); ess[fld(r, 1)] = fld(r, 3)
+
+    def decide(v, se, p):
+        lo, hi = 0.9 * num(p), 1.1 * num(p)
+        if isnan_text(v):
+            return 'fail'
+        v, se = num(v), num(se)
+        if ge(v - 2 * se, lo) and le(v + 2 * se, hi):
+            return 'pass'
+        if lt(v + 2 * se, lo) or gt(v - 2 * se, hi):
+            return 'fail'
+        return 'unresolved'
+    order, comb, cnt, er, erf, ev, evs = [], {}, {}, {}, {}, {}, {}
+    for r in rows(grid_rows):
+        if is_comment(r):
+            continue
+        c = '_'.join(fld(r, i) for i in (3, 4, 5, 6))
+        if c not in comb:
+            comb[c] = [fld(r, i) for i in (3, 4, 5, 6)]
+            order.append(c)
+        if fld(r, 1) == '3.53' and fld(r, 2) in pe:
+            k = (c, 'e', decide(fld(r, 9), fld(r, 10), pe[fld(r, 2)]))
+            cnt[k] = cnt.get(k, 0) + 1
+            k = (c, 'k', decide(fld(r, 7), fld(r, 8), pk[fld(r, 2)]))
+            cnt[k] = cnt.get(k, 0) + 1
+        if fld(r, 2) == 'phi0.4940':
+            q = 'eta_susp_a' + fld(r, 1) + '_phi0.4940'
+            if q in es and not isnan_text(fld(r, 9)):
+                o = v_ratio(es[q], ess[q], fld(r, 9), fld(r, 10))
+            else:
+                o = Val()
+            A = fld(r, 1)
+            er[c, A] = o.pair()
+            erf[c, A] = fmt_nan('%.2f', o.v) + ' +- ' + fmt_nan('%.2f', o.se)
+            ev[c, A] = fld(r, 9); evs[c, A] = fld(r, 10)
+    G = ['D\tE\tK\tF\teta_eff rows pass / fail / unresolved (of 11)\tk_eff rows pass / fail / unresolved (of 11)\teta_eff at 0.4940 (paper 15.5091)\teta_r(0.49), a = 3.53 (paper 9.69)\teta_r(0.49), a = 6.50 (paper 12.46)']
+    out = []
+    for c in order:
+        d = comb[c]
+        n = lambda w, o: cnt.get((c, w, o), 0)
+        G.append(cfmt('%s\t%s\t%s\t%s\t%d / %d / %d\t%d / %d / %d\t%s\t%s\t%s', d[0], d[1], d[2], d[3],
+                      n('e', 'pass'), n('e', 'fail'), n('e', 'unresolved'), n('k', 'pass'), n('k', 'fail'),
+                      n('k', 'unresolved'),
+                      fmt_nan('%.2f', ev.get((c, '3.53'), '')) + ' +- ' + fmt_nan('%.2f', evs.get((c, '3.53'), '')),
+                      erf.get((c, '3.53'), '-'), erf.get((c, '6.50'), '-')))
+        for A in ('3.53', '6.50'):
+            if (c, A) in er:
+                x = er[c, A].split('\t')
+                out.append('grid_%s_eta_r_a%s_phi0.4940\t%s\t%s' % (c, A, x[0], x[1]))
+        out.append(cfmt('grid_%s_table2_eta_eff_rows_pass\t%d\t0', c, n('e', 'pass')))
+        out.append(cfmt('grid_%s_table2_k_eff_rows_pass\t%d\t0', c, n('k', 'pass')))
+    with open(grid_out, 'w') as f:
+        f.write(''.join(l + '\n' for l in G))
+    return out
+
+
+def largest_sigmas(summary, q):
+    """the largest |value| / stderr over the summary rows named Q_a* with a positive stderr
+    (%.3g), and their count"""
+    m, n = 0.0, 0
+    for r in rows(summary):
+        if fld(r, 1).startswith(q + '_a') and gt(fld(r, 3), 0):
+            x = div(num(fld(r, 2)), num(fld(r, 3)))
+            x = -x if lt(x, 0) else x
+            if gt(x, m):
+                m = x
+            n += 1
+    return [cfmt('largest_sigmas_%s\t%.3g\t0', q, m), cfmt('largest_sigmas_%s_cases\t%d\t0', q, n)]
+
+
+def log_ratios(col, blocks_table, fit_table):
+    """log(e / e_blocks) per shell (keyed by n2, column 2) of a `dpd tcaf-fit --model exp` table's
+    column COL (4: the propagated error, 5: the bound) against the block errors of the run's
+    tcaf_eta.tsv (column 5), both positive; printed as awk prints a number (%.6g)"""
+    b = {}
+    for r in rows(blocks_table):
+        if not fld(r, 1).startswith('#') and fld(r, 1) != 'k' and fld(r, 5) != 'nan' and gt(fld(r, 5), 0):
+            b[fld(r, 2)] = fld(r, 5)
+    out = []
+    for r in rows(fit_table):
+        c = fld(r, col)
+        if not fld(r, 1).startswith('#') and fld(r, 1) != 'k' and fld(r, 2) in b and c != 'nan' and gt(c, 0):
+            out.append(astr(log(div(num(c), num(b[fld(r, 2)])))))
+    return out
+
+
+def geometric_mean_rows(q, kind, logs):
+    """the geometric mean exp(mean log) of ratios from their logs, its error exp(m) se(m)
+    (the logs independent: mean_se); with KIND propagated also the count"""
+    o = mean_se(logs)
+    m = num(o.v)
+    out = [cfmt('%s\t%.6g\t%.3g', q, exp(m), exp(m) * num(o.se))]
+    if kind == 'propagated':
+        out.append(cfmt('exp_se_ratio_shells_a3.53\t%d\t0', len(logs)))
+    return out
+
+
+def eta0_one_minus_phi_rows(summary, paper2, e0pair):
+    """Table 2's eta_eff against eta_0 (1 - phi): eta_eff / (eta_0 (1 - phi)), the error eta_0's
+    (v_rel1; the paper's eta_eff and phi exact)"""
+    phi = {}
+    for r in rows(summary):
+        if fld(r, 1).startswith('phi_phi'):
+            phi[fld(r, 1)[4:]] = fld(r, 2)
+    z = parse_pair(e0pair)
+    out = []
+    for r in rows(paper2):
+        if is_comment(r) or fld(r, 1) == 'k':
+            continue
+        t = cfmt('phi%.4f', fld(r, 2))
+        den = num(z.v) * (1 - num(phi.get(t, '')))
+        o = v_rel1(div(num(fld(r, 5)), den), z.v, z.se)
+        out.append(o.row('table2_eta_eff_over_eta0_one_minus_phi_' + t))
+    return out
+
+
+# ---------------------------------------------------------------- the command line
+
+def _guarded(pair):
+    """a "value<TAB>se" whose value is nan or infinite: nothing to read a curve at"""
+    return pair.split('\t')[0] in ('nan', '-nan', 'inf', '-inf')
+
+
+def _lookup(path, q):
+    for r in rows(path):
+        if fld(r, 1) == q:
+            return fld(r, 2) + '\t' + fld(r, 3)
+    return None
+
+
+def cmd_lookup(a):
+    """lookup FILE Q [WHAT]: "value<TAB>stderr" of the first row named Q; exit 1 if none (WHAT:
+    the error message's subject)"""
+    v = _lookup(a[0], a[1])
+    if v is None:
+        if len(a) > 2:
+            sys.stderr.write('%s: no %s in %s\n' % (a[2], a[1], a[0]))
+        return 1
+    return [v]
+
+
+def _two(op):
+    return lambda a: [op(*(parse_pair(a[0]).v, parse_pair(a[0]).se, parse_pair(a[1]).v, parse_pair(a[1]).se)).pair()]
+
+
+COMMANDS = {
+    'lookup': cmd_lookup,
+    # "v<TAB>se" "v<TAB>se" -> "v<TAB>se"
+    'diff': _two(v_diff),
+    'sum': _two(v_sum),
+    'ratio': _two(v_ratio),
+    'product': _two(v_product),
+    # scale "v<TAB>se" F -> f (v +- se)
+    'scale': lambda a: [v_scale(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1]).pair()],
+    # quotient A B -> a / b (%.12g: an exact factor to scale by)
+    'quotient': lambda a: [cfmt('%.12g', div(num(a[0]), num(a[1])))],
+    # curve TCAF_ETA [HIGH_K_TCAF_ETA]
+    'curve': lambda a: tcaf_curve(a),
+    # normalise CURVE C0
+    'normalise': lambda a: normalise_curve(a[0], a[1]),
+    # keff CURVE ETA SE TAG -> k_eff_TAG, lambda_eff_TAG, eta_eff_TAG rows
+    'keff': lambda a: keff(a[0], a[1], a[2], a[3]),
+    # k-eff CURVE "v<TAB>se" -> the k_eff pair (nan for a nan or infinite value)
+    'k-eff': lambda a: ['nan\tnan'] if _guarded(a[1]) else
+        [keff(a[0], parse_pair(a[1]).v, parse_pair(a[1]).se, 'x')[0].split('\t', 1)[1]],
+    # interp CURVE "k<TAB>se" -> the curve's eta there (nan for a nan or infinite k)
+    'interp': lambda a: ['nan\tnan'] if _guarded(a[1]) else
+        [interp(*_columns(a[0], 1, 4, 5), parse_pair(a[1]).v, parse_pair(a[1]).se).pair()],
+    # phi-row TAG COUNT N -> phi_TAG, count / n (the volume fraction of the bodies' particles)
+    'phi-row': lambda a: [cfmt('phi_%s\t%.10g\t0', a[0], div(num(a[1]), num(a[2])))],
+    # rho-total RHO NC L -> rho + 6 nc / L^3 (the bodies of mass 6 in the density)
+    'rho-total': lambda a: [cfmt('%.10g', num(a[0]) + 6 * num(a[1]) / pw(num(a[2]), 3))],
+    # sum-column Q FMT FILE... -> FMT of the sum of column 2 over the rows named Q, in order
+    'sum-column': lambda a: [cfmt(a[1], _sum_column(a[0], a[2:]))],
+    # grid A PHI F_P F_S F_T C_EXP C_TWO_MODE C_INTEGRAL F0_EXP F0_TWO_MODE F0_INTEGRAL FREE SOLVENT
+    'grid': lambda a: ['# a\tphi\tD\tE\tK\tF\tk_eff\tse\teta_eff\tse (grid.awk)'] if a == ['--header'] else tcaf_grid(a[0], a[1], a[2], a[3], a[4],
+                                {'exp': a[5], 'two_mode': a[6], 'integral': a[7]},
+                                {'exp': a[8], 'two_mode': a[9], 'integral': a[10]}, a[11], a[12]),
+    # readings-table2-rows SUMMARY: the Table 2 rows (a = 3.53) under their own names
+    'readings-table2-rows': lambda a: [re.sub(r'_a3\.53_', '_', fld(r, 1), count=1) + '\t' + fld(r, 2) + '\t' + fld(r, 3)
+                                       for r in rows(a[0]) if re.match(r'^reading_[a-e]_(k_eff|eta_eff)_a3\.53_phi', fld(r, 1))],
+    'largest-sigmas': lambda a: largest_sigmas(a[0], a[1]),
+    'log-ratios': lambda a: log_ratios(int(a[0]), a[1], a[2]),
+    # geometric-mean Q KIND < logs
+    'geometric-mean': lambda a: geometric_mean_rows(a[0], a[1], [l.split('\t')[0] for l in sys.stdin.read().split('\n')[:-1]]),
+    'eta0-ratios': lambda a: eta0_one_minus_phi_rows(a[0], a[1], a[2]),
+    # readings-tables OUT PAPER2 TIER "AS" "READINGS"
+    'readings-tables': lambda a: readings_tables(a[0], a[1], a[2], a[3].split(), a[4].split()) or [],
+    # readings-grid PAPER2 SUMMARY GRID_ROWS GRID_OUT -> summary rows
+    'readings-grid': lambda a: readings_grid_decision(a[0], a[1], a[2], a[3]),
+}
+
+
+def _columns(path, *cols):
+    """the given columns of every row of a file, as lists"""
+    rs = rows(path)
+    return [[fld(r, c) for r in rs] for c in cols]
+
+
+def _sum_column(q, paths):
+    s = 0.0
+    for p in paths:
+        for r in rows(p):
+            if fld(r, 1) == q:
+                s += num(fld(r, 2))
+    return s
+
+
+def main(argv):
+    if len(argv) < 2 or argv[1] not in COMMANDS:
+        sys.stderr.write('usage: analyse SUBCOMMAND ARGS... (subcommands: %s)\n' % ' '.join(sorted(COMMANDS)))
+        return 2
+    try:
+        res = COMMANDS[argv[1]](argv[2:])
+    except (IndexError, KeyError) as e:
+        sys.stderr.write('analyse %s: bad arguments %s (%s)\n' % (argv[1], argv[2:], e))
+        return 2
+    except OSError as e:
+        sys.stderr.write('analyse %s: %s\n' % (argv[1], e))
+        return 1
+    if isinstance(res, int):
+        return res
+    sys.stdout.write(''.join(l + '\n' for l in res))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))
