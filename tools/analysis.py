@@ -428,7 +428,7 @@ def line(xs, ys):
         x, y = num(x), num(y)
         sx += x; sy += y; sxx += x * x; sxy += x * y
     d = n * sxx - sx * sx
-    if n < 2 or d == 0:
+    if n < 2 or eq(d, 0):
         return o
     b = (n * sxy - sx * sy) / d
     a = (sy - b * sx) / n
@@ -457,7 +457,7 @@ def wline(xs, ys, ses):
             sw += w; sx += w * x; sy += w * y; sxx += w * x * x; sxy += w * x * y
     o.n = m
     d = sw * sxx - sx * sx
-    if m < 2 or d == 0:
+    if m < 2 or eq(d, 0):
         return o
     b = (sw * sxy - sx * sy) / d
     o.slope, o.icpt = b, (sy - b * sx) / sw
@@ -882,6 +882,476 @@ def eta0_one_minus_phi_rows(summary, paper2, e0pair):
     return out
 
 
+def eta_at_wavelength(path, lam, name):
+    """eta_free(k) at k = 2 pi / lambda, linear between the two shells of a tcaf_eta.tsv that
+    bracket k (interp; the shells' errors weighted by the interpolation, k exact); nan outside
+    the measured shells (formerly etak.awk)"""
+    k, v, s = _shells(path)
+    return [interp(k, v, s, 2 * 3.14159265358979 / num(lam), 0.0).row(name)]
+
+
+def tab02_data_row(summary, t, kp):
+    """mai-duy-2019/tab02-effective-viscosity: one row of table2_data.tsv (k phi k_eff lambda_eff
+    eta_eff eta_k0_free and the exp and two-mode estimators' k_eff and eta_eff, each value se)"""
+    V, S = summary_dict(summary)
+    g = lambda q: V[q] + '\t' + S[q] if q in V else 'nan\tnan'
+    return ['\t'.join([kp, V.get('phi_' + t, ''), g('k_eff_' + t), g('lambda_eff_' + t), g('eta_eff_' + t),
+                       g('eta_k0_free_' + t), g('k_eff_exp_' + t), g('eta_eff_exp_' + t),
+                       g('k_eff_two_mode_' + t), g('eta_eff_two_mode_' + t)])]
+
+
+def tab02_table(paper2, data):
+    """mai-duy-2019/tab02-effective-viscosity: Table 2 beside the paper's values (value +- se)"""
+    pk, pl, pe = {}, {}, {}
+    for r in rows(paper2):
+        if not fld(r, 1).startswith('#') and fld(r, 1) != 'k':
+            pk[fld(r, 1)] = fld(r, 3); pl[fld(r, 1)] = fld(r, 4); pe[fld(r, 1)] = fld(r, 5)
+    pm = lambda v, e: 'none' if v == 'nan' else cfmt('%.3f +- %.3f', v, e)
+    out = []
+    for i, r in enumerate(rows(data)):
+        if i == 0:
+            out.append('k\tphi\tk_eff\tk_eff, paper\tlambda_eff\tlambda_eff, paper\teta_eff\teta_eff, paper\tfree eta(k -> 0)\teta_eff, two-mode (second estimator)\teta_eff, eq. 28 amplitude 1 (the literal fit of the paper, its artefact)\tk_eff, eq. 28 amplitude 1')
+            continue
+        f = lambda j: fld(r, j)
+        out.append(cfmt('%s\t%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s', f(1), f(2), pm(f(3), f(4)), pk.get(f(1), ''),
+                        pm(f(5), f(6)), pl.get(f(1), ''), pm(f(7), f(8)), pe.get(f(1), ''), pm(f(9), f(10)),
+                        pm(f(17), f(18)), pm(f(13), f(14)), pm(f(11), f(12))))
+    return out
+
+
+def solvent_at_paper_keff(paper2, solvent_eta):
+    """mai-duy-2019/tab02-effective-viscosity's side check: the pure solvent's eta(k) at each of
+    the paper's lambda_eff (eta_at_wavelength), beside the paper's phi, k_eff and eta_eff"""
+    out = []
+    for r in rows(paper2):
+        if fld(r, 1).startswith('#') or fld(r, 1) == 'k':
+            continue
+        phi, ke, le_, ee = fld(r, 2), fld(r, 3), fld(r, 4), fld(r, 5)
+        x = eta_at_wavelength(solvent_eta, le_, 'x')[0].split('\t')
+        out.append('\t'.join([phi, ke, ee, x[1] + '\t' + x[2]]))
+    return out
+
+
+def rename_rows(path, pairs):
+    """the rows named OLD of a summary, in file order, under the name NEW (pairs OLD NEW ...)"""
+    m = dict(zip(pairs[0::2], pairs[1::2]))
+    return [m[fld(r, 1)] + '\t' + fld(r, 2) + '\t' + fld(r, 3) for r in rows(path) if fld(r, 1) in m]
+
+
+def summary_diff(summary, a, b, q):
+    """Q = summary quantity A - B, errors in quadrature (v_diff; the last row of a name)"""
+    V, S = summary_dict(summary)
+    return [v_diff(V.get(a, ''), S.get(a, ''), V.get(b, ''), S.get(b, '')).row(q)]
+
+
+def tab01_projected_cpu_hours(c, p, s):
+    """mai-duy-2019/tab01-wavelengths: the paper tier's CPU-hours from a run's cost per
+    particle-step c / (p s): 22 runs of 13500 + 6 k^3 particles (k = 3 ... 13), 8000 steps"""
+    n = 0.0
+    for k in range(3, 14):
+        n += 13500 + 6 * k * k * k
+    return [cfmt('%.4g', num(c) / (num(p) * num(s)) * 2 * n * 8000 / 3600)]
+
+
+def tab01_tables(summary, paper1):
+    """mai-duy-2019/tab01-wavelengths: Table 1 beside the paper's columns (sphere eq. 32, cube
+    eq. 31, TCAF value +- se or "no crossing" with the free - constrained eta(k -> 0), "-" when
+    not run) and the TCAF lambda for the plot (nan when absent). Returns (table1, lambda_tcaf)."""
+    V, S = summary_dict(summary)
+    phi = {}
+    for r in rows(summary):
+        if fld(r, 1).startswith('phi_k'):
+            phi[fld(r, 1)[5:]] = fld(r, 2)
+
+    def tc(q):
+        if q not in V:
+            return '-'
+        if V[q] == 'nan':
+            d = 'eta_k0_free_minus_constrained_' + q[12:]
+            return cfmt('no crossing (free - constrained eta(k->0) = %.1f +- %.1f)', V.get(d, ''), S.get(d, ''))
+        return cfmt('%.3f +- %.3f', V[q], S[q])
+    t1 = ['k\tphi\tsphere (eq. 32)\tsphere, paper\tcube (eq. 31)\tcube, paper\tTCAF (sec. 4.2.3)\tTCAF, paper']
+    lt_ = []
+    for i, r in enumerate(rows(paper1)):
+        if i == 0:
+            lt_.append('phi\tlambda_tcaf\tse')
+        if fld(r, 1).startswith('#') or fld(r, 1) == 'k':
+            continue
+        k = fld(r, 1)
+        tag = cfmt('phi%.4f', phi.get(k, ''))
+        t1.append(cfmt('%s\t%.4f\t%.4f\t%s\t%.4f\t%s\t%s\t%s', k, phi.get(k, ''), V.get('lambda_sphere_' + tag, ''), fld(r, 3),
+                       V.get('lambda_cube_' + tag, ''), fld(r, 4), tc('lambda_tcaf_' + tag), fld(r, 5)))
+        if i > 0:
+            q = 'lambda_tcaf_' + tag
+            lt_.append(cfmt('%.6f\t%s\t%s', phi.get(k, ''), V[q] if q in V else 'nan', S[q] if q in V else 'nan'))
+    return t1, lt_
+
+
+def r_half(fit_out):
+    """mai-duy-2019 fig04's colloid size: where the straight line through g(r) (`dpd fit-line`,
+    centred at r = 0.35: value_at_centre, slope) reaches 1/2"""
+    v = {}
+    for r in fit_out:
+        v[fld(r, 1)] = fld(r, 2)
+    return [cfmt('%.10g', 0.35 + div(0.5 - num(v.get('value_at_centre', '')), num(v.get('slope', ''))))]
+
+
+def colloid_radius_rows(r_halves, d):
+    """the mean r_half over independent runs and its standard error (mean_se), and the colloid
+    radius d + r_half (d exact: the site distance)"""
+    o = mean_se(r_halves)
+    m = num(o.v)
+    return [cfmt('colloid_rdf_r_half\t%.6g\t%.3g', m, o.se), cfmt('colloid_radius_rdf\t%.6g\t%.3g', num(d) + m, o.se)]
+
+
+def shear_rate_at_pe(summary, pe):
+    """the shear rate of a Peclet number: Pe = rate a^3 6 pi eta / kBT (kBT = 1; D0 = kBT /
+    (6 pi eta a)), rate = Pe / (6 pi eta a^3); errors of eta and a (3 times a's relative) in
+    quadrature (v_rel2)"""
+    V, S = summary_dict(summary)
+    e, a = num(V.get('eta_solvent', '')), num(V.get('colloid_radius_rdf', ''))
+    return [v_rel2(div(num(pe), 6 * 3.14159265358979 * e * a * a * a), V.get('eta_solvent', ''), S.get('eta_solvent', ''),
+                   V.get('colloid_radius_rdf', ''), 3 * num(S.get('colloid_radius_rdf', ''))).row('shear_rate_at_paper_pe')]
+
+
+def lambda_cube(L, k):
+    """eq. 31 of Mai-Duy et al. 2019: lambda = L / k (k colloids per axis)"""
+    return [cfmt('%.10g', div(num(L), num(k)))]
+
+
+def lambda_sphere(L, k):
+    """eq. 32 of Mai-Duy et al. 2019: lambda = (3 / (4 pi n))^(1/3), n = k^3 / L^3"""
+    k, L = num(k), num(L)
+    return [cfmt('%.10g', pw(3 / (4 * 3.14159265358979 * pw(k, 3) / pw(L, 3)), 1 / 3))]
+
+
+def fig04_ratios(summary, t):
+    """mai-duy-2019 fig04: eta_r = eta_susp / eta(k) at the cube and sphere k of the free system
+    and of the solvent (v_ratio; nan where eta(k) is not), and eta_r(TCAF) - eta_r(original) =
+    es / a - es / b with the errors of the shared eta_susp counted once (first order)"""
+    V, S = summary_dict(summary)
+    out = []
+
+    def r(name, den):
+        if den not in V or V[den] == 'nan':
+            out.append('%s\tnan\tnan' % name)
+            return
+        out.append(v_ratio(V.get('eta_susp_' + t, ''), S.get('eta_susp_' + t, ''), V[den], S[den]).row(name))
+    r('eta_r_cube_' + t, 'eta_free_cube_' + t)
+    r('eta_r_sphere_' + t, 'eta_free_sphere_' + t)
+    r('eta_r_cube_solvent_' + t, 'eta_solvent_cube_' + t)
+    r('eta_r_sphere_solvent_' + t, 'eta_solvent_sphere_' + t)
+    es, a, b = num(V.get('eta_susp_' + t, '')), num(V.get('eta_eff_' + t, '')), num(V.get('eta_solvent', ''))
+    d = div(es, a) - div(es, b)
+    q = [num(S.get('eta_susp_' + t, '')) * (div(1, a) - div(1, b)), div(es * num(S.get('eta_eff_' + t, '')), sq(a)),
+         div(es * num(S.get('eta_solvent', '')), sq(b))]
+    out.append(cfmt('eta_r_tcaf_minus_original_%s\t%.10g\t%.4g', t, d, quad(q)))
+    return out
+
+
+def fig04_eta_r_row(summary, t):
+    """mai-duy-2019 fig04: the row of eta_r.tsv at one phi (original, TCAF, cube, sphere, cube and
+    sphere on the solvent; value se each, nan where absent)"""
+    V, S = summary_dict(summary)
+    g = lambda q: V[q] + '\t' + S[q] if q in V else 'nan\tnan'
+    return [cfmt('%.6f\t%s\t%s\t%s\t%s\t%s\t%s', V.get('phi_' + t, ''), g('eta_r_original_' + t), g('eta_r_tcaf_' + t),
+                 g('eta_r_cube_' + t), g('eta_r_sphere_' + t), g('eta_r_cube_solvent_' + t), g('eta_r_sphere_solvent_' + t))]
+
+
+def wpoly2(xs, ys, ses):
+    """weighted (1 / se^2) least-squares parabola y = c0 + c1 x + c2 x^2 by Cramer's rule on the
+    normal equations; c0 and its error from the inverse of the normal matrix (chi-square fit with
+    known errors; num_wpoly2). Returns Val(c0, c0_se), nan for fewer than 3 points."""
+    S, B = [0.0] * 5, [0.0] * 3
+    for x, y, e in zip(xs, ys, ses):
+        w = div(1.0, sq(e))
+        xp = 1.0
+        for p in range(5):
+            S[p] += w * xp
+            if p <= 2:
+                B[p] += w * num(y) * xp
+            xp *= num(x)
+    D = det3(S[0], S[1], S[2], S[1], S[2], S[3], S[2], S[3], S[4])
+    if len(xs) < 3 or eq(D, 0):
+        return Val()
+    return Val(det3(B[0], S[1], S[2], B[1], S[2], S[3], B[2], S[3], S[4]) / D, sqrt((S[2] * S[4] - S[3] * S[3]) / D))
+
+
+def det3(a11, a12, a13, a21, a22, a23, a31, a32, a33):
+    """the determinant of a 3 x 3 matrix by cofactors along the first row (num_det3)"""
+    return a11 * (a22 * a33 - a23 * a32) - a12 * (a21 * a33 - a23 * a31) + a13 * (a21 * a32 - a22 * a31)
+
+
+def uniform_se(lo, hi):
+    """the standard deviation of a value known only to lie in [lo, hi]: (hi - lo) / sqrt(12)"""
+    return (num(hi) - num(lo)) / sqrt(12)
+
+
+def cost_per_kilo(cpu, n, t):
+    """methods/speed-accuracy: CPU seconds per 1000 particles per time unit"""
+    return [cfmt('%.5g', num(cpu) / (num(n) / 1000) / num(t))]
+
+
+def ladder_cost_per_dt(path):
+    """methods/speed-accuracy: each fluid's CPU cost per particle-step averaged over its ladder
+    (sum of CPU over sum of particle-steps, the rows in order) times the steps per time unit
+    1 / dt, appended to ladder-dt.tsv as cost_per_dt"""
+    rs = rows(path)
+    c, ps = {}, {}
+    for r in rs[1:]:
+        if fld(r, 8) != 'nan':
+            f = fld(r, 1)
+            c[f] = c.get(f, 0.0) + num(fld(r, 8))
+            ps[f] = ps.get(f, 0.0) + div(num(fld(r, 8)), num(fld(r, 9))) * 1000 / num(fld(r, 3))
+    out = ['\t'.join(rs[0]) + '\tcost_per_dt'] if rs else []
+    for r in rs[1:]:
+        out.append(cfmt('%s\t%.5g', '\t'.join(r), div(div(c.get(fld(r, 1), 0.0), ps.get(fld(r, 1), 0.0)) * 1000, num(fld(r, 3)))))
+    return out
+
+
+def gw_temperature_ladder(path, big):
+    """methods/speed-accuracy, Groot-Warren fluid at lambda = 0.5: (a) T0 of the weighted parabola
+    T = T0 + c1 dt + c2 dt^2 (wpoly2; FDT: T0 = kBT); (b) the order of the error, the weighted
+    line through (log dt, log |T - 1|) over the points whose |T - 1| exceeds 2 stderr (error of
+    log |T - 1| = se / |T - 1|; wline); (c) |T - 1| at lambda 0.65 over that at 0.5 at dt BIG
+    (v_ratio)"""
+    x, y, s, e, es = [], [], [], {}, {}
+    for r in rows(path):
+        if fld(r, 1) != 'gw' or fld(r, 4) == 'nan':
+            continue
+        if eq(fld(r, 2), 0.5):
+            x.append(fld(r, 3)); y.append(fld(r, 4)); s.append(fld(r, 5))
+        if eq(fld(r, 3), big):
+            e[fld(r, 2)] = num(fld(r, 4)) - 1
+            es[fld(r, 2)] = fld(r, 5)
+    out = []
+    o = wpoly2(x, y, s)
+    out.append(cfmt('T0_extrapolated_gw_lambda0.5\t%.6g\t%.4g', o.v, o.se))
+    X, Y, W = [], [], []
+    for xi, yi, si in zip(x, y, s):
+        d = num(yi) - 1
+        d = -d if lt(d, 0) else d
+        if gt(d, 2 * num(si)):
+            X.append(log(num(xi))); Y.append(log(d)); W.append(div(num(si), d))
+    if len(X) >= 2:
+        ln = wline(X, Y, W)
+        out.append(cfmt('T_error_order_gw_lambda0.5\t%.6g\t%.4g', ln.slope, ln.slope_se))
+        out.append(cfmt('T_error_order_points_gw_lambda0.5\t%d\t0', len(X)))
+    ab = lambda v: (-num(v) if lt(v, 0) else v)
+    o = v_ratio(ab(e.get('0.65', '')), es.get('0.65', ''), ab(e.get('0.5', '')), es.get('0.5', ''))
+    out.append(cfmt('T_error_ratio_gw_l0.65_l0.5_dt%s\t%s', big, o.pair('%.6g', '%.4g')))
+    return out
+
+
+def dt_within_1pct(path):
+    """methods/speed-accuracy: per fluid and lambda, the largest dt of the temperature ladder
+    (rows in increasing dt) with |T - 1| <= 0.01 + 2 stderr before the first rung that is not,
+    and its error as a value uniform between it and that next rung (uniform_se; nan if none).
+    As the awk it replaces, a comparison with a nan stderr holds (mawk: NaN compares equal)."""
+    best, nxt, bad, K = {}, {}, {}, []
+    for r in rows(path)[1:]:
+        k = fld(r, 1) + '_l' + fld(r, 2)
+        d = 1e9 if fld(r, 4) == 'nan' else num(fld(r, 4)) - 1
+        d = -d if lt(d, 0) else d
+        if k not in best:
+            best[k], nxt[k], bad[k] = 0.0, 'inf', 0
+            K.append(k)
+        if le(d, 0.01 + 2 * num(fld(r, 5))) and not bad[k]:
+            best[k] = fld(r, 3)
+        elif not bad[k]:
+            bad[k], nxt[k] = 1, fld(r, 3)
+    return [cfmt('dt_T1pct_%s\t%s\t%s', k, best[k], 'nan' if nxt[k] == 'inf' else cfmt('%.3g', uniform_se(best[k], nxt[k])))
+            for k in K]
+
+
+def rel_error(e, es, r, rs):
+    """(e - r) / r and its error sqrt(es^2 + (e rs / r)^2) / r (e and r independent)"""
+    e, es, r, rs = num(e), num(es), num(r), num(rs)
+    return [cfmt('%.6g\t%.4g', div(e - r, r), div(quad([es, div(e, r) * rs]), r))]
+
+
+def tolerance_summary(path):
+    """methods/speed-accuracy: the PCG row at the paper's tolerance 1e-7 (its relative error
+    against fig03's paper tier) and PCG's CPU per step at 1e-7 over that at 1e-3"""
+    out, a, b = [], '', ''
+    for r in rows(path):
+        if fld(r, 1) == 'pcg' and fld(r, 2) == '1e-7':
+            out.append('eta_rel_error_pcg_1e-7\t%s\t%s' % (fld(r, 5), fld(r, 6)))
+            a = fld(r, 8)
+        if fld(r, 1) == 'pcg' and fld(r, 2) == '1e-3':
+            b = fld(r, 8)
+    out.append(cfmt('cpu_per_step_ratio_pcg_1e-7_1e-3\t%.6g\t0', div(num(a), num(b))))
+    return out
+
+
+def true_error_slopes(path):
+    """methods/speed-accuracy: per solver, the unweighted line through (log tolerance, log true
+    error) over the rows with a positive true error (line); its error 0 for two points"""
+    order, X, Y = [], {}, {}
+    for r in rows(path)[1:]:
+        if gt(fld(r, 9), 0):
+            s = fld(r, 1)
+            if s not in X:
+                order.append(s); X[s], Y[s] = [], []
+            X[s].append(log(num(fld(r, 2)))); Y[s].append(log(num(fld(r, 9))))
+    out = []
+    for s in order:
+        ln = line(X[s], Y[s])
+        out.append(cfmt('true_error_slope_%s\t%.6g\t%.4g', s, ln.slope, ln.slope_se if len(X[s]) > 2 else 0.0))
+    return out
+
+
+def _profile_bulk(path, bulk, extra=lambda r: True):
+    """the rows of a profile.tsv (pos first) with LO <= pos <= HI (BULK = "LO:HI")"""
+    lo, hi = bulk.split(':')[:2]
+    return [r for r in rows(path) if not (fld(r, 1).startswith('#') or fld(r, 1) == 'pos')
+            and ge(fld(r, 1), lo) and le(fld(r, 1), hi) and extra(r)]
+
+
+def wall_slip(u, g, gs, h):
+    """phan-thien-2016 fig03: the mean slip of the two walls U - (v(top) - v(bottom)) / 2 =
+    U - rate h / 2, the error the rate's (v_scale)"""
+    o = v_scale(g, gs, div(num(h), 2))
+    return [cfmt('%.10g\t%.4g', num(u) - num(o.v), o.se)]
+
+
+def ik_bulk_stress(profile, bulk):
+    """phan-thien-2016 fig03: the Irving-Kirkwood shear stress (column 12) averaged over the bulk
+    bins, its error the mean of the bins' errors (column 13; fully correlated bins)"""
+    rs = _profile_bulk(profile, bulk, lambda r: fld(r, 13) != 'nan')
+    return [cfmt('%.10g\t%.4g', mean([fld(r, 12) for r in rs]), mean([fld(r, 13) for r in rs]))]
+
+
+def bulk_density(profile, bulk):
+    """phan-thien-2016 fig03: the density (column 2) averaged over the bulk bins, its error the
+    bins' errors in quadrature over their number (bins independent)"""
+    rs = _profile_bulk(profile, bulk)
+    n = len(rs)
+    return [cfmt('%.6f\t%.4g', mean([fld(r, 2) for r in rs]), div(quad([fld(r, 3) for r in rs]), n))]
+
+
+def first_defined(path, col):
+    """the first data row's column COL and COL + 1 where COL is not nan (e.g. the wall bin)"""
+    for r in rows(path):
+        if fld(r, 1).startswith('#') or fld(r, 1) == 'pos':
+            continue
+        if fld(r, col) != 'nan':
+            return [fld(r, col) + '\t' + fld(r, col + 1)]
+    return []
+
+
+def wall_minus_lees_edwards(summary, rho, rhose, lepair):
+    """phan-thien-2016 fig03: eta (walls) - eta (Lees-Edwards at the measured bulk density rho);
+    the LE run's density held at rho, so rho's error enters through d eta / d rho ~ 2 eta / rho
+    (eta ~ rho^2), with the two viscosities' errors in quadrature"""
+    V, S = summary_dict(summary)
+    a, sa = V.get('eta', ''), S.get('eta', '')
+    L = parse_pair(lepair)
+    e = [sa, L.se, 2 * num(L.v) / num(rho) * num(rhose)]
+    return [cfmt('%.10g\t%.4g', num(a) - num(L.v), quad(e))]
+
+
+def density_fields(path, L, cx, cy, rex, n0):
+    """phan-thien-2016 fig08, eq. 49: the density residual sqrt(sum (n - n0)^2) / nb and the mean
+    |div u| (central differences, periodic) over the nb bins of a density map (density_map.tsv:
+    x y density vx vy, a block per grid row after a header) whose centre lies at least rex from
+    the cylinder centre (cx, cy), minimum image in a box of side L (formerly fields.awk)"""
+    L, cx, cy, rex, n0 = num(L), num(cx), num(cy), num(rex), num(n0)
+    X, Y, N, U, Vv = {}, {}, {}, {}, {}
+    row = col = nx = 0
+    for i, r in enumerate(rows(path)):
+        if i == 0:
+            continue
+        if r == ['']:
+            if col > 0:
+                nx = col
+                row += 1
+            col = 0
+            continue
+        X[col, row], Y[col, row], N[col, row], U[col, row], Vv[col, row] = (fld(r, 1), fld(r, 2), fld(r, 3), fld(r, 4), fld(r, 5))
+        col += 1
+    if col > 0:
+        nx = col
+        row += 1
+    ny = row
+    dx, dy = div(L, nx), div(L, ny)
+    nb, ss, sdiv = 0, 0.0, 0.0
+    g = lambda a, k: num(a.get(k, ''))
+    for j in range(ny):
+        for i in range(nx):
+            ddx = g(X, (i, j)) - cx
+            ddy = g(Y, (i, j)) - cy
+            ddx -= L * float(int(ddx / L * 2))          # minimum image (|d| < L); awk's int() truncates
+            ddy -= L * float(int(ddy / L * 2))
+            if ddx * ddx + ddy * ddy < rex * rex:
+                continue
+            ip, im, jp, jm = (i + 1) % nx, (i + nx - 1) % nx, (j + 1) % ny, (j + ny - 1) % ny
+            dv = div(g(U, (ip, j)) - g(U, (im, j)), 2 * dx) + div(g(Vv, (i, jp)) - g(Vv, (i, jm)), 2 * dy)
+            ss += sq(g(N, (i, j)) - n0)
+            sdiv += -dv if dv < 0 else dv
+            nb += 1
+    return [cfmt('%.10g\t%.10g\t%d', div(sqrt(ss), nb), div(sdiv, nb), nb)]
+
+
+def fields_mean_row(P, m, lines):
+    """phan-thien-2016 fig08: per pressure and mass, the mean and standard error over the seeds
+    (mean_se) of the residual, |div u| and the fluid velocity (rows: residual divu nb U)"""
+    r = [l.split('\t') for l in lines]
+    out = '%s\t%s' % (P, m)
+    for c in (1, 2, 4):
+        out += '\t' + mean_se([fld(x, c) for x in r]).pair('%.6g', '%.3g')
+    return [out]
+
+
+def force_balance(q, P, pair):
+    """phan-thien-2016 fig08: the drag on the cylinder over the driving force 144 P (the fluid's
+    N P for N = 144 per unit length) minus 1 (v_div)"""
+    x = parse_pair(pair)
+    o = v_div(x.v, x.se, 144 * num(P))
+    o.v = num(o.v) - 1
+    return [o.row(q)]
+
+
+def eos_slope(lo, hi):
+    """phan-thien-2016 fig08: c_T^2 = dp/dn (mass 1) by the central difference of the pressure at
+    n = 137 / 36 and 151 / 36 (v_diff, v_div)"""
+    a, b = parse_pair(lo), parse_pair(hi)
+    dn = (151 - 137) / 36.0
+    o = v_diff(b.v, b.se, a.v, a.se)
+    return [v_div(o.v, o.se, dn).pair()]
+
+
+def fig08_mach(fields, c2):
+    """phan-thien-2016 fig08: the Mach number U / c_T of the m = 1 rows, c_T = sqrt(c_T^2)
+    (v_sqrt, v_ratio)"""
+    x = parse_pair(c2)
+    cs = v_sqrt(x.v, x.se)
+    return [fld(r, 1) + '\t' + v_ratio(fld(r, 7), fld(r, 8), cs.v, cs.se).pair('%.6g', '%.3g')
+            for r in rows(fields)[1:] if eq(fld(r, 2), 1)]
+
+
+def fig08_growths(fields):
+    """phan-thien-2016 fig08: the growth of the residual and of |div u| from P = 0.1 to 1.0 per
+    mass, and m = 1's growth over m = 0's (v_ratio)"""
+    R, D = {}, {}
+    for r in rows(fields)[1:]:
+        if fld(r, 1) in ('0.1', '1.0'):
+            R[fld(r, 2), fld(r, 1)] = (fld(r, 3), fld(r, 4))
+            D[fld(r, 2), fld(r, 1)] = (fld(r, 5), fld(r, 6))
+    G, out = {}, []
+
+    def ratio(q, a, b):
+        o = v_ratio(a[0], a[1], b[0], b[1])
+        G[q] = (o.v, o.se)
+        out.append(cfmt('%s\t%.6g\t%.3g', q, o.v, o.se))
+    for m in ('0', '1'):
+        ratio('residual_growth_m' + m, R.get((m, '1.0'), ('', '')), R.get((m, '0.1'), ('', '')))
+        ratio('divu_growth_m' + m, D.get((m, '1.0'), ('', '')), D.get((m, '0.1'), ('', '')))
+    ratio('residual_growth_ratio_m1_m0', G['residual_growth_m1'], G['residual_growth_m0'])
+    ratio('divu_growth_ratio_m1_m0', G['divu_growth_m1'], G['divu_growth_m0'])
+    return out
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -956,7 +1426,67 @@ COMMANDS = {
     'readings-tables': lambda a: readings_tables(a[0], a[1], a[2], a[3].split(), a[4].split()) or [],
     # readings-grid PAPER2 SUMMARY GRID_ROWS GRID_OUT -> summary rows
     'readings-grid': lambda a: readings_grid_decision(a[0], a[1], a[2], a[3]),
+    # etak CURVE LAMBDA NAME -> NAME, eta(k = 2 pi / lambda)
+    'etak': lambda a: eta_at_wavelength(a[0], a[1], a[2]),
+    # keff-lambda CURVE ETA SE TAG -> lambda_tcaf_TAG (the lambda_eff row of keff)
+    'keff-lambda': lambda a: ['lambda_tcaf_' + keff(a[0], a[1], a[2], a[3])[1].split('_', 2)[2]],
+    'tab02-data-row': lambda a: tab02_data_row(a[0], a[1], a[2]),
+    'tab02-table': lambda a: tab02_table(a[0], a[1]),
+    'solvent-at-paper-keff': lambda a: solvent_at_paper_keff(a[0], a[1]),
+    # rename SUMMARY OLD NEW [OLD NEW...]
+    'rename': lambda a: rename_rows(a[0], a[1:]),
+    # summary-diff SUMMARY A B Q
+    'summary-diff': lambda a: summary_diff(a[0], a[1], a[2], a[3]),
+    'tab01-projected-cpu-hours': lambda a: tab01_projected_cpu_hours(a[0], a[1], a[2]),
+    # tab01-tables SUMMARY PAPER1 TABLE1_OUT LAMBDA_OUT
+    'tab01-tables': lambda a: _write2(tab01_tables(a[0], a[1]), a[2], a[3]),
+    # r-half < fit-line output
+    'r-half': lambda a: r_half([l.split('\t') for l in sys.stdin.read().split('\n')[:-1]]),
+    # colloid-radius "R1 R2 ..." D
+    'colloid-radius': lambda a: colloid_radius_rows(a[0].split(), a[1]),
+    'shear-rate-at-pe': lambda a: shear_rate_at_pe(a[0], a[1]),
+    'lambda-cube': lambda a: lambda_cube(a[0], a[1]),
+    'lambda-sphere': lambda a: lambda_sphere(a[0], a[1]),
+    'fig04-ratios': lambda a: fig04_ratios(a[0], a[1]),
+    'fig04-eta-r-row': lambda a: fig04_eta_r_row(a[0], a[1]),
+    'cost-per-kilo': lambda a: cost_per_kilo(a[0], a[1], a[2]),
+    'ladder-cost-per-dt': lambda a: ladder_cost_per_dt(a[0]),
+    'gw-temperature-ladder': lambda a: gw_temperature_ladder(a[0], a[1]),
+    'dt-within-1pct': lambda a: dt_within_1pct(a[0]),
+    # rel-error E ES R RS
+    'rel-error': lambda a: rel_error(*a[:4]),
+    'tolerance-summary': lambda a: tolerance_summary(a[0]),
+    'true-error-slopes': lambda a: true_error_slopes(a[0]),
+    'wall-slip': lambda a: wall_slip(*a[:4]),
+    'ik-bulk-stress': lambda a: ik_bulk_stress(a[0], a[1]),
+    'bulk-density': lambda a: bulk_density(a[0], a[1]),
+    'first-defined': lambda a: first_defined(a[0], int(a[1])),
+    # diff-div "v<TAB>se" "v<TAB>se" C -> (x - y) / c
+    'diff-div': lambda a: [(lambda o: v_div(o.v, o.se, a[2]))(v_diff(parse_pair(a[0]).v, parse_pair(a[0]).se,
+                                                                  parse_pair(a[1]).v, parse_pair(a[1]).se)).pair()],
+    'wall-minus-lees-edwards': lambda a: wall_minus_lees_edwards(*a[:4]),
+    # keff-rows CURVE ETA SE SUFFIX -> k_eff<SUFFIX>, lambda_eff<SUFFIX> (SUFFIX may be empty)
+    'keff-rows': lambda a: [r.split('\t', 1)[0][:-2] + a[3] + '\t' + r.split('\t', 1)[1] for r in keff(a[0], a[1], a[2], 'x')[:2]],
+    # fraction COUNT N -> count / n (%.10g)
+    'fraction': lambda a: [cfmt('%.10g', div(num(a[0]), num(a[1])))],
+    # density-fields MAP L CX CY REX N0
+    'density-fields': lambda a: density_fields(*a[:6]),
+    # fields-mean-row P M < "residual divu nb U" rows
+    'fields-mean-row': lambda a: fields_mean_row(a[0], a[1], sys.stdin.read().split('\n')[:-1]),
+    'force-balance': lambda a: force_balance(a[0], a[1], a[2]),
+    'eos-slope': lambda a: eos_slope(a[0], a[1]),
+    'sound-speed': lambda a: ['sound_speed_m1\t' + (lambda x: v_sqrt(x.v, x.se))(parse_pair(a[0])).pair('%.6g', '%.3g')],
+    'fig08-mach': lambda a: fig08_mach(a[0], a[1]),
+    'fig08-mach-rows': lambda a: ['mach_m1_P%s\t%s\t%s' % (fld(r, 1), fld(r, 2), fld(r, 3)) for r in rows(a[0])[1:] if fld(r, 1) in ('0.1', '1.0')],
+    'fig08-growths': lambda a: fig08_growths(a[0]),
 }
+
+
+def _write2(tables, p1, p2):
+    for t, p in zip(tables, (p1, p2)):
+        with open(p, 'w') as f:
+            f.write(''.join(l + '\n' for l in t))
+    return []
 
 
 def _columns(path, *cols):
