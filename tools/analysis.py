@@ -1352,6 +1352,256 @@ def fig08_growths(fields):
     return out
 
 
+def dt_scan(summary, dts, out):
+    """phan-thien-2016 m0-limit-timestep: per time step of the m = 0 run, its shear rate, eta and
+    largest bulk density deviation, appended to OUT with ok = eta within 10 % of the smallest
+    step's and the density deviation below 10 %; returns dt_max_sound, the largest step before
+    the first that is not ok"""
+    V, S = summary_dict(summary)
+    D = dts.split()
+    e0 = V.get('eta_dt' + D[0], '')
+    best, bad, lines = D[0], 0, []
+    for d in D:
+        e, dd = V.get('eta_dt' + d, ''), V.get('density_bulk_max_rel_dev_dt' + d, '')
+        r = div(num(e), num(e0))
+        ok = gt(r, 0.9) and lt(r, 1.1) and lt(dd, 0.1)
+        if ok and bad == 0:
+            best = d
+        if not ok:
+            bad = 1
+        lines.append(cfmt('%s\t%s\t%s\t%s\t%s\t%s\t%d', d, V.get('shear_rate_dt' + d, ''), S.get('shear_rate_dt' + d, ''),
+                          e, S.get('eta_dt' + d, ''), dd, 1 if ok else 0))
+    with open(out, 'a') as f:
+        f.write(''.join(l + '\n' for l in lines))
+    return ['dt_max_sound\t%s\t0' % best]
+
+
+def thinning_row(r, a, D, e, e0):
+    """phan-thien-2016 fig13: one row of thinning.tsv: the rate, its Peclet number rate a^2 / D,
+    the suspension's and the solvent's viscosity and their ratio eta_r (v_ratio)"""
+    x, y = parse_pair(e), parse_pair(e0)
+    o = v_ratio(x.v, x.se, y.v, y.se)
+    return [cfmt('%s\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.4g', r, num(r) * num(a) * num(a) / num(D), x.v, x.se, y.v, y.se, o.v, o.se)]
+
+
+def significance(summary, q, name):
+    """(ratio - 1) / stderr of the summary rows named Q: how many standard errors a ratio lies
+    from 1"""
+    return [cfmt('%s\t%.6g\t0', name, div(num(fld(r, 2)) - 1, num(fld(r, 3)))) for r in rows(summary) if fld(r, 1) == q]
+
+
+def relative_thinning(path, lo, hi):
+    """phan-thien-2016 fig13: eta_r at the lowest rate over eta_r at the highest (v_ratio; the
+    last row of each rate)"""
+    a = b = ('', '')
+    for r in rows(path)[1:]:
+        if eq(fld(r, 1), lo):
+            a = (fld(r, 7), fld(r, 8))
+        if eq(fld(r, 1), hi):
+            b = (fld(r, 7), fld(r, 8))
+    return [v_ratio(a[0], a[1], b[0], b[1]).row('relative_thinning_ratio')]
+
+
+def within_1pct_best(tpair, dt, best):
+    """mai-duy-2019 solvent-timestep: the larger of BEST and DT if the temperature T +- se is
+    within 1 % of kBT = 1 with 3 stderr allowed (|T - 1| <= 0.01 + 3 se), else BEST"""
+    t = parse_pair(tpair)
+    x = num(t.v) - 1
+    if lt(x, 0):
+        x = -x
+    return [dt if le(x, 0.01 + 3 * num(t.se)) and gt(dt, best) else best]
+
+
+def abs_max(lo, hi):
+    """the larger of |lo| and |hi| (%.10g): a range's amplitude"""
+    a, b = num(lo), num(hi)
+    a = -a if lt(lo, 0) else a
+    b = -b if lt(hi, 0) else b
+    return [cfmt('%.10g', a if gt(a, b) else b)]
+
+
+def mean_list(q, values):
+    """Q's mean and standard error over independent runs (mean_se), 0 for a single run"""
+    o = mean_se(values)
+    if len(values) == 1:
+        o.se = 0.0
+    return [o.row(q)]
+
+
+def fig12_row(k, e, e0, es):
+    """phan-thien-2016 fig12: one row of eta_r.tsv: k colloids of 3 particles among 144, phi =
+    3 k / (144 + 3 k), eta, eta_r = eta / eta_0 (v_ratio), eta_r - 1 and the spring viscosity"""
+    a, b, c = parse_pair(e), parse_pair(e0), parse_pair(es)
+    kk = num(k)
+    phi = 3 * kk / (144 + 3 * kk)
+    o = v_ratio(a.v, a.se, b.v, b.se)
+    return [cfmt('%d\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.6g\t%.4g', kk, phi, a.v, a.se, o.v, o.se, num(o.v) - 1, c.v, c.se)]
+
+
+def slope_rows(fit, name):
+    """`dpd fit-line` output: its slope as NAME and its chi2_dof as NAME_chi2_dof, in file order"""
+    out = []
+    for r in rows(fit):
+        if fld(r, 1) == 'slope':
+            out.append('%s\t%s\t%s' % (name, fld(r, 2), fld(r, 3)))
+        if fld(r, 1) == 'chi2_dof':
+            out.append('%s_chi2_dof\t%s\t0' % (name, fld(r, 2)))
+    return out
+
+
+def fig07_drag(P, N, h, drag, U, eta, a):
+    """phan-thien-2016 fig07, eq. 47 (Hasimoto's periodic array of cylinders): F_H = 4 pi eta U /
+    (ln(h / a) - 1.3105); rows force_balance_P (drag / (N P) - 1), hasimoto_ratio_P (drag / F_H,
+    relative errors of U, eta and a in quadrature) and hydrodynamic_radius_P (the a that makes
+    eq. 47 exact: h exp(-(x + 1.3105)), x = 4 pi eta U / drag, errors of U and eta); and the row
+    of drag.tsv (returned second)"""
+    D, V, E, A = parse_pair(drag), parse_pair(U), parse_pair(eta), parse_pair(a)
+    d1, d2, v1, v2, e1, e2, a1, a2 = (num(x) for x in (D.v, D.se, V.v, V.se, E.v, E.se, A.v, A.se))
+    pi = math.atan2(0, -1)
+    den = log(num(h) / a1) - 1.3105                        # eq. 47
+    FH = div(4 * pi * e1 * v1, den)
+    r = [div(v2, v1), div(e2, e1), div(a2, a1 * den)]
+    rel = quad(r)
+    out = []
+    o = v_div(D.v, D.se, num(N) * num(P))
+    o.v = num(o.v) - 1
+    out.append(o.row('force_balance_P' + P))
+    out.append(v_relerr(div(d1, FH), r).row('hasimoto_ratio_P' + P))
+    x = div(4 * pi * e1 * v1, d1)
+    ah = num(h) * exp(-(x + 1.3105))
+    o = v_relerr(ah * x, r[:2])
+    out.append(cfmt('hydrodynamic_radius_P%s\t%.10g\t%.4g', P, ah, o.se))
+    return out, [cfmt('%s\t%g\t%g\t%g\t%g\t%g\t%g', P, D.v, D.se, V.v, V.se, FH, FH * rel)]
+
+
+def v_relerr(x, rels):
+    """x with the relative errors rels in quadrature (num_relerr)"""
+    for r in rels:
+        if _nan4(x, r):
+            return Val()
+    return Val(num(x), abs(num(x)) * quad(rels))
+
+
+def solvent_radius(rdf, threshold='0.001', half_bin='0.005'):
+    """phan-thien-2016 fig10-11: the solvent's closest approach to a colloid: the first r (bin
+    centre less half a bin) where the colloid-solvent g(r) reaches THRESHOLD"""
+    for r in rows(rdf)[1:]:
+        if ge(fld(r, 2), num(threshold)):
+            return [cfmt('solvent_radius\t%.6g\t0', num(fld(r, 1)) - num(half_bin))]
+    return []
+
+
+def values(lines, names):
+    """the value (column 2) of the last row of each name, tab-joined ("" if absent)"""
+    v = {}
+    for l in lines:
+        r = l.split('\t')
+        v[fld(r, 1)] = fld(r, 2)
+    return ['\t'.join(v.get(n, '') for n in names)]
+
+
+def project(x, w):
+    """the amplitude of x along w, sum x w / sum w^2 ("nan" for w = 0; num_project)"""
+    sxw = sww = 0.0
+    for a, b in zip(x, w):
+        a, b = num(a), num(b)
+        sxw += a * b
+        sww += b * b
+    return 'nan' if eq(sww, 0) else sxw / sww
+
+
+def couette_growth(lines, ts, name, out):
+    """phan-thien-2016 fig04: the start-up of the Couette profile from the per-block profiles of
+    independent runs (rows block t pos vx, each run after its header). a(t) = sum_y v(y,t)
+    v_s(y) / sum_y v_s(y)^2, the projection on the steady profile v_s (the run-averaged profile
+    over the blocks with t >= TS); t90 the first time a reaches 0.9, linear between block times
+    from a = 0 at t = 0; its error by the jackknife over the runs (jackknife_se). Writes
+    growth_NAME.tsv and profiles_NAME.tsv (profiles nearest t = 2, 4, ..., 20 and the steady one)
+    into OUT; returns the t90_NAME row (formerly growth.awk)."""
+    ts = num(ts)
+    v, t, Y, seen = {}, {}, [], set()
+    S = nb = 0
+    for l in lines:
+        r = l.split('\t')
+        if fld(r, 1) == 'block':
+            S += 1
+            continue
+        if fld(r, 4) in ('nan', ''):
+            continue
+        b, y = int(num(fld(r, 1))), fld(r, 3)
+        v[S, b, y] = fld(r, 4)
+        t[b] = fld(r, 2)
+        if b > nb:
+            nb = b
+        if y not in seen:
+            seen.add(y)
+            Y.append(y)
+    ny = len(Y)
+    tb = lambda b: t.get(b, '')
+
+    def profile(b, ex):
+        return [mean([v.get((s, b, Y[j]), '') for s in range(1, S + 1) if s != ex]) for j in range(ny)]
+    steady, prof = [], {}
+
+    def growth(ex):
+        vs = [0.0] * ny
+        n = 0
+        for b in range(nb + 1):
+            if ge(tb(b), ts):
+                n += 1
+                m = profile(b, ex)
+                for j in range(ny):
+                    vs[j] += num(m[j])
+        vs = [div(x, float(n)) for x in vs]
+        if not ex:
+            steady[:] = vs
+        a = {}
+        for b in range(nb + 1):
+            m = profile(b, ex)
+            a[b] = project(m, vs)
+            if not ex:
+                for j in range(ny):
+                    prof[b, j] = m[j]
+        return a
+
+    def t90(a):
+        ap, tp = 0.0, 0.0
+        for b in range(nb + 1):
+            if ge(a[b], 0.9) and lt(ap, 0.9):
+                return num(tp) + (num(tb(b)) - num(tp)) * div(0.9 - num(ap), num(a[b]) - num(ap))
+            ap, tp = a[b], tb(b)
+        return -1.0
+    a = growth(0)
+    full = t90(a)
+    with open(os.path.join(out, 'growth_%s.tsv' % name), 'w') as f:
+        f.write('t\ta\n' + ''.join('%s\t%s\n' % (tb(b), astr(a[b])) for b in range(nb + 1)))
+    pick, hdr = {}, 'pos'
+    for k in range(2, 21, 2):
+        best = 0
+        for b in range(nb + 1):
+            if pw(num(tb(b)) - k, 2) < pw(num(tb(best)) - k, 2):
+                best = b
+        pick[k] = best
+        hdr += '\tt%d' % k
+    ordr = list(range(ny))
+    for i in range(ny):
+        for j in range(i + 1, ny):
+            if num(Y[ordr[j]]) + 0 < num(Y[ordr[i]]) + 0:
+                ordr[i], ordr[j] = ordr[j], ordr[i]
+    with open(os.path.join(out, 'profiles_%s.tsv' % name), 'w') as f:
+        f.write(hdr + '\tsteady\n')
+        for i in range(ny):
+            line = astr(num(Y[ordr[i]]) + 0)
+            for k in range(2, 21, 2):
+                line += '\t' + astr(prof.get((pick[k], ordr[i]), ''))
+            f.write(line + '\t' + astr(steady[ordr[i]]) + '\n')
+    se = 0.0
+    if S > 1:
+        tj = [t90(growth(s)) for s in range(1, S + 1)]
+        se = jackknife_se(tj).se
+    return [cfmt('t90_%s\t%.6g\t%.4g', name, full, se)]
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -1479,7 +1729,34 @@ COMMANDS = {
     'fig08-mach': lambda a: fig08_mach(a[0], a[1]),
     'fig08-mach-rows': lambda a: ['mach_m1_P%s\t%s\t%s' % (fld(r, 1), fld(r, 2), fld(r, 3)) for r in rows(a[0])[1:] if fld(r, 1) in ('0.1', '1.0')],
     'fig08-growths': lambda a: fig08_growths(a[0]),
+    # dt-scan SUMMARY "DTS" OUT
+    'dt-scan': lambda a: dt_scan(a[0], a[1], a[2]),
+    # thinning-row RATE A D "eta<TAB>se" "eta0<TAB>se"
+    'thinning-row': lambda a: thinning_row(*a[:5]),
+    # significance SUMMARY Q NAME
+    'significance': lambda a: significance(a[0], a[1], a[2]),
+    'relative-thinning': lambda a: relative_thinning(a[0], a[1], a[2]),
+    'within-1pct-best': lambda a: within_1pct_best(a[0], a[1], a[2]),
+    'abs-max': lambda a: abs_max(a[0], a[1]),
+    # mean-list Q "V1 V2 ..."
+    'mean-list': lambda a: mean_list(a[0], a[1].split()),
+    'fig12-row': lambda a: fig12_row(*a[:4]),
+    'slope-rows': lambda a: slope_rows(a[0], a[1]),
+    # fig07-drag P N H DRAG U ETA A: summary rows on stdout, the drag.tsv row on stderr
+    'fig07-drag': lambda a: _stderr_second(fig07_drag(*a[:7])),
+    'solvent-radius': lambda a: solvent_radius(a[0]),
+    # times A B -> a b as awk prints a number
+    'times': lambda a: [astr(num(a[0]) * num(a[1]))],
+    # values NAME... < rows: the last value of each name
+    'values': lambda a: values(sys.stdin.read().split('\n'), a),
+    # couette-growth TS NAME OUTDIR < the runs' vx_blocks rows
+    'couette-growth': lambda a: couette_growth(sys.stdin.read().split('\n')[:-1], a[0], a[1], a[2]),
 }
+
+
+def _stderr_second(pair):
+    sys.stderr.write(''.join(l + '\n' for l in pair[1]))
+    return pair[0]
 
 
 def _write2(tables, p1, p2):
