@@ -1602,6 +1602,220 @@ def couette_growth(lines, ts, name, out):
     return [cfmt('t90_%s\t%.6g\t%.4g', name, full, se)]
 
 
+# ---------------------------------------------------------------- methods/stability-map
+
+def bisect_seed_row(f, p, v, seed, a, b):
+    """methods/stability-map: a seed's row of dt-max-seeds.tsv: the geometric middle of its last
+    bracket [a, b] (nan if the bisection reached an end: b = inf or a = 0)"""
+    mid = 'nan' if b == 'inf' or eq(a, 0) else cfmt('%.6g', sqrt(num(a) * num(b)))
+    return ['\t'.join([f, p, v, seed, mid, a, b])]
+
+
+def bisect_dt_max(f, p, v, res):
+    """methods/stability-map: a family's dt_max at one parameter value over the seeds' final
+    brackets RES ("lo:hi ..."): the mean of the brackets' geometric middles (mean_se), its error
+    the seeds' scatter and the brackets' resolution (uniform_se) in quadrature, a bracket shared by
+    n_b of n seeds counted once with weight n_b / n (README "shared-bracket rule"); nan when a
+    bisection reached an end"""
+    R = res.split()
+    lo, hi, d, e, K, nb, eb = [], [], [], [], [], {}, {}
+    L = H = None
+    bad = False
+    for r in R:
+        b = r.split(':')
+        lo.append(b[0]); hi.append(b[1] if len(b) > 1 else '')
+        if hi[-1] == 'inf' or eq(lo[-1], 0):
+            bad = True
+            continue
+        d.append(sqrt(num(lo[-1]) * num(hi[-1])))
+        e.append(uniform_se(lo[-1], hi[-1]))
+        L = lo[-1] if L is None or lt(lo[-1], L) else L
+        H = hi[-1] if H is None or gt(hi[-1], H) else H
+        if r not in nb:
+            K.append(r)
+        nb[r] = nb.get(r, 0) + 1
+        eb[r] = e[-1]
+    if bad:
+        return ['%s\t%s\t%s\tnan\tnan\t%s\t%s' % (f, p, v, lo[0], hi[0])]
+    n = len(R)
+    o = mean_se(d)
+    if n > 1:
+        w = [nb[k] * eb[k] for k in K]
+        se = quad([o.se, quad(w) / n])
+    else:
+        se = e[0]
+    return [cfmt('%s\t%s\t%s\t%.5g\t%.3g\t%s\t%s', f, p, v, o.v, se, L if L is not None else '', H if H is not None else '')]
+
+
+def _family_rows(path, f, lo, hi, extra):
+    return [r for r in rows(path) if fld(r, 1) == f and ge(num(fld(r, 3)), lo) and le(num(fld(r, 3)), hi) and extra(r)]
+
+
+def dt_max_slope(path, q, f, a, b):
+    """methods/stability-map: the exponent of dt_max against the parameter over [a, b]: the
+    weighted line through (ln x, ln dt_max), the error of ln dt_max dt_max's relative error (wline)"""
+    rs = _family_rows(path, f, a, b, lambda r: fld(r, 4) != 'nan')
+    if len(rs) < 2:
+        return ['%s\tnan\tnan' % q]
+    ln = wline([log(num(fld(r, 3))) for r in rs], [log(num(fld(r, 4))) for r in rs],
+               [div(num(fld(r, 5)), num(fld(r, 4))) for r in rs])
+    return [cfmt('%s\t%.5g\t%.3g', q, ln.slope, ln.slope_se)]
+
+
+def _correction(x, q):
+    """x^q of the leading correction to scaling (sqrt, 1 / sqrt, 1 / x written out, as the fit's
+    rule states them)"""
+    if eq(q, 0.5):
+        return sqrt(x)
+    if eq(q, -0.5):
+        return div(1, sqrt(x))
+    if eq(q, -1):
+        return div(1, x)
+    return exp(num(q) * log(x))
+
+
+def dt_max_corrected(path, f, lo, hi, q, qp, qb, qc):
+    """methods/stability-map, README "The corrected exponents": ln dt_max = ln C + p ln x + beta x^q
+    by weighted least squares (weights 1 / (se / dt_max)^2; Cramer's rule on the 3 x 3 normal
+    equations), p's and beta's errors from the inverse normal matrix, chi^2 / (n - 3) beside them;
+    nan for fewer than 4 points"""
+    rs = _family_rows(path, f, lo, hi, lambda r: usable(fld(r, 4), fld(r, 5)))
+    n = len(rs)
+    if n < 4:
+        return ['%s\tnan\tnan' % qp, '%s\tnan\tnan' % qb, '%s\tnan\t0' % qc]
+    x1 = [log(num(fld(r, 3))) for r in rs]
+    x2 = [_correction(num(fld(r, 3)), q) for r in rs]
+    y = [log(num(fld(r, 4))) for r in rs]
+    w = [div(1, sq(div(num(fld(r, 5)), num(fld(r, 4))))) for r in rs]
+    S00 = S01 = S02 = S11 = S12 = S22 = b0 = b1 = b2 = 0.0
+    for i in range(n):
+        S00 += w[i]; S01 += w[i] * x1[i]; S02 += w[i] * x2[i]; S11 += w[i] * x1[i] * x1[i]; S12 += w[i] * x1[i] * x2[i]
+        S22 += w[i] * x2[i] * x2[i]
+        b0 += w[i] * y[i]; b1 += w[i] * x1[i] * y[i]; b2 += w[i] * x2[i] * y[i]
+    D = det3(S00, S01, S02, S01, S11, S12, S02, S12, S22)
+    c = div(det3(b0, S01, S02, b1, S11, S12, b2, S12, S22), D)
+    p = div(det3(S00, b0, S02, S01, b1, S12, S02, b2, S22), D)
+    be = div(det3(S00, S01, b0, S01, S11, b1, S02, S12, b2), D)
+    vp, vb = div(S00 * S22 - S02 * S02, D), div(S00 * S11 - S01 * S01, D)
+    chi2 = 0.0
+    for i in range(n):
+        chi2 += w[i] * sq(y[i] - c - p * x1[i] - be * x2[i])
+    return [cfmt('%s\t%.5g\t%.3g', qp, p, sqrt(vp)), cfmt('%s\t%.4g\t%.3g', qb, be, sqrt(vb)), cfmt('%s\t%.4g\t0', qc, chi2 / (n - 3))]
+
+
+def dt_max_paired(path, f, lo, hi, q, name):
+    """methods/stability-map, README "The paired exponents" and "The far windows": per seed, the
+    corrected form ln dt_max = ln C + p ln x + beta x^q and the pure power law fitted unweighted
+    through its dt_max over [lo, hi]; p = the mean over the seeds, stat = sqrt(sd^2 / n + res^2)
+    with res the bisection's resolution carried through each seed's fit (p = sum c_i ln dt_i,
+    res^2 = sum c_i^2 ln(hi_i / lo_i)^2 / 12) averaged over the seeds, model = |p_corrected -
+    p_pure|. Rows NAME (stat and model in quadrature), NAME_stat, NAME_pure, NAME_model,
+    NAME_resolution"""
+    seeds, X1, X2, Y, V = [], {}, {}, {}, {}
+    for r in rows(path)[1:]:
+        if fld(r, 1) == f and ge(num(fld(r, 3)), lo) and le(num(fld(r, 3)), hi) and not isnan_text(fld(r, 5)):
+            s = fld(r, 4)
+            if s not in X1:
+                seeds.append(s); X1[s], X2[s], Y[s], V[s] = [], [], [], []
+            x = num(fld(r, 3))
+            X1[s].append(log(x)); Y[s].append(log(num(fld(r, 5))))
+            V[s].append(sq(log(div(num(fld(r, 7)), num(fld(r, 6))))) / 12)
+            X2[s].append(_correction(x, q))
+    ns = len(seeds)
+    if ns < 2:
+        return ['%s\tnan\tnan' % name]
+    pc, pp = [], []
+    rc = rp = 0.0
+    for s in seeds:
+        n = len(X1[s])
+        if n < 4:
+            return ['%s\tnan\tnan' % name]
+        S00 = S01 = S02 = S11 = S12 = S22 = b0 = b1 = b2 = 0.0
+        for x1, x2, y in zip(X1[s], X2[s], Y[s]):
+            S00 += 1; S01 += x1; S02 += x2; S11 += x1 * x1; S12 += x1 * x2; S22 += x2 * x2; b0 += y; b1 += x1 * y; b2 += x2 * y
+        D = det3(S00, S01, S02, S01, S11, S12, S02, S12, S22)
+        D2 = S00 * S11 - S01 * S01
+        pc.append(div(det3(S00, b0, S02, S01, b1, S12, S02, b2, S22), D))
+        pp.append(div(S00 * b1 - S01 * b0, D2))
+        vc = vp = 0.0
+        for x1, x2, v in zip(X1[s], X2[s], V[s]):
+            vc += sq(div(det3(S00, 1, S02, S01, x1, S12, S02, x2, S22), D)) * v
+            vp += sq(div(S00 * x1 - S01, D2)) * v
+        rc += sqrt(vc) / ns
+        rp += sqrt(vp) / ns
+    c, p = mean_se(pc), mean_se(pp)
+    stc = quad([c.se, rc])
+    e2 = num(c.v) - num(p.v)
+    e2 = -e2 if e2 < 0 else e2
+    return [cfmt('%s\t%.5g\t%.3g', name, c.v, quad([stc, e2])), cfmt('%s_stat\t%.5g\t%.3g', name, c.v, stc),
+            cfmt('%s_pure\t%.5g\t%.3g', name, p.v, quad([p.se, rp])), cfmt('%s_model\t%.3g\t0', name, e2),
+            cfmt('%s_resolution\t%.3g\t0', name, rc)]
+
+
+def _last_pair(path, f, v):
+    a = ('', '')
+    for r in rows(path):
+        if fld(r, 1) == f and eq(fld(r, 3), v):
+            a = (fld(r, 4), fld(r, 5))
+    return a
+
+
+def dt_max_ratio_row(path, q, f1, v1, f2, v2):
+    """methods/stability-map: dt_max of (f1, v1) over that of (f2, v2) (v_ratio)"""
+    a, b = _last_pair(path, f1, v1), _last_pair(path, f2, v2)
+    return [q + '\t' + v_ratio(a[0], a[1], b[0], b[1]).pair('%.5g', '%.3g')]
+
+
+def gas_weight_ratio(path, g):
+    """methods/stability-map: dt_max at s = 2 over s = 0.5 (ideal gas at gamma = g; v_ratio) and
+    the ratio of the ideal gas's mean sum_j w_D, 4 pi n int_0^1 r^2 (1 - r)^s dr = 8 pi n / ((s + 1)
+    (s + 2) (s + 3)), at s = 0.5 over s = 2"""
+    out = dt_max_ratio_row(path, 'dt_max_ratio_s2_s0.5_gas_gamma' + g, 'gas_s2', g, 'gas_s0.5', g)
+    w2, w05 = 2 / (3 * 4 * 5), 2 / (1.5 * 2.5 * 3.5)
+    return out + [cfmt('sum_wD_ratio_s0.5_s2_ideal_gas\t%.5g\t0', w05 / w2)]
+
+
+def family_rows(path):
+    """methods/stability-map, what paper.md reads off the families: dt_max / m per mass (v_div),
+    dt_max sqrt(a) per repulsion (v_scale) and the local exponent ln(dt_2 / dt_1) / ln(a_2 / a_1)
+    between neighbouring a (relative errors in quadrature over ln(a_2 / a_1))"""
+    out, a, d, s = [], [], [], []
+    for r in rows(path):
+        if fld(r, 1) == 'a_gamma4.5':
+            a.append(fld(r, 3)); d.append(fld(r, 4)); s.append(fld(r, 5))
+        if fld(r, 1) == 'mass':
+            out.append('dt_max_over_m_m%s\t%s' % (fld(r, 3), v_div(fld(r, 4), fld(r, 5), fld(r, 3)).pair('%.5g', '%.3g')))
+    for i in range(len(a)):
+        out.append('dt_max_sqrt_a_a%s\t%s' % (a[i], v_scale(d[i], s[i], sqrt(num(a[i]))).pair('%.5g', '%.3g')))
+    for i in range(1, len(a)):
+        l = log(div(num(a[i]), num(a[i - 1])))
+        r = [div(num(s[i]), num(d[i])), div(num(s[i - 1]), num(d[i - 1]))]
+        out.append(cfmt('dt_max_local_exponent_a%s_%s\t%.5g\t%.3g', a[i - 1], a[i], div(log(div(num(d[i]), num(d[i - 1]))), l),
+                        div(quad(r), l)))
+    return out
+
+
+def trial_rows(path):
+    """methods/stability-map: the fraction of unstable trials that stopped with a proper message
+    (column 8, "-" for a stable trial), their count, and the count of all trials"""
+    rs = rows(path)
+    n, ok = 0, 0.0
+    for r in rs[1:]:
+        if fld(r, 8) != '-':
+            n += 1
+            ok += num(fld(r, 8))
+    return [cfmt('blowup_message_ok_fraction\t%.6g\t0', div(ok, float(n))), cfmt('unstable_trials\t%d\t0', n),
+            cfmt('trials\t%d\t0', len(rs) - 1)]
+
+
+def cpu_from_times(path):
+    """the shell's `times` (second line: the children's user and system time, XmY.YYYs) in seconds"""
+    r = rows(path)[1][0].split() if len(rows(path)) > 1 else ['', '']
+    a, b = (r[0] if r else '').split('m'), (r[1] if len(r) > 1 else '').split('m')
+    g = lambda x, i: num(x[i]) if i < len(x) else 0.0
+    return [cfmt('%.3f', g(a, 0) * 60 + g(a, 1) + g(b, 0) * 60 + g(b, 1))]
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -1751,6 +1965,29 @@ COMMANDS = {
     'values': lambda a: values(sys.stdin.read().split('\n'), a),
     # couette-growth TS NAME OUTDIR < the runs' vx_blocks rows
     'couette-growth': lambda a: couette_growth(sys.stdin.read().split('\n')[:-1], a[0], a[1], a[2]),
+    # methods/stability-map
+    'bisect-seed-row': lambda a: bisect_seed_row(*a[:6]),
+    'bisect-dt-max': lambda a: bisect_dt_max(*a[:4]),
+    # dt-max-slope DT_MAX Q FAMILY FROM TO
+    'dt-max-slope': lambda a: dt_max_slope(*a[:5]),
+    # dt-max-corrected DT_MAX FAMILY FROM TO Q NAME_EXPONENT NAME_BETA NAME_CHI2
+    'dt-max-corrected': lambda a: dt_max_corrected(*a[:8]),
+    # dt-max-paired SEEDS FAMILY FROM TO Q NAME
+    'dt-max-paired': lambda a: dt_max_paired(*a[:6]),
+    # dt-max-ratio DT_MAX Q F1 V1 F2 V2
+    'dt-max-ratio': lambda a: dt_max_ratio_row(*a[:6]),
+    'gas-weight-ratio': lambda a: gas_weight_ratio(a[0], a[1]),
+    'family-rows': lambda a: family_rows(a[0]),
+    'trial-rows': lambda a: trial_rows(a[0]),
+    'cpu-from-times': lambda a: cpu_from_times(a[0]),
+    # dt-max-rows DT_MAX: its rows as summary rows dt_max_<family>_<param><value>
+    'dt-max-rows': lambda a: ['dt_max_%s_%s%s\t%s\t%s' % (fld(r, 1), fld(r, 2), fld(r, 3), fld(r, 4), fld(r, 5)) for r in rows(a[0])[1:]],
+    # at-most X Y: exit 0 if x <= y (numbers)
+    'at-most': lambda a: 0 if le(num(a[0]), num(a[1])) else 1,
+    # quotient6 A B -> a / b (%.6g)
+    'quotient6': lambda a: [cfmt('%.6g', div(num(a[0]), num(a[1])))],
+    # times6 A B -> a b (%.6g)
+    'times6': lambda a: [cfmt('%.6g', num(a[0]) * num(a[1]))],
 }
 
 
