@@ -1816,6 +1816,65 @@ def cpu_from_times(path):
     return [cfmt('%.3f', g(a, 0) * 60 + g(a, 1) + g(b, 0) * 60 + g(b, 1))]
 
 
+def equal_error(path, estar, solvers=('scheme1', 'scheme2_paper', 'scheme2_consistent', 'pcg', 'pcg_2level')):
+    """phan-thien-2016 fig02-equal-error: each solver's iterations and CPU per step at the true
+    relative error E*, interpolated linearly in log E between the two rungs of its tolerance ladder
+    that bracket log E* most tightly (or the two nearest when E* lies outside: extrapolated), errors
+    by v_lin2; then the ratios of issue 3 (v_ratio) and whether the two-level PCG is the best"""
+    n, lg, it, its, cs, css = {}, {}, {}, {}, {}, {}
+    for r in rows(path)[1:]:
+        s = fld(r, 1)
+        n[s] = n.get(s, 0) + 1
+        k = n[s]
+        lg[s, k] = log(num(fld(r, 5)))
+        it[s, k], its[s, k], cs[s, k], css[s, k] = fld(r, 3), fld(r, 4), fld(r, 6), fld(r, 7)
+    lE = log(num(estar))
+    extrap = {}
+    L = lambda s, k: lg.get((s, k), 0.0)
+
+    def interp(s, a, as_):
+        i1 = i2 = 0
+        m = n.get(s, 0)
+        for k in range(1, m + 1):
+            for j in range(1, m + 1):
+                if k != j and ge(L(s, k), lE) and le(L(s, j), lE) and (i1 == 0 or lt(L(s, k) - L(s, j), L(s, i1) - L(s, i2))):
+                    i1, i2 = k, j
+        if i1 == 0:
+            extrap[s] = 1
+            i1, i2 = 1, 2
+            for k in range(1, m + 1):
+                if pw(L(s, k) - lE, 2) < pw(L(s, i1) - lE, 2):
+                    i1 = k
+            for k in range(1, m + 1):
+                if k != i1 and (i2 == i1 or pw(L(s, k) - lE, 2) < pw(L(s, i2) - lE, 2)):
+                    i2 = k
+        w = 0.5 if eq(L(s, i1), L(s, i2)) else div(lE - L(s, i2), L(s, i1) - L(s, i2))
+        return v_lin2(w, a.get((s, i1), ''), as_.get((s, i1), ''), 1 - w, a.get((s, i2), ''), as_.get((s, i2), ''))
+    out, I, C = [], {}, {}
+    bi = bt = ''
+    for s in solvers:
+        I[s] = interp(s, it, its)
+        C[s] = interp(s, cs, css)
+        out.append(cfmt('iterations_at_Estar_%s\t%.6g\t%.4g', s, I[s].v, I[s].se))
+        out.append(cfmt('cpu_seconds_at_Estar_%s\t%.6g\t%.4g', s, C[s].v, C[s].se))
+        if extrap.get(s):
+            out.append('extrapolated_%s\t1\t0' % s)
+        if bi == '' or lt(I[s].v, I[bi].v):
+            bi = s
+        if bt == '' or lt(C[s].v, C[bt].v):
+            bt = s
+
+    def ratio(q, v, a, b):
+        out.append(q + '\t' + v_ratio(v[a].v, v[a].se, v[b].v, v[b].se).pair('%.6g', '%.4g'))
+    ratio('iteration_ratio_scheme2_best', I, 'scheme2_paper', bi)
+    ratio('time_ratio_scheme1_best', C, 'scheme1', bt)
+    ratio('iteration_ratio_scheme1_scheme2', I, 'scheme1', 'scheme2_paper')
+    ratio('cpu_ratio_scheme1_scheme2_at_Estar', C, 'scheme1', 'scheme2_paper')
+    out.append('best_iterations_is_pcg_2level\t%d\t0' % (bi == 'pcg_2level'))
+    out.append('best_time_is_pcg_2level\t%d\t0' % (bt == 'pcg_2level'))
+    return out
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -1980,6 +2039,8 @@ COMMANDS = {
     'family-rows': lambda a: family_rows(a[0]),
     'trial-rows': lambda a: trial_rows(a[0]),
     'cpu-from-times': lambda a: cpu_from_times(a[0]),
+    # equal-error LADDER ESTAR
+    'equal-error': lambda a: equal_error(a[0], a[1]),
     # dt-max-rows DT_MAX: its rows as summary rows dt_max_<family>_<param><value>
     'dt-max-rows': lambda a: ['dt_max_%s_%s%s\t%s\t%s' % (fld(r, 1), fld(r, 2), fld(r, 3), fld(r, 4), fld(r, 5)) for r in rows(a[0])[1:]],
     # at-most X Y: exit 0 if x <= y (numbers)
