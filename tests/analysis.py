@@ -257,6 +257,82 @@ grid = 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(
 r = A.density_fields(tsv('map2.tsv', grid), '4', '2', '2', '0', '4')[0].split('\t')
 close('density_fields: mean |div u| by periodic central differences', r[1], 0.75, 1e-12)
 
+# ---- more reductions with closed-form answers
+close('project: the amplitude of x along w', A.project(['2', '4', '6'], ['1', '2', '3']), 2.0)
+same('project: w = 0 gives nan', A.project(['1'], ['0']), 'nan')
+o = A.v_relerr(10.0, [0.03, 0.04])
+close('v_relerr: relative errors in quadrature', o.se, 0.5)
+r = A.bisect_dt_max('f', 'p', '1', ' 1:4 1:4')[0].split('\t')
+close('bisect_dt_max: geometric middle of the bracket', r[3], 2.0)
+close('bisect_dt_max: a bracket shared by every seed counts once (width / sqrt 12)', r[4], 3 / math.sqrt(12), 1e-3)
+r = A.bisect_dt_max('f', 'p', '1', ' 1:4 4:16')[0].split('\t')
+close('bisect_dt_max: mean over the seeds', r[3], 5.0)
+close('bisect_dt_max: scatter and the brackets\' resolution in quadrature', r[4],
+      math.sqrt(9 + (math.sqrt(9 + 144) / math.sqrt(12) / 2) ** 2), 1e-3)
+same('bisect_dt_max: a bracket at the end of the range gives nan', A.bisect_dt_max('f', 'p', '1', ' 1:inf 1:4')[0], 'f\tp\t1\tnan\tnan\t1\tinf')
+# dt_max = C x^p (1 + beta x^q) to first order: ln dt = ln C + p ln x + beta x^q exactly, equal relative errors
+xs = [1e4, 2e4, 3e4, 5e4, 7e4, 1e5]
+dm = tsv('dtmax.tsv', 'family\tparameter\tvalue\tdt_max\tdt_max_se\n' + ''.join(
+    'a\ta\t%g\t%.17g\t%.17g\n' % (x, math.exp(0.3 - 0.5 * math.log(x) + 2 * x ** -0.5), 0.01 * math.exp(0.3 - 0.5 * math.log(x) + 2 * x ** -0.5)) for x in xs))
+r = A.dt_max_corrected(dm, 'a', '1e4', '1e5', '-0.5', 'p', 'b', 'c')
+close('dt_max_corrected: the exponent p of an exact corrected law', r[0].split('\t')[1], -0.5, 1e-4)
+close('dt_max_corrected: the correction beta', r[1].split('\t')[1], 2.0, 1e-3)
+close('dt_max_slope: a pure power law\'s exponent', A.dt_max_slope(tsv('pl.tsv', ''.join('a\ta\t%g\t%.17g\t0.001\n' % (x, 3 * x ** -0.5) for x in xs)),
+                                                                      'q', 'a', '1', '1e9')[0].split('\t')[1], -0.5, 1e-4)
+# paired: two seeds, each an exact corrected law with its own offset, brackets of one width
+seeds = tsv('seeds.tsv', 'family\tparameter\tvalue\tseed\tdt_max\tdt_stable\tdt_unstable\n' + ''.join(
+    'a\ta\t%g\t%d\t%.17g\t%.17g\t%.17g\n' % (x, sd, math.exp(c - 0.5 * math.log(x) + x ** -0.5), 0.99 * math.exp(c - 0.5 * math.log(x) + x ** -0.5),
+                                             1.01 * math.exp(c - 0.5 * math.log(x) + x ** -0.5)) for sd, c in ((1, 0.1), (2, 0.4)) for x in xs))
+r = A.dt_max_paired(seeds, 'a', '1e4', '1e5', '-0.5', 'p')
+close('dt_max_paired: the mean exponent over the seeds (offsets cancel)', r[0].split('\t')[1], -0.5, 1e-4)
+check('dt_max_paired: five rows (total, stat, pure, model, resolution)', len(r) == 5 and r[4].startswith('p_resolution'), r)
+# start-up: every run's profile is A(t) y with A = 0.5, 0.8, 1, 1 at t = 1 ... 4; steady over t >= 3
+blk = ''.join('block\tt\tpos\tvx\n' + ''.join('%d\t%d\t%g\t%.17g\n' % (b, b + 1, y, A_ * y) for b, A_ in enumerate((0.5, 0.8, 1.0, 1.0))
+                                              for y in (0.5, 1.5)) for _ in range(3))
+gd = tempfile.mkdtemp(prefix='dpd-growth-', dir=tmp)
+r = A.couette_growth(blk.split('\n')[:-1], '3', 'x', gd)[0].split('\t')
+close('couette_growth: t90 linear between block times', r[1], 2.5, 1e-12)
+close('couette_growth: identical runs, zero jackknife error', r[2], 0.0)
+same('couette_growth: a(t) written per block', open(os.path.join(gd, 'growth_x.tsv')).read(), 't\ta\n1\t0.5\n2\t0.8\n3\t1\n4\t1\n')
+# equal error: iterations = -10 ln E, CPU = 2 x iterations, E* = 1e-3 between 1e-2 and 1e-4
+lad = tsv('ee.tsv', 'solver\ttolerance\titerations\titerations_se\ttrue_error\tcpu_seconds\tcpu_seconds_se\n' + ''.join(
+    '%s\tt\t%.17g\t0\t%g\t%.17g\t0\n' % (s, -f * 10 * math.log(e), e, -f * 20 * math.log(e)) for s, f in
+    (('scheme1', 1), ('scheme2_paper', 2), ('scheme2_consistent', 1), ('pcg', 1), ('pcg_2level', 0.5)) for e in (1e-2, 1e-4, 1e-6)))
+r = dict(l.split('\t', 1) for l in A.equal_error(lad, '1e-3'))
+close('equal_error: iterations interpolated in log E', r['iterations_at_Estar_scheme1'].split('\t')[0], -10 * math.log(1e-3), 1e-5)
+same('equal_error: the best solver', r['best_iterations_is_pcg_2level'], '1\t0')
+close('equal_error: the ratio to the best', r['iteration_ratio_scheme2_best'].split('\t')[0], 4.0, 1e-5)
+
+blk = ''.join('block\tt\tpos\tvx\n' + ''.join('%d\t%d\t%g\t%.17g\n' % (b, b + 1, y, A_ * y) for b, A_ in enumerate((0.5, 0.6, 0.7, 1.0))
+                                              for y in (0.5, 1.5)) for _ in range(2))
+close('couette_growth: t90 between the last two blocks (%.6g)',
+      A.couette_growth(blk.split('\n')[:-1], '4', 'y', gd)[0].split('\t')[1], 3 + (0.9 - 0.7) / 0.3, 1e-6)
+r = dict(l.split('\t', 1) for l in A.equal_error(lad, '3e-3'))
+close('equal_error: interpolated off the midpoint in log E', r['iterations_at_Estar_scheme1'].split('\t')[0], -10 * math.log(3e-3), 1e-5)
+
+
+def inverse3(m):
+    """Gauss-Jordan inverse of a 3 x 3 matrix (an independent route to the fit's coefficients)"""
+    a = [list(row) + [1.0 if i == j else 0.0 for j in range(3)] for i, row in enumerate(m)]
+    for c in range(3):
+        piv = max(range(c, 3), key=lambda r: abs(a[r][c]))
+        a[c], a[piv] = a[piv], a[c]
+        f = a[c][c]
+        a[c] = [x / f for x in a[c]]
+        for r in range(3):
+            if r != c:
+                g = a[r][c]
+                a[r] = [x - g * y for x, y in zip(a[r], a[c])]
+    return [row[3:] for row in a]
+
+
+rows_ = [(1.0, math.log(x), x ** -0.5) for x in xs]
+M = [[sum(r[i] * r[j] for r in rows_) for j in range(3)] for i in range(3)]
+res = math.sqrt(inverse3(M)[1][1]) * math.log(1.01 / 0.99) / math.sqrt(12)
+r = A.dt_max_paired(seeds, 'a', '1e4', '1e5', '-0.5', 'p')
+close('dt_max_paired: the resolution sqrt(sum c_i^2 ln(hi/lo)^2 / 12), c_i = (X^T X)^-1 X^T row of p', r[4].split('\t')[1],
+      float('%.3g' % res), 1e-12)
+
 shutil.rmtree(tmp)
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(1 if failed else 0)
