@@ -5,6 +5,8 @@ set -euo pipefail
 # the statistics (means, errors, fits, propagation) are num_* functions of one tested
 # library, tools/lib/numerics.awk, called through num_awk
 . "$DPD_ROOT/tools/lib/numerics.sh"
+# the analysis layer (tools/analysis.py, issue 40): "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
+ANALYSE=$DPD_ROOT/tools/analyse
 mkdir -p "$OUT/runs"
 [ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
 
