@@ -333,6 +333,17 @@ r = A.dt_max_paired(seeds, 'a', '1e4', '1e5', '-0.5', 'p')
 close('dt_max_paired: the resolution sqrt(sum c_i^2 ln(hi/lo)^2 / 12), c_i = (X^T X)^-1 X^T row of p', r[4].split('\t')[1],
       float('%.3g' % res), 1e-12)
 
+# ---- the command line a run.sh calls (tools/analyse)
+cli = os.path.join(HERE, '..', 'tools', 'analyse')
+if 'ANALYSIS_PY' not in os.environ:
+    p = subprocess.run([cli, 'diff', '5\t0.3', '2\t0.4'], capture_output=True, text=True)
+    same('tools/analyse diff: a TSV row on stdout, exit 0', (p.stdout, p.returncode), ('3\t0.5\n', 0))
+    p = subprocess.run([cli, 'no-such-subcommand'], capture_output=True, text=True)
+    check('tools/analyse: an unknown subcommand exits 2 naming the subcommands, nothing on stdout',
+          p.returncode == 2 and 'usage' in p.stderr and p.stdout == '', (p.returncode, p.stderr[:60]))
+    p = subprocess.run([cli, 'lookup', os.path.join(tmp, 'no-such.tsv'), 'q'], capture_output=True, text=True)
+    check('tools/analyse: a missing file exits 1 naming it', p.returncode == 1 and 'no-such.tsv' in p.stderr, (p.returncode, p.stderr))
+
 shutil.rmtree(tmp)
 print('%d passed, %d failed' % (passed, failed))
 sys.exit(1 if failed else 0)

@@ -82,10 +82,10 @@ fit() {
         > "$OUT/runs/$1/tcaf_fit_$2.out"
 }
 # fq NAME MODEL QUANTITY -> "value<TAB>stderr" of a fit
-fq() { "$ANALYSE" lookup "$OUT/runs/$1/tcaf_fit_$2.out" "$3" tab02-readings; }
+fq() { tsv_lookup "$OUT/runs/$1/tcaf_fit_$2.out" "$3" tab02-readings; }
 # put QUANTITY "value<TAB>stderr"
 put() { printf '%s\t%s\n' "$1" "$2" >> "$OUT/summary.tsv"; }
-val() { "$ANALYSE" lookup "$OUT/summary.tsv" "$1"; }
+val() { tsv_lookup "$OUT/summary.tsv" "$1"; }
 # arithmetic on "value<TAB>stderr" pairs, first-order errors of independent operands:
 # pm OP X Y (OP: minus, over) and scale X FACTOR
 pm() { if [ "$1" = minus ]; then "$ANALYSE" diff "$2" "$3"; else "$ANALYSE" ratio "$2" "$3"; fi; }
@@ -117,6 +117,8 @@ for A in $AS; do
         # total density: the particles' and the bodies' (each of mass 6 m, the p = 6 constituents',
         # src/bodies/colloid.c default)
         rho_tot=$("$ANALYSE" rho-total "$rho" "$(get $cr colloids | cut -f1)" "$L")
+        # the density factors of readings (d) and (c)'s total density: 4 / rho and rho_tot / rho
+        f_s=$("$ANALYSE" quotient 4 "$rho") f_t=$("$ANALYSE" quotient "$rho_tot" "$rho")
         for m in two-mode integral; do fit $fr $m "$rho" "$L"; fit $cr $m "$rho" "$L"; done
         # the estimators' eta(k -> 0) (exp: the run's own fit, errors from blocks) and the suspension's
         for sys in free constrained; do
@@ -131,7 +133,7 @@ for A in $AS; do
         put free_two_mode_minus_exp_a${A}_$tag "$(pm minus "$(fq $fr two-mode eta_k0)" "$(get $fr tcaf_eta_k0)")"
         put constrained_integral_over_susp_a${A}_$tag "$(pm over "$ci" "$(get susp_a${A}_$tag viscosity)")"
         put constrained_slow_mode_total_density_minus_integral_a${A}_$tag \
-            "$(pm minus "$(scale "$c2" "$("$ANALYSE" quotient "$rho_tot" "$rho")")" "$ci")"
+            "$(pm minus "$(scale "$c2" "$f_t")" "$ci")"
         put rho_particles_a${A}_$tag "$rho	0"
         put rho_total_a${A}_$tag "$rho_tot	0"
         # the free curve: today's fit, continued by the high-k run (paper)
@@ -141,7 +143,7 @@ for A in $AS; do
         # the readings' eta_eff
         put reading_a_eta_eff_a${A}_$tag "$ci"
         put reading_c_eta_eff_a${A}_$tag "$c2"
-        put reading_d_eta_eff_a${A}_$tag "$(scale "$ci" "$("$ANALYSE" quotient 4 "$rho")")"
+        put reading_d_eta_eff_a${A}_$tag "$(scale "$ci" "$f_s")"
         # (e): r = eta_c / eta_f (integral), k_eff where eta_free(k) / eta_free(k -> 0) = r, the solvent there
         ratio=$(pm over "$ci" "$fi_")
         put reading_e_ratio_a${A}_$tag "$ratio"
@@ -190,7 +192,7 @@ for A in $AS; do
             put reading_${rd}_eta_r_a${A}_$tag "$(pm over "$(get susp_a${A}_$tag viscosity)" "$v")"
         done
         # the grid of the open choices (analysis.py tcaf_grid): k_eff and eta_eff of every combination
-        "$ANALYSE" grid "$A" "$tag" 1 "$("$ANALYSE" quotient 4 "$rho")" "$("$ANALYSE" quotient "$rho_tot" "$rho")" \
+        "$ANALYSE" grid "$A" "$tag" 1 "$f_s" "$f_t" \
             "$(get $cr tcaf_eta_k0)" "$c2" "$ci" "$(get $fr tcaf_eta_k0)" "$(fq $fr two-mode eta_k0)" "$fi_" \
             "$fc" "$sc" >> "$OUT/grid_rows.tsv"
         i=$((i + 1))
