@@ -226,6 +226,10 @@ lad = tsv('ladder.tsv', 'fluid\tlambda\tdt\tT\tT_se\n'
                         'md\t0.5\t0.01\t1.2\t0.001\n')
 same('dt_within_1pct: the last rung within 1 % before the first outside, its uniform error',
      A.dt_within_1pct(lad), ['dt_T1pct_gw_l0.5\t0.02\t%s' % A.cfmt('%.3g', 0.02 / math.sqrt(12)), 'dt_T1pct_md_l0.5\t0\t%s' % A.cfmt('%.3g', 0.01 / math.sqrt(12))])
+lad_nan = tsv('ladder_nan.tsv', 'fluid\tlambda\tdt\tT\tT_se\n'
+                                'gw\t0.5\t0.01\t1.001\t0.001\ngw\t0.5\t0.02\tnan\tnan\ngw\t0.5\t0.03\t1.001\tnan\n')
+same('dt_within_1pct: an unstable rung (T and stderr nan) ends the ladder, not counted within 1 %',
+     A.dt_within_1pct(lad_nan), ['dt_T1pct_gw_l0.5\t0.01\t%s' % A.cfmt('%.3g', 0.01 / math.sqrt(12))])
 same('largest_sigmas: the largest |value| / stderr and the count',
      A.largest_sigmas(tsv('s.tsv', 'quantity\tvalue\tstderr\nd_a1\t-3\t1\nd_a2\t1\t0\nd_a3\t2\t0.5\nother\t100\t1\n'), 'd'),
      ['largest_sigmas_d\t4\t0', 'largest_sigmas_d_cases\t2\t0'])

@@ -772,6 +772,9 @@ def readings_grid_decision(paper2, summary, grid_rows, grid_out):
         lo, hi = 0.9 * num(p), 1.1 * num(p)
         if isnan_text(v):
             return 'fail'
+        if isnan_text(se):
+            # no error, no decision (the awk this replaced passed it: mawk's NaN compares equal)
+            return 'unresolved'
         v, se = num(v), num(se)
         if ge(v - 2 * se, lo) and le(v + 2 * se, hi):
             return 'pass'
@@ -1147,7 +1150,7 @@ def dt_within_1pct(path):
     """methods/speed-accuracy: per fluid and lambda, the largest dt of the temperature ladder
     (rows in increasing dt) with |T - 1| <= 0.01 + 2 stderr before the first rung that is not,
     and its error as a value uniform between it and that next rung (uniform_se; nan if none).
-    As the awk it replaces, a comparison with a nan stderr holds (mawk: NaN compares equal)."""
+    A rung with a nan temperature or stderr (unstable) ends the ladder."""
     best, nxt, bad, K = {}, {}, {}, []
     for r in rows(path)[1:]:
         k = fld(r, 1) + '_l' + fld(r, 2)
@@ -1156,7 +1159,10 @@ def dt_within_1pct(path):
         if k not in best:
             best[k], nxt[k], bad[k] = 0.0, 'inf', 0
             K.append(k)
-        if le(d, 0.01 + 2 * num(fld(r, 5))) and not bad[k]:
+        # a rung whose T or stderr is nan (unstable) is not within 1 % (the awk this replaced
+        # counted it so: mawk's NaN compares equal)
+        within = not isnan_text(fld(r, 4)) and not isnan_text(fld(r, 5)) and le(d, 0.01 + 2 * num(fld(r, 5)))
+        if within and not bad[k]:
             best[k] = fld(r, 3)
         elif not bad[k]:
             bad[k], nxt[k] = 1, fld(r, 3)
