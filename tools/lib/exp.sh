@@ -5,6 +5,19 @@ set -euo pipefail
 # the statistics (means, errors, fits, propagation) are num_* functions of one tested
 # library, tools/lib/numerics.awk, called through num_awk
 . "$DPD_ROOT/tools/lib/numerics.sh"
+# the analysis layer (tools/analysis.py, issue 40): "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
+ANALYSE=$DPD_ROOT/tools/analyse
+# tsv_lookup FILE Q [WHO] -> "value<TAB>stderr" of the first row named Q, exit 1 (saying so as WHO)
+# if none: selection only, in bash without a process, for the lookups an analysis makes in its loops
+tsv_lookup() {
+    local k v s _
+    while IFS=$'\t' read -r k v s _ || [ -n "$k" ]; do
+        [ "$k" = "$2" ] && { printf '%s\t%s\n' "$v" "$s"; return 0; }
+        k=
+    done < "$1"
+    [ -z "${3:-}" ] || echo "$3: no $2 in $1" >&2
+    return 1
+}
 mkdir -p "$OUT/runs"
 [ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
 

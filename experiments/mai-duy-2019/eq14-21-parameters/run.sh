@@ -15,7 +15,7 @@ for eta in $(seq 10 0.5 33.5); do
     for dim in 3 2; do
         # s <= 0 (beyond the bound of eq. 16 / 20): dpd params exits 2, plotted as a gap
         if out=$("$DPD" params --dim $dim --eta $eta --Sc 500 --n 4 --rc 1.5 2>/dev/null); then
-            vals=$(printf '%s\n' "$out" | awk -F'\t' -v d=$dim '$1=="s_"d"d"{s=$2} $1=="gamma_"d"d"{g=$2} END{print s "\t" g}')
+            vals=$(printf '%s\n' "$out" | "$ANALYSE" values s_${dim}d gamma_${dim}d)
         else
             vals=$'nan\tnan'
         fi

@@ -19,7 +19,7 @@ dpd_run constrained_bodies constrained.cfg "${tier[@]}" --set "types.[1].count=$
 }
 analysis() {
 np=$(get free particles | cut -f1)
-awk -v c="$count" -v n="$np" 'BEGIN { printf "phi\t%.10g\t0\n", c / n }' >> "$OUT/summary.tsv"
+emit phi "$("$ANALYSE" fraction "$count" "$np")" 0
 L=15; [ "$TIER" = quick ] && L=8          # the box's side (the scenes' 15, the quick tier's 8)
 # the constrained eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the
 # two-mode slow mode (second estimator) and eq. 28's amplitude-1 fit (the paper's literal, *_exp)
@@ -39,8 +39,7 @@ emit_from constrained temperature temperature_constrained
 # constrained eta(k -> 0); errors of the three values (independent) propagated to first order
 for est in "" _exp; do
     ec=$(get . eta_k0_constrained$est)
-    num_awk -F'\t' -v tag=x -v ec="${ec%	*}" -v se="${ec#*	}" -f ../tab02-effective-viscosity/keff.awk "$OUT/runs/free/tcaf_eta.tsv" |
-        awk -F'\t' -v e="$est" '$1 ~ /^(k|lambda)_eff_x$/ { sub(/_x$/, e, $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+    "$ANALYSE" keff-rows "$OUT/runs/free/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "$est" >> "$OUT/summary.tsv"
 done
 for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done
 }

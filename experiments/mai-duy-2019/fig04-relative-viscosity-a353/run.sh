@@ -86,21 +86,18 @@ rdfs=""
 for r in 0 1 2 3 4; do
     name=$(rdf_name $r)
     "$DPD" fit-line "$OUT/runs/$name/rdf.tsv" --x r --y g --se g_se --range 0.1:0.6 |
-        awk -F'\t' '{ v[$1] = $2 } END { printf "%.10g\n", 0.35 + (0.5 - v["value_at_centre"]) / v["slope"] }' > "$OUT/runs/$name/r_half"
+        "$ANALYSE" r-half > "$OUT/runs/$name/r_half"
     rdfs="$rdfs $(cat "$OUT/runs/$name/r_half")"
 done
 cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
-num_awk -v v="$rdfs" -v d=0.5 'BEGIN { n = split(v, x, " "); m = num_mean_se(x, n, o); e = o["se"]
-    printf "colloid_rdf_r_half\t%.6g\t%.3g\ncolloid_radius_rdf\t%.6g\t%.3g\n", m, e, d + m, e }' >> "$OUT/summary.tsv"
+"$ANALYSE" colloid-radius "$rdfs" 0.5 >> "$OUT/summary.tsv"
 # the shear rate of the paper's Pe = 0.18 (paper.md): Pe = rate a^2 / D0, D0 = kBT / (6 pi eta_solvent a)
-num_awk -F'\t' '{ v[$1] = $2; s[$1] = $3 } END { e = v["eta_solvent"]; a = v["colloid_radius_rdf"]
-    num_rel2(0.18 / (6 * 3.14159265358979 * e * a * a * a), e, s["eta_solvent"], a, 3 * s["colloid_radius_rdf"], o)
-    print num_row("shear_rate_at_paper_pe", o) }' "$OUT/summary.tsv" > "$OUT/.rows"; cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+"$ANALYSE" shear-rate-at-pe "$OUT/summary.tsv" 0.18 > "$OUT/.rows"; cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 for pair in $PAIRS; do
     lattice_pair "$pair" 2
     np=$(get susp_$tag particles | cut -f1)
-    awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
+    "$ANALYSE" phi-row "$tag" "$count" "$np" >> "$OUT/summary.tsv"
     emit_from susp_$tag viscosity eta_susp_$tag
     emit_from susp_$tag temperature temperature_$tag
     emit_from susp_$tag colloid_spring_extension_rms spring_extension_rms_$tag
@@ -116,35 +113,23 @@ for pair in $PAIRS; do
         emit_ratio eta_r_tcaf_$tag susp_$tag viscosity . eta_eff_$tag
         emit_ratio eta_r_tcaf_two_mode_$tag susp_$tag viscosity . eta_eff_two_mode_$tag
         emit_ratio eta_r_tcaf_exp_$tag susp_$tag viscosity constrained_$tag tcaf_eta_k0
-        lc=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", L / k }')                          # eq. 31
-        ls=$(awk -v L="$L" -v k="$kq" 'BEGIN { printf "%.10g", (3 / (4 * 3.14159265358979 * k^3 / L^3))^(1/3) }')  # eq. 32
+        lc=$("$ANALYSE" lambda-cube "$L" "$kq")      # eq. 31
+        ls=$("$ANALYSE" lambda-sphere "$L" "$kq")    # eq. 32
         # eta(k) at the cube and sphere k (the high-k runs), free system and solvent alone in the same box
         emit_from freehk_$tag temperature temperature_freehk_$tag
         for sys in free solvent; do
-            num_awk -F'\t' -v lambda="$lc" -v name="eta_${sys}_cube_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
-            num_awk -F'\t' -v lambda="$ls" -v name="eta_${sys}_sphere_$tag" -f "$T02/etak.awk" "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+            "$ANALYSE" etak "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" "$lc" "eta_${sys}_cube_$tag" >> "$OUT/summary.tsv"
+            "$ANALYSE" etak "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" "$ls" "eta_${sys}_sphere_$tag" >> "$OUT/summary.tsv"
             cp "$OUT/runs/${sys}hk_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_${sys}hk_$tag.tsv"
         done
         printf 'lambda_cube_%s\t%s\t0\nlambda_sphere_%s\t%s\t0\n' "$tag" "$lc" "$tag" "$ls" >> "$OUT/summary.tsv"
         # ratios and the TCAF - original difference (errors of the shared eta_susp counted once)
-        num_awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 }
-            function r(name, den) { if (!(den in v) || v[den] == "nan") { printf "%s\tnan\tnan\n", name; return }
-                num_ratio(v["eta_susp_" t], s["eta_susp_" t], v[den], s[den], o); print num_row(name, o) }
-            END { r("eta_r_cube_" t, "eta_free_cube_" t); r("eta_r_sphere_" t, "eta_free_sphere_" t)
-                  r("eta_r_cube_solvent_" t, "eta_solvent_cube_" t); r("eta_r_sphere_solvent_" t, "eta_solvent_sphere_" t)
-                  es = v["eta_susp_" t]; a = v["eta_eff_" t]; b = v["eta_solvent"]
-                  d = es / a - es / b
-                  q[1] = s["eta_susp_" t] * (1 / a - 1 / b); q[2] = es * s["eta_eff_" t] / num_sq(a); q[3] = es * s["eta_solvent"] / num_sq(b)
-                  printf "eta_r_tcaf_minus_original_%s\t%.10g\t%.4g\n", t, d, num_quad(q, 3) }' "$OUT/summary.tsv" > "$OUT/.rows"
+        "$ANALYSE" fig04-ratios "$OUT/summary.tsv" "$tag" > "$OUT/.rows"
         cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
         cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
         cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
     fi
-    awk -F'\t' -v t="$tag" '{ v[$1] = $2 "\t" $3 }
-        function g(q) { return (q in v) ? v[q] : "nan\tnan" }
-        END { split(v["phi_" t], p, "\t"); printf "%.6f\t%s\t%s\t%s\t%s\t%s\t%s\n", p[1], g("eta_r_original_" t), g("eta_r_tcaf_" t),
-                  g("eta_r_cube_" t), g("eta_r_sphere_" t), g("eta_r_cube_solvent_" t), g("eta_r_sphere_solvent_" t) }' \
-        "$OUT/summary.tsv" >> "$OUT/eta_r.tsv"
+    "$ANALYSE" fig04-eta-r-row "$OUT/summary.tsv" "$tag" >> "$OUT/eta_r.tsv"
 done
 }
 experiment

@@ -34,7 +34,7 @@ for dt in $DTS; do
         T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(get dt$dt cpu_seconds | cut -f1)
         printf '%s\t%s\t%s\t%s\n' "$dt" "$T" "$eta" "$cpu" >> "$OUT/dt-scan.tsv"
         # largest dt of the scan whose temperature is within 1 % of kBT = 1 (3 stderr allowed)
-        best=$(printf '%s\n' "$T" | awk -F'\t' -v d=$dt -v b=$best '{x=$1-1; if (x<0) x=-x; print (x <= 0.01 + 3*$2 && d > b) ? d : b}')
+        best=$("$ANALYSE" within-1pct-best "$T" $dt $best)
     else
         echo "dt = $dt: unstable (dpd exited non-zero); recorded as a gap" >&2
         printf '%s\tnan\tnan\tnan\tnan\tnan\n' "$dt" >> "$OUT/dt-scan.tsv"

@@ -3,8 +3,8 @@
 # scales for the 11 volume fractions (k^3 octahedra of 6 particles among 13500
 # solvent particles in 15^3), computed by `dpd wavelengths` (every tier), and the
 # TCAF length scale (section 4.2.3): the free system's lambda = 2 pi / k at which
-# its eta(k) equals the constrained system's eta(k -> 0) (keff.awk of
-# tab02-effective-viscosity, error propagated), at the phi of the tier.
+# its eta(k) equals the constrained system's eta(k -> 0) (keff of
+# tools/analysis.py, error propagated), at the phi of the tier.
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs reduced mai-duy-2019/fig04-relative-viscosity-a353@reduced
 T02=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/../tab02-effective-viscosity
@@ -44,8 +44,7 @@ for pair in $PAIRS; do
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 . eta_k0_constrained_$tag
     for est in "" exp_; do
         ec=$(get . eta_k0_constrained_$est$tag)
-        num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$est$tag" -f "$T02/keff.awk" "$OUT/runs/free_$tag/tcaf_eta.tsv" |
-            awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+        "$ANALYSE" keff-lambda "$OUT/runs/free_$tag/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "$est$tag" >> "$OUT/summary.tsv"
     done
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
@@ -55,16 +54,13 @@ done
 F04=; [ "$TIER" = reduced ] && F04=$(upstream_if mai-duy-2019/fig04-relative-viscosity-a353@reduced)
 if [ -n "$F04" ] && [ -f "$F04/tcaf_eta_free_phi0.49.tsv" ]; then
     tag=phi0.4940
-    awk -F'\t' -v t="$tag" '$1 == "eta_k0_free_phi0.49" { print "eta_k0_free_" t "\t" $2 "\t" $3 }
-        $1 == "eta_eff_phi0.49" { print "eta_k0_constrained_" t "\t" $2 "\t" $3 }
-        $1 == "eta_eff_exp_phi0.49" { print "eta_k0_constrained_exp_" t "\t" $2 "\t" $3 }' "$F04/summary.tsv" >> "$OUT/summary.tsv"
-    num_awk -F'\t' -v t="$tag" '{ v[$1] = $2; s[$1] = $3 } END { a = "eta_k0_free_" t; b = "eta_k0_constrained_" t
-        num_diff(v[a], s[a], v[b], s[b], o); print num_row("eta_k0_free_minus_constrained_" t, o) }' "$OUT/summary.tsv" > "$OUT/.rows"
+    "$ANALYSE" rename "$F04/summary.tsv" eta_k0_free_phi0.49 eta_k0_free_$tag eta_eff_phi0.49 eta_k0_constrained_$tag \
+        eta_eff_exp_phi0.49 eta_k0_constrained_exp_$tag >> "$OUT/summary.tsv"
+    "$ANALYSE" summary-diff "$OUT/summary.tsv" eta_k0_free_$tag eta_k0_constrained_$tag eta_k0_free_minus_constrained_$tag > "$OUT/.rows"
     cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
     for est in "" exp_; do
         ec=$(get . eta_k0_constrained_$est$tag)
-        num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$est$tag" -f "$T02/keff.awk" "$F04/tcaf_eta_free_phi0.49.tsv" |
-            awk -F'\t' '$1 ~ /^lambda_eff_/ { sub(/^lambda_eff_/, "lambda_tcaf_", $1); print $1 "\t" $2 "\t" $3 }' >> "$OUT/summary.tsv"
+        "$ANALYSE" keff-lambda "$F04/tcaf_eta_free_phi0.49.tsv" "${ec%	*}" "${ec#*	}" "$est$tag" >> "$OUT/summary.tsv"
     done
     cp "$F04/tcaf_eta_free_phi0.49.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$F04/tcaf_eta_constrained_phi0.49.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
@@ -74,27 +70,10 @@ fi
 # particles for k = 3 ... 13, 8000 production steps each (the scenes' 40 time units at dt = 0.005)
 if [ "$TIER" = reduced ]; then
     c=$(get free_phi0.1854 cpu_seconds | cut -f1) np=$(get free_phi0.1854 particles | cut -f1) ns=$(get free_phi0.1854 steps | cut -f1)
-    emit paper_tier_projected_cpu_hours "$(awk -v c="$c" -v p="$np" -v s="$ns" 'BEGIN { for (k = 3; k <= 13; k++) n += 13500 + 6 * k * k * k
-        printf "%.4g", c / (p * s) * 2 * n * 8000 / 3600 }')" 0
+    emit paper_tier_projected_cpu_hours "$("$ANALYSE" tab01-projected-cpu-hours "$c" "$np" "$ns")" 0
 fi
 # table beside the paper's columns; TCAF: value +- se, "no crossing" when the free eta(k) never
 # reaches the constrained eta(k -> 0), "-" when the phi was not run at this tier
-awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 6)] = $2; next }
-    /^#/ || $1 == "k" { next }
-    function tc(q, d) { if (!(q in v)) return "-"
-        if (v[q] == "nan") { d = v["eta_k0_free_minus_constrained_" substr(q, 13)]
-                             return sprintf("no crossing (free - constrained eta(k->0) = %.1f +- %.1f)", d, s["eta_k0_free_minus_constrained_" substr(q, 13)]) }
-        return sprintf("%.3f +- %.3f", v[q], s[q]) }
-    { k = $1; tag = sprintf("phi%.4f", phi[k]);
-      printf "%s\t%.4f\t%.4f\t%s\t%.4f\t%s\t%s\t%s\n", k, phi[k], v["lambda_sphere_" tag], $3, v["lambda_cube_" tag], $4,
-             tc("lambda_tcaf_" tag), $5 }' \
-    "$OUT/summary.tsv" paper-table1.tsv > "$OUT/body.tsv"
-{ printf 'k\tphi\tsphere (eq. 32)\tsphere, paper\tcube (eq. 31)\tcube, paper\tTCAF (sec. 4.2.3)\tTCAF, paper\n'; cat "$OUT/body.tsv"; } > "$OUT/table1.tsv"
-rm "$OUT/body.tsv"
-# the same numbers for the plot (nan when not run or no crossing)
-awk -F'\t' 'NR==FNR { v[$1] = $2; s[$1] = $3; if ($1 ~ /^phi_k/) phi[substr($1, 6)] = $2; next }
-    FNR == 1 { print "phi\tlambda_tcaf\tse"; next } /^#/ || $1 == "k" { next }
-    { q = sprintf("lambda_tcaf_phi%.4f", phi[$1]); printf "%.6f\t%s\t%s\n", phi[$1], (q in v) ? v[q] : "nan", (q in v) ? s[q] : "nan" }' \
-    "$OUT/summary.tsv" paper-table1.tsv > "$OUT/lambda_tcaf.tsv"
+"$ANALYSE" tab01-tables "$OUT/summary.tsv" paper-table1.tsv "$OUT/table1.tsv" "$OUT/lambda_tcaf.tsv"
 }
 experiment

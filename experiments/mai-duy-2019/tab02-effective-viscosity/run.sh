@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Table 2 of Mai-Duy et al. 2019: at each phi, eta(k) of the free and of the spring-constrained
 # system by TCAF (as fig02-length-scale), the constrained eta(k -> 0) = eta_eff and the free
-# system's k at which eta_free(k) equals it = k_eff (keff.awk). The constrained eta(k -> 0) by the
+# system's k at which eta_free(k) equals it = k_eff (tools/analysis.py keff). The constrained eta(k -> 0) by the
 # time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the two-mode slow mode beside it
 # (second estimator) and eq. 28's amplitude-1 fit (the paper's literal method, *_exp_*) as well; the
 # free system's eta(k) and eta(k -> 0) by the run's own eq. 28 fit (a simple fluid: the estimators
@@ -40,7 +40,7 @@ analysis() {
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
     np=$(get free_$tag particles | cut -f1)
-    awk -v c="$count" -v n="$np" -v t="$tag" 'BEGIN { printf "phi_%s\t%.10g\t0\n", t, c / n }' >> "$OUT/summary.tsv"
+    "$ANALYSE" phi-row "$tag" "$count" "$np" >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
     emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
     emit eta_k0_constrained_two_mode_$tag "$(tcaf_k0 constrained_$tag two-mode "$L")"
@@ -49,37 +49,23 @@ for pair in $PAIRS; do
     emit_diff eta_k0_free_minus_constrained_exp_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0
     emit_from constrained_$tag temperature temperature_constrained_$tag
     ec=$(get . eta_k0_constrained_$tag)
-    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" keff "$OUT/runs/free_$tag/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "$tag" >> "$OUT/summary.tsv"
     ec=$(get . eta_k0_constrained_two_mode_$tag)
-    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="two_mode_$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" keff "$OUT/runs/free_$tag/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "two_mode_$tag" >> "$OUT/summary.tsv"
     ec=$(get constrained_$tag tcaf_eta_k0)
-    num_awk -F'\t' -v ec="${ec%	*}" -v se="${ec#*	}" -v tag="exp_$tag" -f keff.awk "$OUT/runs/free_$tag/tcaf_eta.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" keff "$OUT/runs/free_$tag/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "exp_$tag" >> "$OUT/summary.tsv"
     cp "$OUT/runs/free_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_free_$tag.tsv"
     cp "$OUT/runs/constrained_$tag/tcaf_eta.tsv" "$OUT/tcaf_eta_constrained_$tag.tsv"
-    awk -F'\t' -v t="$tag" -v kp="$kp" '
-        function g(q) { return (q in v) ? v[q] "\t" s[q] : "nan\tnan" }
-        { v[$1] = $2; s[$1] = $3 }
-        END { printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", kp, v["phi_" t], g("k_eff_" t), g("lambda_eff_" t), g("eta_eff_" t), g("eta_k0_free_" t),
-                     g("k_eff_exp_" t), g("eta_eff_exp_" t), g("k_eff_two_mode_" t), g("eta_eff_two_mode_" t) }' \
-        "$OUT/summary.tsv" >> "$OUT/table2_data.tsv"
+    "$ANALYSE" tab02-data-row "$OUT/summary.tsv" "$tag" "$kp" >> "$OUT/table2_data.tsv"
 done
 # Table 2 beside the paper's values (rows of the phi run; value +- stderr)
-awk -F'\t' 'NR == FNR { if ($1 !~ /^#/ && $1 != "k") { pk[$1] = $3; pl[$1] = $4; pe[$1] = $5 }; next }
-    FNR == 1 { print "k\tphi\tk_eff\tk_eff, paper\tlambda_eff\tlambda_eff, paper\teta_eff\teta_eff, paper\tfree eta(k -> 0)\teta_eff, two-mode (second estimator)\teta_eff, eq. 28 amplitude 1 (the literal fit of the paper, its artefact)\tk_eff, eq. 28 amplitude 1"; next }
-    function pm(v, e) { return v == "nan" ? "none" : sprintf("%.3f +- %.3f", v, e) }
-    { printf "%s\t%.4f\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", $1, $2, pm($3, $4), pk[$1], pm($5, $6), pl[$1], pm($7, $8), pe[$1], pm($9, $10),
-             pm($17, $18), pm($13, $14), pm($11, $12) }' \
-    paper-table2.tsv "$OUT/table2_data.tsv" > "$OUT/table2.tsv"
+"$ANALYSE" tab02-table paper-table2.tsv "$OUT/table2_data.tsv" > "$OUT/table2.tsv"
 # Side check (not a reproduction): the paper's (k_eff, eta_eff) pairs against the eta(k) of the
 # pure solvent (n = 4) of fig01-viscosity-wavenumber's committed paper tier, read-only.
 F01=$(upstream_if mai-duy-2019/fig01-viscosity-wavenumber@paper)/tcaf_eta.tsv
 if [ -f "$F01" ]; then
     printf 'phi\tk_eff, paper\teta_eff, paper\tsolvent eta(k_eff, paper) (fig01)\tse\n' > "$OUT/solvent_at_paper_keff.tsv"
-    awk -F'\t' '$1 !~ /^#/ && $1 != "k" { print $2 "\t" $3 "\t" $4 "\t" $5 }' paper-table2.tsv | \
-    while IFS=$'\t' read -r phi ke le ee; do
-        r=$(num_awk -F'\t' -v lambda="$le" -v name=x -f etak.awk "$F01")
-        printf '%s\t%s\t%s\t%s\n' "$phi" "$ke" "$ee" "$(echo "$r" | cut -f2-3)" >> "$OUT/solvent_at_paper_keff.tsv"
-    done
+    "$ANALYSE" solvent-at-paper-keff paper-table2.tsv "$F01" >> "$OUT/solvent_at_paper_keff.tsv"
 fi
 }
 experiment

@@ -73,7 +73,7 @@ ladder_analysis() {
         emit_from $name temperature T_${name}
         [ "${Tr%%	*}" = nan ] || emit_from $name rotational_temperature T_rot_${name}
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $fluid $l $dt "$T" "$Tr" $cpu \
-            $(awk -v c=$cpu -v n=$np -v t=$((trun + T_EQ)) 'BEGIN{printf "%.5g", c/(n/1000)/t}') >> "$OUT/ladder-dt.tsv"
+            $("$ANALYSE" cost-per-kilo $cpu $np $((trun + T_EQ))) >> "$OUT/ladder-dt.tsv"
     done; done
 }
 ladder_analysis gw $GW_T "0.5 0.65" "$GW_DTS"
@@ -82,43 +82,19 @@ ladder_analysis pan $PAN_T "0.5" "$PAN_DTS"
 # cost_per_dt: the CPU cost per particle-step of each fluid averaged over its ladder (one run's
 # CPU time is noisy on a shared machine), times the steps per time unit 1/dt: CPU seconds per
 # 1000 particles per time unit
-awk -F'\t' -v teq=$T_EQ -v tg=$GW_T -v tm=$MD_T -v tp=$PAN_T 'BEGIN{T["gw"]=tg; T["maiduy"]=tm; T["pan"]=tp}
-    NR==FNR { if (FNR>1 && $8!="nan") { c[$1]+=$8; ps[$1]+=($8/$9)*1000/$3 } next }   # particle-steps = cpu/cost*1000*t/dt / t
-    FNR==1 { print $0 "\tcost_per_dt"; next }
-    { printf "%s\t%.5g\n", $0, (c[$1]/ps[$1])*1000/$3 }' "$OUT/ladder-dt.tsv" "$OUT/ladder-dt.tsv" > "$OUT/ladder-dt.tmp"
+"$ANALYSE" ladder-cost-per-dt "$OUT/ladder-dt.tsv" > "$OUT/ladder-dt.tmp"
 mv "$OUT/ladder-dt.tmp" "$OUT/ladder-dt.tsv"
 
 # Groot-Warren fluid, lambda = 0.5: (a) weighted fit T = T0 + c1 dt + c2 dt^2 (FDT: T0 = kBT);
 # (b) the order p of the error, weighted straight line through log |T - 1| against log dt
 # (points whose error exceeds 2 stderr); (c) |T - 1| at lambda 0.65 over that at 0.5, largest dt.
-num_awk -F'\t' -v big=0.06 '$1=="gw" {
-        if ($4 == "nan") next
-        if ($2 == 0.5) { n++; x[n]=$3; y[n]=$4; s[n]=$5 }
-        if ($3 == big) { e[$2]=$4-1; es[$2]=$5 } }
-    END {
-        # (a) weighted quadratic least squares; the covariance is the inverse of the normal matrix
-        num_wpoly2(x, y, s, n, o)
-        printf "T0_extrapolated_gw_lambda0.5\t%.6g\t%.4g\n", o["c0"], o["c0_se"]
-        # (b) order: weighted line through (log dt, log |T - 1|), error of log|T-1| = s/|T-1|
-        m = 0; for (i = 1; i <= n; i++) { d = y[i]-1; d = d < 0 ? -d : d; if (d > 2*s[i]) { m++; X[m] = log(x[i]); Y[m] = log(d); W[m] = s[i]/d } }
-        if (m >= 2) { num_wline(X, Y, W, m, o)
-                      printf "T_error_order_gw_lambda0.5\t%.6g\t%.4g\n", o["slope"], o["slope_se"]
-                      printf "T_error_order_points_gw_lambda0.5\t%d\t0\n", m }
-        # (c) lambda 0.65 against 0.5 at the largest dt of the ladder
-        num_ratio(num_abs(e[0.65]), es[0.65], num_abs(e[0.5]), es[0.5], o)
-        printf "T_error_ratio_gw_l0.65_l0.5_dt%s\t%s\n", big, num_pair(o, "%.6g", "%.4g")
-    }' "$OUT/ladder-dt.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" gw-temperature-ladder "$OUT/ladder-dt.tsv" 0.06 >> "$OUT/summary.tsv"
 # largest dt of each temperature ladder with |T - 1| <= 1 % (2 stderr allowed), and the next rung up
-num_awk -F'\t' 'NR>1 { k = $1 "_l" $2; d = ($4 == "nan") ? 1e9 : $4-1; d = d < 0 ? -d : d
-        if (!(k in best)) { best[k] = 0; nxt[k] = "inf"; bad[k] = 0; K[++nk] = k }
-        if (d <= 0.01 + 2*$5 && !bad[k]) best[k] = $3; else if (!bad[k]) { bad[k] = 1; nxt[k] = $3 } }
-    END { for (j = 1; j <= nk; j++) { k = K[j]
-              printf "dt_T1pct_%s\t%s\t%s\n", k, best[k], (nxt[k] == "inf" ? "nan" : sprintf("%.3g", num_uniform_se(best[k], nxt[k]))) } }' \
-    "$OUT/ladder-dt.tsv" | sort >> "$OUT/summary.tsv"
+"$ANALYSE" dt-within-1pct "$OUT/ladder-dt.tsv" | sort >> "$OUT/summary.tsv"
 
 # ---- 4: the m = 0 Couette viscosity against the solver tolerance -------------
 ref=$(upstream phan-thien-2016/fig03-couette-profile@paper)/summary.tsv
-read -r eta_ref eta_ref_se < <(awk -F'\t' '$1=="eta"{print $2, $3}' "$ref")
+read -r eta_ref eta_ref_se < <("$ANALYSE" lookup "$ref" eta)
 printf 'solver\ttolerance\teta\teta_se\terror\terror_se\titerations\tcpu_per_step\ttrue_rel_error\n' > "$OUT/ladder-tolerance.tsv"
 for solver in pcg scheme2_consistent; do
     for tol in ${OD_TOLS[$solver]}; do
@@ -127,22 +103,18 @@ for solver in pcg scheme2_consistent; do
         read -r _ _ _ _ eta etase < <(couette_viscosity $name 10 2:10)
         emit eta_${name} $eta $etase
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $solver $tol $eta $etase \
-            "$(num_awk -v e=$eta -v es=$etase -v r=$eta_ref -v rs=$eta_ref_se 'BEGIN{q[1] = es; q[2] = e/r*rs; printf "%.6g\t%.4g", (e-r)/r, num_quad(q, 2)/r}')" \
+            "$("$ANALYSE" rel-error $eta $etase $eta_ref $eta_ref_se)" \
             "$(get $name solver_iterations | cut -f1)" "$(get $name solver_cpu_seconds_per_step | cut -f1)" \
             "$(get $name solver_true_rel_error | cut -f1)" >> "$OUT/ladder-tolerance.tsv"
     done
 done
 emit eta_fig03_paper_tier $eta_ref $eta_ref_se
 # the paper's tolerance (1e-7, PCG) against the fig03 paper tier: the same setting, shorter
-awk -F'\t' '$1=="pcg" && $2=="1e-7" {printf "eta_rel_error_pcg_1e-7\t%s\t%s\n", $5, $6}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
-# what the paper's tolerance costs against a loose one (paper.md): PCG's CPU per step at 1e-7 over 1e-3
-# (one run each; no error)
-awk -F'\t' '$1=="pcg" && $2=="1e-7" {a=$8} $1=="pcg" && $2=="1e-3" {b=$8}
-    END {printf "cpu_per_step_ratio_pcg_1e-7_1e-3\t%.6g\t0\n", a/b}' "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
+# and what the paper's tolerance costs against a loose one (paper.md): PCG's CPU per step at 1e-7 over
+# 1e-3 (one run each; no error)
+"$ANALYSE" tolerance-summary "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
 # slope of log(true error) against log(tolerance), per solver (weighted equally)
-num_awk -F'\t' 'NR>1 && $9 > 0 { s=$1; if (!(s in n)) S[++ns] = s; n[s]++; X[s,n[s]]=log($2); Y[s,n[s]]=log($9) }
-    END { for (j=1;j<=ns;j++) { s=S[j]; k=n[s]; for (i=1;i<=k;i++) { x[i]=X[s,i]; y[i]=Y[s,i] }
-          num_line(x, y, k, o); printf "true_error_slope_%s\t%.6g\t%.4g\n", s, o["slope"], (k>2) ? o["slope_se"] : 0 } }' "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
+"$ANALYSE" true-error-slopes "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
 # (CPU of every run, the unstable ones included: tools/run-experiment sums runs/*/.cpu_seconds)
 }
 experiment

@@ -89,21 +89,13 @@ bisect() {
         fi
         res="$res $lo:$hi"
         # per seed: the bracket's geometric middle (nan if the bracket's end was reached)
-        awk -v f=$fam -v p=$par -v v=$val -v s=$seed -v a=$lo -v b=$hi 'BEGIN{
-            printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\n", f, p, v, s, (b == "inf" || a == 0) ? "nan" : sprintf("%.6g", sqrt(a * b)), a, b}' >> "$OUT/dt-max-seeds.tsv"
+        "$ANALYSE" bisect-seed-row $fam $par $val $seed $lo $hi >> "$OUT/dt-max-seeds.tsv"
     done
     # per seed the geometric middle of the last bracket, its error the bracket's (uniform); over
     # the seeds their mean, the error the seeds' scatter and the brackets' in quadrature, a bracket
     # shared by n_b seeds counted once with weight n_b / n (the distinct brackets in the order of
-    # their first seed, so the sum's order does not depend on the awk)
-    num_awk -v f=$fam -v p=$par -v v=$val -v r="$res" 'BEGIN{n=split(r,R," "); for(i=1;i<=n;i++){split(R[i],b,":"); lo[i]=b[1]; hi[i]=b[2]
-            if (hi[i]=="inf" || lo[i]==0) {bad=1; continue}
-            d[i]=sqrt(lo[i]*hi[i]); e[i]=num_uniform_se(lo[i], hi[i]); L=(L==""||lo[i]<L)?lo[i]:L; H=(H==""||hi[i]>H)?hi[i]:H
-            if (!(R[i] in nb)) K[++nk]=R[i]; nb[R[i]]++; eb[R[i]]=e[i]}
-        if (bad) { printf "%s\t%s\t%s\tnan\tnan\t%s\t%s\n", f, p, v, lo[1], hi[1]; exit }
-        m=num_mean_se(d, n, o)
-        if (n>1) { for(j=1;j<=nk;j++) w[j]=nb[K[j]]*eb[K[j]]; q[1]=o["se"]; q[2]=num_quad(w, nk)/n; se=num_quad(q, 2) } else se=e[1]
-        printf "%s\t%s\t%s\t%.5g\t%.3g\t%s\t%s\n", f, p, v, m, se, L, H}' >> "$OUT/dt-max.tsv"
+    # their first seed, so the sum runs in a fixed order)
+    "$ANALYSE" bisect-dt-max $fam $par $val "$res" >> "$OUT/dt-max.tsv"
 }
 
 # The simulations are the analysis: each bisection's next trial (`dpd run`, below) depends on the
@@ -139,17 +131,15 @@ for sep in 0 1e-12; do for kind in inertial m0; do
         coincident_ok=$((coincident_ok + 1))
     else echo "pair at separation $sep ($kind): not finite" >&2; fi
 done; done
-emit coincident_pairs_finite_fraction $(awk -v a=$coincident_ok -v n=$coincident_n 'BEGIN{printf "%.6g", a/n}') 0
+emit coincident_pairs_finite_fraction $("$ANALYSE" quotient6 $coincident_ok $coincident_n) 0
 
 # ---- summary quantities ----------------------------------------------------
-awk -F'\t' 'NR>1 {printf "dt_max_%s_%s%s\t%s\t%s\n", $1, $2, $3, $4, $5}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" dt-max-rows "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 # scaling exponents: weighted line through log dt_max against log(parameter) over the
 # values at and beyond the given threshold (the asymptotic regime of the theory)
 slope() {   # slope NAME FAMILY FROM TO: parameter values in [FROM, TO]
     # (the error of log dt_max: dt_max's relative error)
-    num_awk -F'\t' -v q=$1 -v f=$2 -v a=$3 -v b=$4 '$1==f && $3+0>=a && $3+0<=b && $4!="nan" {
-            n++; x[n]=log($3); y[n]=log($4); s[n]=$5/$4 }
-        END { if (n < 2) { printf "%s\tnan\tnan\n", q; exit } num_wline(x, y, s, n, o); printf "%s\t%.5g\t%.3g\n", q, o["slope"], o["slope_se"] }' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" dt-max-slope "$OUT/dt-max.tsv" $1 $2 $3 $4 >> "$OUT/summary.tsv"
 }
 # gamma: pure power laws over gamma >= 450, banded at the quick tier, unbanded diagnostics at the
 # paper tier since the gamma rule (2026-12-03; the banded rows are the corrected fits below)
@@ -161,8 +151,8 @@ slope dt_max_exponent_gamma_s0.5 gas_s0.5 450 1e9
 # precision a pure power law sees the approach to the asymptote, README), and over the first paper
 # run's windows (_wide) and a >= 2e4 (_a_from20000), also unbanded.
 amax=${AS##* } mmin=${MASSES##* }
-slope dt_max_exponent_a a_gamma4.5 $(awk -v a=$amax 'BEGIN{printf "%.6g", a / 10}') 1e9
-slope dt_max_exponent_m mass 0 $(awk -v m=$mmin 'BEGIN{printf "%.6g", 10 * m}')
+slope dt_max_exponent_a a_gamma4.5 $("$ANALYSE" quotient6 $amax 10) 1e9
+slope dt_max_exponent_m mass 0 $("$ANALYSE" times6 10 $mmin)
 slope dt_max_exponent_a_wide a_gamma4.5 100 1e9
 slope dt_max_exponent_m_wide mass 0 0.1
 if [ "$TIER" = paper ]; then slope dt_max_exponent_a_from20000 a_gamma4.5 20000 1e9; fi
@@ -182,20 +172,7 @@ slope dt_max_exponent_H spring_m0 10000 1e9
 #      thermal displacement sqrt(kBT / a). Below 2e4 the lattice's second neighbours (r = 0.981) reach
 #      the cutoff within a trial (gap 0.019 < 4.4 thermal sigma, sigma^2 ~ kBT / (3 a)): not a power law.
 corrected() {   # corrected FAMILY FROM TO Q NAME_EXPONENT NAME_BETA NAME_CHI2
-    num_awk -F'\t' -v f=$1 -v lo=$2 -v hi=$3 -v q=$4 -v qp=$5 -v qb=$6 -v qc=$7 '$1==f && $3+0>=lo && $3+0<=hi && num_usable($4, $5) {
-            n++; x1[n]=log($3); x2[n]=(q == 0.5 ? sqrt($3) : q == -0.5 ? 1/sqrt($3) : q == -1 ? 1/$3 : exp(q*log($3))); y[n]=log($4); w[n]=1/num_sq($5/$4) }
-        END { if (n < 4) { printf "%s\tnan\tnan\n%s\tnan\tnan\n%s\tnan\t0\n", qp, qb, qc; exit }
-            for (i = 1; i <= n; i++) {
-                S00+=w[i]; S01+=w[i]*x1[i]; S02+=w[i]*x2[i]; S11+=w[i]*x1[i]*x1[i]; S12+=w[i]*x1[i]*x2[i]; S22+=w[i]*x2[i]*x2[i]
-                b0+=w[i]*y[i]; b1+=w[i]*x1[i]*y[i]; b2+=w[i]*x2[i]*y[i] }
-            D=num_det3(S00,S01,S02, S01,S11,S12, S02,S12,S22)
-            c=num_det3(b0,S01,S02, b1,S11,S12, b2,S12,S22)/D
-            p=num_det3(S00,b0,S02, S01,b1,S12, S02,b2,S22)/D
-            be=num_det3(S00,S01,b0, S01,S11,b1, S02,S12,b2)/D
-            # the covariance: the inverse of the normal matrix (its diagonal cofactors / D)
-            vp=(S00*S22-S02*S02)/D; vb=(S00*S11-S01*S01)/D
-            for (i = 1; i <= n; i++) chi2+=w[i]*num_sq(y[i]-c-p*x1[i]-be*x2[i])
-            printf "%s\t%.5g\t%.3g\n%s\t%.4g\t%.3g\n%s\t%.4g\t0\n", qp, p, sqrt(vp), qb, be, sqrt(vb), qc, chi2/(n-3) }' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" dt-max-corrected "$OUT/dt-max.tsv" $1 $2 $3 $4 $5 $6 $7 >> "$OUT/summary.tsv"
 }
 if [ "$TIER" = paper ]; then
     corrected mass 1e-5 1e-3 0.5 dt_max_exponent_m_corrected dt_max_m_correction_beta dt_max_m_corrected_chi2_dof
@@ -227,28 +204,7 @@ fi
 # a measured statistical error only), <name>_pure (its error sqrt(sd_pure^2 / n + res_pure^2)),
 # <name>_model and <name>_resolution (unbanded).
 paired() {   # paired FAMILY FROM TO Q NAME
-    num_awk -F'\t' -v f=$1 -v lo=$2 -v hi=$3 -v q=$4 -v name=$5 'NR > 1 && $1==f && $3+0>=lo && $3+0<=hi && !num_isnan($5) {
-            if (!($4 in ns)) seed[++nseed]=$4; k=++ns[$4]; X1[$4, k]=log($3); Y[$4, k]=log($5); V[$4, k]=num_sq(log($7/$6))/12
-            X2[$4, k]=(q == 0.5 ? sqrt($3) : q == -0.5 ? 1/sqrt($3) : q == -1 ? 1/$3 : exp(q*log($3))) }
-        END { if (nseed < 2) { printf "%s\tnan\tnan\n", name; exit }
-            for (j = 1; j <= nseed; j++) { s=seed[j]; n=ns[s]
-                if (n < 4) { printf "%s\tnan\tnan\n", name; exit }
-                S00=S01=S02=S11=S12=S22=b0=b1=b2=0
-                for (i = 1; i <= n; i++) { x1=X1[s, i]; x2=X2[s, i]; y=Y[s, i]
-                    S00++; S01+=x1; S02+=x2; S11+=x1*x1; S12+=x1*x2; S22+=x2*x2; b0+=y; b1+=x1*y; b2+=x2*y }
-                D=num_det3(S00,S01,S02, S01,S11,S12, S02,S12,S22); D2=S00*S11-S01*S01
-                pc[j]=num_det3(S00,b0,S02, S01,b1,S12, S02,b2,S22)/D
-                pp[j]=(S00*b1-S01*b0)/D2
-                # resolution: p is linear in the ln dt_max_i, with weights c_i (Cramer with y = e_i)
-                vc=vp=0
-                for (i = 1; i <= n; i++) { x1=X1[s, i]; x2=X2[s, i]
-                    vc+=num_sq(num_det3(S00,1,S02, S01,x1,S12, S02,x2,S22)/D)*V[s, i]
-                    vp+=num_sq((S00*x1-S01)/D2)*V[s, i] }
-                rc+=sqrt(vc)/nseed; rp+=sqrt(vp)/nseed }
-            num_mean_se(pc, nseed, c); num_mean_se(pp, nseed, p)
-            sc[1]=c["se"]; sc[2]=rc; stc=num_quad(sc, 2); sp[1]=p["se"]; sp[2]=rp
-            e[1]=stc; e[2]=num_abs(c["v"]-p["v"])
-            printf "%s\t%.5g\t%.3g\n%s_stat\t%.5g\t%.3g\n%s_pure\t%.5g\t%.3g\n%s_model\t%.3g\t0\n%s_resolution\t%.3g\t0\n", name, c["v"], num_quad(e, 2), name, c["v"], stc, name, p["v"], num_quad(sp, 2), name, e[2], name, rc }' "$OUT/dt-max-seeds.tsv" >> "$OUT/summary.tsv"
+    "$ANALYSE" dt-max-paired "$OUT/dt-max-seeds.tsv" $1 $2 $3 $4 $5 >> "$OUT/summary.tsv"
 }
 if [ "$TIER" = paper ]; then
     # the far windows (rule of 2026-12-03, evening; README "The far windows"), banded: a = 1e5 ... 1e7,
@@ -276,30 +232,21 @@ fi
 # and s = 0.5 (ideal gas, largest gamma) against the ratio of the mean sum_j w_D of an ideal
 # gas, 4 pi n int_0^1 r^2 (1 - r)^s dr = 8 pi n / ((s + 1)(s + 2)(s + 3))
 gmax=4500   # the band's gamma (both tiers; the paper tier's gas family reaches 15000 since the gamma rule)
-num_awk -F'\t' -v g=$gmax '$3==g && $1=="gas_s2"{a=$4; as=$5} $3==g && $1=="gas_s0.5"{b=$4; bs=$5}
-    END{num_ratio(a, as, b, bs, o); printf "dt_max_ratio_s2_s0.5_gas_gamma%s\t%s\n", g, num_pair(o, "%.5g", "%.3g")
-        w2=2/(3*4*5); w05=2/(1.5*2.5*3.5); printf "sum_wD_ratio_s0.5_s2_ideal_gas\t%.5g\t0\n", w05/w2}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" gas-weight-ratio "$OUT/dt-max.tsv" $gmax >> "$OUT/summary.tsv"
 # m = 0 solver against the inertial integrator at every mass <= 0.01 (the bands name m = 0.01, quick,
 # and 0.003, paper)
-emit_ratio_rows() { num_awk -F'\t' -v q=$1 -v f1=$2 -v v1=$3 -v f2=$4 -v v2=$5 '$1==f1&&$3==v1{a=$4;as=$5} $1==f2&&$3==v2{b=$4;bs=$5}
-    END{num_ratio(a, as, b, bs, o); printf "%s\t%s\n", q, num_pair(o, "%.5g", "%.3g")}' "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"; }
+emit_ratio_rows() { "$ANALYSE" dt-max-ratio "$OUT/dt-max.tsv" "$@" >> "$OUT/summary.tsv"; }
 for m in $MASSES; do
-    if awk -v m=$m 'BEGIN{exit !(m <= 0.01)}'; then emit_ratio_rows dt_max_ratio_m0_solver_to_m$m mass_m0 0 mass $m; fi
+    if "$ANALYSE" at-most $m 0.01; then emit_ratio_rows dt_max_ratio_m0_solver_to_m$m mass_m0 0 mass $m; fi
 done
 # what paper.md reads off the families (issue 40 item 7: no arithmetic in its text): the repulsion
 # family's dt_max sqrt(a) at every a (flat where dt_max ~ a^-1/2) and the local exponent
 # ln(dt_max_2 / dt_max_1) / ln(a_2 / a_1) between neighbouring a; the mass family's dt_max / m
-num_awk -F'\t' '$1 == "a_gamma4.5" { n++; a[n] = $3; d[n] = $4; s[n] = $5 }
-    $1 == "mass" { num_div($4, $5, $3, o); printf "dt_max_over_m_m%s\t%s\n", $3, num_pair(o, "%.5g", "%.3g") }
-    END { for (i = 1; i <= n; i++) { num_scale(d[i], s[i], sqrt(a[i]), o); printf "dt_max_sqrt_a_a%s\t%s\n", a[i], num_pair(o, "%.5g", "%.3g") }
-          for (i = 2; i <= n; i++) { l = log(a[i] / a[i - 1]); r[1] = s[i] / d[i]; r[2] = s[i - 1] / d[i - 1]
-              printf "dt_max_local_exponent_a%s_%s\t%.5g\t%.3g\n", a[i - 1], a[i], log(d[i] / d[i - 1]) / l, num_quad(r, 2) / l } }' \
-    "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" family-rows "$OUT/dt-max.tsv" >> "$OUT/summary.tsv"
 # every unstable trial stopped with a proper message, INCOMPLETE and no summary
-awk -F'\t' 'NR>1 && $8!="-" {n++; ok+=$8} END{printf "blowup_message_ok_fraction\t%.6g\t0\nunstable_trials\t%d\t0\n", ok/n, n}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"
-awk -F'\t' 'END{printf "trials\t%d\t0\n", NR-1}' "$OUT/trials.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" trial-rows "$OUT/trials.tsv" >> "$OUT/summary.tsv"
 # CPU of all trials (stable and unstable; run-experiment counts only completed runs)
 times > "$OUT/times.txt"
-emit cpu_seconds $(awk 'NR==2{split($1,a,"m"); split($2,b,"m"); printf "%.3f", a[1]*60+a[2]+b[1]*60+b[2]}' "$OUT/times.txt") 0
+emit cpu_seconds $("$ANALYSE" cpu-from-times "$OUT/times.txt") 0
 }
 experiment

@@ -98,7 +98,7 @@ for c in $CHOICES $SIZES; do for a in $AS; do emit_diff eta_r_change_${c}_a$a . 
 if [ "$TIER" = paper ]; then
     for a in $AS; do
         up=$(upstream mai-duy-2019/fig04-relative-viscosity-a353); [ "$a" = 6.50 ] && up=$(upstream mai-duy-2019/fig05-relative-viscosity-a650)
-        awk -F'\t' '$1 == "eta_r_original_phi0.49" { print "eta_r_box15_a'"$a"'\t" $2 "\t" $3 }' "$up/summary.tsv" >> "$OUT/summary.tsv"
+        "$ANALYSE" rename "$up/summary.tsv" eta_r_original_phi0.49 eta_r_box15_a$a >> "$OUT/summary.tsv"
         emit_diff eta_r_box8.08_minus_box15_a$a . eta_r_M6_a$a . eta_r_box15_a$a
     done
 fi
@@ -110,7 +110,7 @@ for M in $TCAF_MASSES; do
         r=tcaf_M${M}_bodies$b
         "$DPD" tcaf-fit "$OUT/runs/$r/tcaf.tsv" --rho "$(get $r tcaf_mass_density | cut -f1)" --box "$L" --model integral \
             --table "$OUT/runs/$r/tcaf_fit_integral.tsv" > "$OUT/runs/$r/tcaf_fit_integral.out"
-        ek=$(awk -F'\t' '$1 == "eta_k0" { print $2 "\t" $3 }' "$OUT/runs/$r/tcaf_fit_integral.out")
+        ek=$("$ANALYSE" lookup "$OUT/runs/$r/tcaf_fit_integral.out" eta_k0)
         emit "eta_k0_constrained_M${M}_bodies$b" "${ek%	*}" "${ek#*	}"
         emit_from $r temperature temperature_$r
         printf '%s\t%s\t%s\t%s\n' "$M" "$b" "$ek" "$(get susp_M${M}_a3.53 viscosity)" >> "$OUT/tcaf.tsv"

@@ -46,7 +46,7 @@ for c in $(printf '%s\n' "${cases[@]}" | LC_ALL=C sort -t: -k1,1 -k2,2g); do
     emit_from susp_$s temperature temperature_susp_$s
     emit_from solvent_$s temperature temperature_solvent_$s
     printf '%s\t%s\t%s\t%s\t%s\t%.4g\n' "$a" "$rate" "$(get . eta_r_$s)" "$(get susp_$s viscosity)" \
-        "$(get solvent_$s viscosity)" "$(awk -v r="$rate" -v t="$PROD" 'BEGIN { print r * t }')" >> "$OUT/eta_r.tsv"
+        "$(get solvent_$s viscosity)" "$("$ANALYSE" times "$rate" "$PROD")" >> "$OUT/eta_r.tsv"
 done
 # the hypotheses (bands.tsv): eta_r rises as the rate falls; at a lower rate, a = 6.50 above a = 3.53
 if [ "$TIER" = paper ]; then

@@ -36,32 +36,6 @@ for solver in $solvers; do
     done
 done
 # interpolate each solver to E*; then the ratios of issue 3
-num_awk -F'\t' -v E="$ESTAR" 'NR>1 {s=$1; n[s]++; k=n[s]; le[s,k]=log($5); it[s,k]=$3; its[s,k]=$4; cs[s,k]=$6; css[s,k]=$7}
-  function interp(s, a, as,   k, j, i1, i2, w) {   # bracket log E* (or the nearest two when outside the ladder)
-      i1 = 0; for (k = 1; k <= n[s]; k++) for (j = 1; j <= n[s]; j++) if (k != j && le[s,k] >= log(E) && le[s,j] <= log(E) && (i1 == 0 || le[s,k]-le[s,j] < le[s,i1]-le[s,i2])) { i1 = k; i2 = j }
-      if (i1 == 0) { extrap[s] = 1; i1 = 1; i2 = 2; for (k = 1; k <= n[s]; k++) if ((le[s,k]-log(E))^2 < (le[s,i1]-log(E))^2) i1 = k
-                     for (k = 1; k <= n[s]; k++) if (k != i1 && (i2 == i1 || (le[s,k]-log(E))^2 < (le[s,i2]-log(E))^2)) i2 = k }
-      w = (le[s,i1] == le[s,i2]) ? 0.5 : (log(E) - le[s,i2]) / (le[s,i1] - le[s,i2])
-      V = num_lin2(w, a[s,i1], as[s,i1], 1 - w, a[s,i2], as[s,i2], o); VS = o["se"]
-  }
-  function ratio(q, v, vs, a, b) { num_ratio(v[a], vs[a], v[b], vs[b], o); printf "%s\t%s\n", q, num_pair(o, "%.6g", "%.4g") }
-  END {
-      split("scheme1 scheme2_paper scheme2_consistent pcg pcg_2level", S, " ")
-      bi = bt = ""
-      for (q = 1; q <= 5; q++) { s = S[q]
-          interp(s, it, its); I[s] = V; IS[s] = VS
-          interp(s, cs, css); C[s] = V; CS[s] = VS
-          printf "iterations_at_Estar_%s\t%.6g\t%.4g\n", s, I[s], IS[s]
-          printf "cpu_seconds_at_Estar_%s\t%.6g\t%.4g\n", s, C[s], CS[s]
-          if (extrap[s]) printf "extrapolated_%s\t1\t0\n", s
-          if (bi == "" || I[s] < I[bi]) bi = s
-          if (bt == "" || C[s] < C[bt]) bt = s }
-      ratio("iteration_ratio_scheme2_best", I, IS, "scheme2_paper", bi)
-      ratio("time_ratio_scheme1_best", C, CS, "scheme1", bt)
-      ratio("iteration_ratio_scheme1_scheme2", I, IS, "scheme1", "scheme2_paper")
-      ratio("cpu_ratio_scheme1_scheme2_at_Estar", C, CS, "scheme1", "scheme2_paper")
-      printf "best_iterations_is_pcg_2level\t%d\t0\n", bi == "pcg_2level"
-      printf "best_time_is_pcg_2level\t%d\t0\n", bt == "pcg_2level"
-  }' "$OUT/ladder.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" equal-error "$OUT/ladder.tsv" "$ESTAR" >> "$OUT/summary.tsv"
 }
 experiment

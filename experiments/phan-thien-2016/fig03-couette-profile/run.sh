@@ -27,44 +27,40 @@ for solver in pcg scheme2_paper; do
     p=$OUT/runs/$solver/profile.tsv
     cp "$p" "$OUT/profile$sfx.tsv"
     "$DPD" fit-line "$p" --x pos --y vx --se vx_se --range $BULK > "$OUT/runs/$solver/fit.tsv"
-    fit() { awk -F'\t' -v q="$1" '$1==q{print $2 "\t" $3}' "$OUT/runs/$solver/fit.tsv"; }
+    fit() { "$ANALYSE" lookup "$OUT/runs/$solver/fit.tsv" "$1"; }
     # shear rate from the blocks' slopes, wall stress from both walls (errors: tools/lib/exp.sh)
     read -r g gse tau tause eta etase < <(couette_viscosity $solver $LX $BULK)
     emit "shear_rate$sfx" "$g" "$gse"
     emit "r2_bulk$sfx" "$(fit r2 | cut -f1)" 0
     emit "velocity_centre$sfx" $(fit value_at_centre)
     # mean slip of the two walls: U - (v(YHI) - v(YLO)) / 2 = U - slope (YHI - YLO) / 2
-    emit "wall_slip$sfx" $(num_awk -v u=$U -v g=$g -v gs=$gse -v h=$((YHI - YLO)) 'BEGIN { num_scale(g, gs, h / 2, o)
-        printf "%.10g\t%.4g", u - o["v"], o["se"] }')
+    emit "wall_slip$sfx" $("$ANALYSE" wall-slip $U $g $gse $((YHI - YLO)))
     emit "wall_stress$sfx" "$tau" "$tause"
     emit "eta$sfx" "$eta" "$etase"
     # the same from the Irving-Kirkwood stress of the bulk bins (errors taken as fully correlated)
-    read -r sb sbse < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
-        $1>=r[1] && $1<=r[2] && $13!="nan" {n++; s[n]=$12; e[n]=$13} END{printf "%.10g\t%.4g\n", num_mean(s, n), num_mean(e, n)}' "$p")
-    emit "eta_bulk_ik$sfx" $(num_awk -v t=$sb -v ts=$sbse -v g=$g -v gs=$gse 'BEGIN{num_ratio(t, ts, g, gs, o); printf "%s", num_pair(o)}')
-    emit "eta_wall_minus_bulk$sfx" $(num_awk -v a=$tau -v as=$tause -v b=$sb -v bs=$sbse -v g=$g 'BEGIN{num_diff(a, as, b, bs, o); num_div(o["v"], o["se"], g, o)
-        printf "%s", num_pair(o)}')
+    read -r sb sbse < <("$ANALYSE" ik-bulk-stress "$p" $BULK)
+    emit "eta_bulk_ik$sfx" $("$ANALYSE" ratio "$sb	$sbse" "$g	$gse")
+    emit "eta_wall_minus_bulk$sfx" $("$ANALYSE" diff-div "$tau	$tause" "$sb	$sbse" "$g")
     # density: largest relative deviation of a bulk bin from the bulk mean (error: that bin's)
     emit "density_bulk_max_rel_dev$sfx" $(max_rel_dev "$p" $BULK)
-    emit "density_wall_bin$sfx" $(awk -F'\t' '/^#/||$1=="pos"{next} $2!="nan"{print $2 "\t" $3; exit}' "$p")
+    emit "density_wall_bin$sfx" $("$ANALYSE" first-defined "$p" 2)
     emit_from $solver solver_iterations "iterations$sfx"
 done
 # the published Scheme 2 against the solution of A v = f: does time averaging hide its error?
-emit shear_rate_scheme2_minus_pcg $(num_awk -F'\t' '$1=="shear_rate"{a=$2; as=$3} $1=="shear_rate_scheme2"{b=$2; bs=$3}
-    END{num_diff(b, bs, a, as, o); printf "%s", num_pair(o)}' "$OUT/summary.tsv")
+"$ANALYSE" summary-diff "$OUT/summary.tsv" shear_rate_scheme2 shear_rate shear_rate_scheme2_minus_pcg > "$OUT/.rows"
+cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 # Cross-check without walls: Lees-Edwards shear of the same fluid (fig07's shear.cfg, 10 x 10, dt and
 # rate as here) at the channel's bulk density, which exceeds the nominal 4 because the fluid is
 # depleted next to the walls; the wall viscosity must equal it (at the nominal density it is lower:
 # eta grows roughly as the density squared). Bulk density error: bins taken as independent.
-read -r rho rhose < <(num_awk -F'\t' -v b=$BULK 'BEGIN{split(b,r,":")} /^#/||$1=="pos"{next}
-    $1>=r[1] && $1<=r[2] {n++; d[n]=$2; e[n]=$3} END{printf "%.6f\t%.4g\n", num_mean(d, n), num_quad(e, n)/n}' "$OUT/profile.tsv")
+read -r rho rhose < <("$ANALYSE" bulk-density "$OUT/profile.tsv" $BULK)
 emit density_bulk "$rho" "$rhose"
 }
 # round 2, a simulation after the analysis: its density and shear rate are the measured rho and g,
 # which it reads from the analysis above (density_bulk, shear_rate of summary.tsv)
 simulations_2() {
 rho=$(from_analysis density_bulk | cut -f1)
-read -r g _ < <(awk -F'\t' '$1=="shear_rate"{print $2 "\t" $3}' "$OUT/summary.tsv")
+read -r g _ < <(from_analysis shear_rate)
 # shellcheck disable=SC2086
 dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg" ${len[le]} \
     --set "types.[0].density=$rho" --set "shear_rate=$g" --set dt=0.01 --set seed=2017
@@ -72,8 +68,6 @@ dpd_run le "$DPD_ROOT/experiments/phan-thien-2016/fig07-drag-velocity/shear.cfg"
 analysis_2() {
 emit_from le viscosity eta_lees_edwards_bulk_density
 # the LE density is held at the measured mean: its error enters through d eta / d rho ~ 2 eta / rho
-emit eta_wall_minus_lees_edwards $(num_awk -F'\t' -v r=$rho -v rs=$rhose -v le="$(get le viscosity)" '
-    $1=="eta"{a=$2; as=$3} END{split(le, L, "\t"); e[1] = as; e[2] = L[2]; e[3] = 2*L[1]/r*rs
-        printf "%.10g\t%.4g", a-L[1], num_quad(e, 3)}' "$OUT/summary.tsv")
+emit eta_wall_minus_lees_edwards $("$ANALYSE" wall-minus-lees-edwards "$OUT/summary.tsv" $rho $rhose "$(get le viscosity)")
 }
 experiment

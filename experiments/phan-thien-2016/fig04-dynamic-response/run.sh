@@ -2,7 +2,7 @@
 # Start-up of Couette flow from rest, m = 0 against m = 1 (Phan-Thien et al.
 # 2016, Fig. 4): fluid equilibrated between walls at rest, walls at -U and +U
 # from t = 0; profiles averaged over independent runs; t90 = time to 90 % of
-# the steady profile (growth.awk).
+# the steady profile (tools/analysis.py couette_growth).
 . "$DPD_ROOT/tools/lib/exp.sh"
 case $TIER in
     quick) seeds=(1 2 3); len=(--set equilibration=200 --set steps=2000); b0=500; b1=200; ts=15 ;;
@@ -23,7 +23,7 @@ analysis() {
 for m in m0 m1; do
     files=()
     for seed in "${seeds[@]}"; do
-        # the columns growth.awk reads, kept compressed (profile_blocks.tsv is not committed:
+        # the columns couette_growth (tools/analysis.py) reads, kept compressed (profile_blocks.tsv is not committed:
         # ~0.5 MB per run), so that the analysis can be redone from the committed files; written
         # under another name first, so that a failed attempt leaves no empty file to be kept
         vb=$OUT/runs/${m}_s$seed/vx_blocks.tsv.gz
@@ -33,7 +33,7 @@ for m in m0 m1; do
         fi
         files+=("$vb")
     done
-    zcat "${files[@]}" | num_awk -v ts=$ts -v name=$m -v out="$OUT" -f growth.awk >> "$OUT/summary.tsv"
+    zcat "${files[@]}" | "$ANALYSE" couette-growth $ts $m "$OUT" >> "$OUT/summary.tsv"
     runs=(); for seed in "${seeds[@]}"; do runs+=(${m}_s$seed); done
     emit_mean "temperature_$m" temperature "${runs[@]}"
 done

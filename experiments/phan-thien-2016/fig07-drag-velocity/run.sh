@@ -24,7 +24,7 @@ analysis() {
 fig06=$(upstream phan-thien-2016/fig06-cylinder-exclusion)/summary.tsv
 # the analysis
 emit_from shear viscosity eta_solvent
-a=$(awk -F'\t' '$1=="exclusion_radius"{print $2 "\t" $3}' "$fig06")
+a=$("$ANALYSE" lookup "$fig06" exclusion_radius)
 emit exclusion_radius "${a%%$'\t'*}" "${a##*$'\t'}"
 nfluid=144; h=6.0
 printf 'P\tdrag\tdrag_se\tU\tU_se\thasimoto_drag\thasimoto_drag_se\n' > "$OUT/drag.tsv"
@@ -32,20 +32,7 @@ for P in $Ps; do
     emit_from "P$P" force_on_cylinder_x "drag_P$P"
     emit_from "P$P" mean_velocity_fluid_x "velocity_P$P"
     drag=$(get "P$P" force_on_cylinder_x) U=$(get "P$P" mean_velocity_fluid_x) eta=$(get shear viscosity)
-    num_awk -F'\t' -v P="$P" -v N=$nfluid -v h=$h -v d="$drag" -v u="$U" -v e="$eta" -v a="$a" '
-    BEGIN { split(d, D, "\t"); split(u, V, "\t"); split(e, E, "\t"); split(a, A, "\t")
-        pi = atan2(0, -1); den = log(h / A[1]) - 1.3105                       # eq. 47
-        FH = 4 * pi * E[1] * V[1] / den
-        r[1] = V[2] / V[1]; r[2] = E[2] / E[1]; r[3] = A[2] / (A[1] * den); rel = num_quad(r, 3)
-        num_div(D[1], D[2], N * P, o); o["v"] -= 1; print num_row("force_balance_P" P, o)
-        num_relerr(D[1] / FH, r, 3, o); print num_row("hasimoto_ratio_P" P, o)
-        # the radius that makes eq. 47 exact for this drag
-        x = 4 * pi * E[1] * V[1] / D[1]
-        # d ah = ah d x, and x has the relative errors of U and eta
-        ah = h * exp(-(x + 1.3105)); num_relerr(ah * x, r, 2, o)
-        printf "hydrodynamic_radius_P%s\t%.10g\t%.4g\n", P, ah, o["se"]
-        printf "%s\t%g\t%g\t%g\t%g\t%g\t%g\n", P, D[1], D[2], V[1], V[2], FH, FH * rel > "/dev/stderr"
-    }' >> "$OUT/summary.tsv" 2>> "$OUT/drag.tsv"
+    "$ANALYSE" fig07-drag "$P" $nfluid $h "$drag" "$U" "$eta" "$a" >> "$OUT/summary.tsv" 2>> "$OUT/drag.tsv"
 done
 }
 experiment

@@ -32,42 +32,23 @@ for m in 0 1; do
         rows=""
         for k in $seeds; do
             name="m${m}_P${P}_s$k"
-            rows+="$(num_awk -v L=6 -v cx=3 -v cy=3 -v rex=1 -v n0=4 -f fields.awk "$OUT/runs/$name/density_map.tsv")"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
+            rows+="$("$ANALYSE" density-fields "$OUT/runs/$name/density_map.tsv" 6 3 3 1 4)"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
         done
         # mean and standard error over the seeds
-        printf '%s' "$rows" | num_awk -F'\t' -v P="$P" -v m="$m" '
-            { r[NR] = $1; d[NR] = $2; u[NR] = $4 }
-            END { printf "%s\t%s", P, m
-                  num_mean_se(r, NR, o); printf "\t%s", num_pair(o, "%.6g", "%.3g")
-                  num_mean_se(d, NR, o); printf "\t%s", num_pair(o, "%.6g", "%.3g")
-                  num_mean_se(u, NR, o); printf "\t%s\n", num_pair(o, "%.6g", "%.3g") }' \
-            >> "$OUT/fields.tsv"
+        printf '%s' "$rows" | "$ANALYSE" fields-mean-row "$P" "$m" >> "$OUT/fields.tsv"
         # momentum balance: at m = 0 exact at every step; at m = 1 on average in the steady state
         emit_from "m${m}_P${P}_s1" force_on_cylinder_x "drag_m${m}_P$P"
-        num_awk -F'\t' -v q="force_balance_m${m}_P$P" -v P="$P" -v v="$(get "m${m}_P${P}_s1" force_on_cylinder_x)" \
-            'BEGIN { split(v, x, "\t"); num_div(x[1], x[2], 144 * P, o); o["v"] -= 1; print num_row(q, o) }' >> "$OUT/summary.tsv"
+        "$ANALYSE" force-balance "force_balance_m${m}_P$P" "$P" "$(get "m${m}_P${P}_s1" force_on_cylinder_x)" >> "$OUT/summary.tsv"
     done
 done
 # Mach number of the m = 1 runs: U / c_T with the isothermal speed of sound
 # c_T = sqrt(dp/dn / m) from the pressure at n = 4 (1 -+ 5 %, runs eos_N137 and eos_N151), central difference
-c2=$(num_awk -F'\t' -v lo="$(get eos_N137 pressure)" -v hi="$(get eos_N151 pressure)" 'BEGIN {
-        split(lo, a, "\t"); split(hi, b, "\t"); dn = (151 - 137) / 36.0
-        num_diff(b[1], b[2], a[1], a[2], o); num_div(o["v"], o["se"], dn, o); printf "%s", num_pair(o) }')
-echo "$c2" | num_awk -F'\t' '{ num_sqrt($1, $2, o); printf "sound_speed_m1\t%s\n", num_pair(o, "%.6g", "%.3g") }' >> "$OUT/summary.tsv"
+c2=$("$ANALYSE" eos-slope "$(get eos_N137 pressure)" "$(get eos_N151 pressure)")
+"$ANALYSE" sound-speed "$c2" >> "$OUT/summary.tsv"
 printf 'P\tmach\tmach_se\n' > "$OUT/mach.tsv"
-num_awk -F'\t' -v c2="$c2" 'BEGIN { split(c2, x, "\t"); num_sqrt(x[1], x[2], cs) }
-    NR > 1 && $2 == 1 { num_ratio($7, $8, cs["v"], cs["se"], o); printf "%s\t%s\n", $1, num_pair(o, "%.6g", "%.3g") }' \
-    "$OUT/fields.tsv" >> "$OUT/mach.tsv"
-awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { printf "mach_m1_P%s\t%s\t%s\n", $1, $2, $3 }' "$OUT/mach.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" fig08-mach "$OUT/fields.tsv" "$c2" >> "$OUT/mach.tsv"
+"$ANALYSE" fig08-mach-rows "$OUT/mach.tsv" >> "$OUT/summary.tsv"
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
-num_awk -F'\t' 'NR > 1 && ($1 == "0.1" || $1 == "1.0") { R[$2, $1] = $3; Rse[$2, $1] = $4; D[$2, $1] = $5; Dse[$2, $1] = $6 }
-    function ratio(q, a, as, b, bs) { G[q] = num_ratio(a, as, b, bs, o); E[q] = o["se"]
-                                      printf "%s\t%.6g\t%.3g\n", q, G[q], E[q] }
-    END { for (m = 0; m <= 1; m++) {
-              ratio("residual_growth_m" m, R[m, "1.0"], Rse[m, "1.0"], R[m, "0.1"], Rse[m, "0.1"])
-              ratio("divu_growth_m" m, D[m, "1.0"], Dse[m, "1.0"], D[m, "0.1"], Dse[m, "0.1"]) }
-          ratio("residual_growth_ratio_m1_m0", G["residual_growth_m1"], E["residual_growth_m1"], G["residual_growth_m0"], E["residual_growth_m0"])
-          ratio("divu_growth_ratio_m1_m0", G["divu_growth_m1"], E["divu_growth_m1"], G["divu_growth_m0"], E["divu_growth_m0"]) }' \
-    "$OUT/fields.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" fig08-growths "$OUT/fields.tsv" >> "$OUT/summary.tsv"
 }
 experiment

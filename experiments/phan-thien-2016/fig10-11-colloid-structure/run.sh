@@ -24,8 +24,7 @@ emit_from colloid colloid_spring_extension_max_relative
 emit_from colloid mean_velocity_solvent_x
 emit_from colloid mean_velocity_solvent_y
 # solvent size: lower edge of the first RDF bin (dr = 0.01) where g reaches 0.001
-awk -F'\t' 'NR > 1 && $2 >= 0.001 { printf "solvent_radius\t%.6g\t0\n", $1 - 0.005; exit }' \
-    "$OUT/runs/colloid/rdf.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" solvent-radius "$OUT/runs/colloid/rdf.tsv" >> "$OUT/summary.tsv"
 for t in rdf msd colloid_msd colloid_around; do cp "$OUT/runs/colloid/$t.tsv" "$OUT/$t.tsv"; done
 }
 experiment

@@ -25,13 +25,11 @@ for k in $ks; do
     emit_from "k$k" viscosity "eta_k$k"
     emit_ratio "eta_r_k$k" "k$k" viscosity k0 viscosity
     e=$(get "k$k" viscosity) e0=$(get k0 viscosity) es=$(get "k$k" viscosity_spring)
-    num_awk -F'\t' -v k=$k -v e="$e" -v e0="$e0" -v es="$es" 'BEGIN { split(e, a, "\t"); split(e0, b, "\t"); split(es, c, "\t")
-        phi = 3 * k / (144 + 3 * k); r = num_ratio(a[1], a[2], b[1], b[2], o); rse = o["se"]
-        printf "%d\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.6g\t%.4g\n", k, phi, a[1], a[2], r, rse, r - 1, c[1], c[2] }' >> "$OUT/eta_r.tsv"
+    "$ANALYSE" fig12-row $k "$e" "$e0" "$es" >> "$OUT/eta_r.tsv"
 done
 # eq. 53 slope: eta_r - 1 = s phi through (0, 1), weighted (GSL gsl_fit_wmul), phi <= 0.06 (k = 1, 2, 3)
 "$DPD" fit-line "$OUT/eta_r.tsv" --x phi --y eta_r_minus_1 --se eta_r_se --range 0:0.06 --origin > "$OUT/fit.tsv"
-awk -F'\t' '$1=="slope"{printf "eta_r_slope\t%s\t%s\n", $2, $3} $1=="chi2_dof"{printf "eta_r_slope_chi2_dof\t%s\t0\n", $2}' "$OUT/fit.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" slope-rows "$OUT/fit.tsv" eta_r_slope >> "$OUT/summary.tsv"
 # the spring stress at the most concentrated suspension (the paper: oscillatory, zero mean)
 emit_from k8 viscosity_spring eta_spring_k8
 }

@@ -24,7 +24,7 @@ done
 analysis() {
 f1011=$(upstream phan-thien-2016/fig10-11-colloid-structure)/summary.tsv
 # the analysis
-a=$(awk -F'\t' '$1=="colloid_radius"{print $2}' "$f1011") D=$(awk -F'\t' '$1=="D_colloid"{print $2}' "$f1011")
+a=$("$ANALYSE" lookup "$f1011" colloid_radius | cut -f1) D=$("$ANALYSE" lookup "$f1011" D_colloid | cut -f1)
 emit colloid_radius "$a" 0
 emit D_colloid "$D" 0
 printf 'rate\tPe\teta\teta_se\teta_solvent\teta_solvent_se\teta_r\teta_r_se\n' > "$OUT/thinning.tsv"
@@ -33,16 +33,13 @@ for r in $rates; do
     emit_from "k0_rate$r" viscosity "eta_solvent_rate$r"
     emit_ratio "eta_r_rate$r" "k1_rate$r" viscosity "k0_rate$r" viscosity
     e=$(get "k1_rate$r" viscosity) e0=$(get "k0_rate$r" viscosity)
-    num_awk -F'\t' -v r=$r -v a="$a" -v D="$D" -v e="$e" -v e0="$e0" 'BEGIN { split(e, x, "\t"); split(e0, y, "\t")
-        q = num_ratio(x[1], x[2], y[1], y[2], o); qs = o["se"]
-        printf "%s\t%.6g\t%.8g\t%.4g\t%.8g\t%.4g\t%.8g\t%.4g\n", r, r * a * a / D, x[1], x[2], y[1], y[2], q, qs }' >> "$OUT/thinning.tsv"
+    "$ANALYSE" thinning-row $r "$a" "$D" "$e" "$e0" >> "$OUT/thinning.tsv"
 done
 lo=${rates%% *} hi=${rates##* }
 emit_ratio thinning_ratio "k1_rate$lo" viscosity "k1_rate$hi" viscosity
 emit_ratio solvent_thinning_ratio "k0_rate$lo" viscosity "k0_rate$hi" viscosity
-awk -F'\t' '$1=="thinning_ratio"{ printf "thinning_significance\t%.6g\t0\n", ($2 - 1) / $3 }' "$OUT/summary.tsv" >> "$OUT/summary.tsv"
-num_awk -F'\t' -v lo=$lo -v hi=$hi 'NR > 1 && $1 == lo { a = $7; as = $8 } NR > 1 && $1 == hi { b = $7; bs = $8 }
-    END { num_ratio(a, as, b, bs, o); print num_row("relative_thinning_ratio", o) }' \
-    "$OUT/thinning.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" significance "$OUT/summary.tsv" thinning_ratio thinning_significance > "$OUT/.rows"
+cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+"$ANALYSE" relative-thinning "$OUT/thinning.tsv" $lo $hi >> "$OUT/summary.tsv"
 }
 experiment

@@ -43,20 +43,16 @@ printf 'm\tdt\tshear_rate\tshear_rate_se\ttemperature\n' > "$OUT/m-limit.tsv"
 for m in $masses; do
     dt=$(mdt $m)
     analyse m$m m$m
-    printf '%s\t%s\t%s\t%s\n' $m $dt "$(awk -F'\t' -v q=shear_rate_m$m '$1==q{print $2 "\t" $3}' "$OUT/summary.tsv")" \
+    printf '%s\t%s\t%s\t%s\n' $m $dt "$("$ANALYSE" lookup "$OUT/summary.tsv" shear_rate_m$m)" \
         "$(get m$m temperature | cut -f1)" >> "$OUT/m-limit.tsv"
 done
 mmin=${masses##* }
-emit shear_rate_m_smallest_minus_m0 $(num_awk -F'\t' -v a=shear_rate_m$mmin '$1==a{x=$2; xs=$3} $1=="shear_rate_m0"{y=$2; ys=$3}
-    END{num_diff(x, xs, y, ys, o); printf "%s", num_pair(o)}' "$OUT/summary.tsv")
+"$ANALYSE" summary-diff "$OUT/summary.tsv" shear_rate_m$mmin shear_rate_m0 shear_rate_m_smallest_minus_m0 > "$OUT/.rows"
+cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 # 2. time step of the m = 0 run
 printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OUT/dt-scan.tsv"
 for dt in $dts; do analyse dt$dt dt$dt; done
-awk -F'\t' -v dts="$dts" 'BEGIN{n=split(dts,D," ")} {v[$1]=$2; s[$1]=$3}
-    END{e0=v["eta_dt" D[1]]; best=D[1]
-        for(i=1;i<=n;i++){d=D[i]; e=v["eta_dt" d]; dd=v["density_bulk_max_rel_dev_dt" d]
-            ok=(e/e0 > 0.9 && e/e0 < 1.1 && dd < 0.1); if(ok && bad==0) best=d; if(!ok) bad=1
-            printf "%s\t%s\t%s\t%s\t%s\t%s\t%d\n", d, v["shear_rate_dt" d], s["shear_rate_dt" d], e, s["eta_dt" d], dd, ok >> out}
-        printf "dt_max_sound\t%s\t0\n", best}' out="$OUT/dt-scan.tsv" "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" dt-scan "$OUT/summary.tsv" "$dts" "$OUT/dt-scan.tsv" > "$OUT/.rows"
+cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 }
 experiment

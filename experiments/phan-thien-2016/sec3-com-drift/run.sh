@@ -9,11 +9,10 @@ case $TIER in
 esac
 # amp NAME AXIS: largest |value| of the run's centre-of-mass velocity (v) or position
 amp() { local lo hi; lo=$(get "$1" "com_${2}_min" | cut -f1); hi=$(get "$1" "com_${2}_max" | cut -f1)
-        awk -v a="$lo" -v b="$hi" 'BEGIN{a=a<0?-a:a; b=b<0?-b:b; printf "%.10g", (a>b)?a:b}'; }
+        "$ANALYSE" abs-max "$lo" "$hi" | tr -d '\n'; }
 # emit_list AS VALUES...: mean and standard error over independent runs
 emit_list() { local q=$1; shift
-    num_awk -v q="$q" -v v="$*" 'BEGIN { k = split(v, x, " "); num_mean_se(x, k, o); if (k == 1) o["se"] = 0
-        print num_row(q, o) }' >> "$OUT/summary.tsv"; }
+    "$ANALYSE" mean-list "$q" "$*" >> "$OUT/summary.tsv"; }
 # the simulations
 simulations() {
 for solver in scheme1 scheme2_paper; do

@@ -1,0 +1,353 @@
+#!/usr/bin/env python3
+"""tests/analysis.py - tools/analysis.py, the experiments' analysis layer: every statistic on
+synthetic data whose answer is known in closed form, and the emulation of mawk's number
+formatting and comparisons on which the committed tables' bytes depend (checked against mawk
+itself where it is installed). Prints PASS/FAIL per named check and "N passed, M failed"; exit
+status 1 on any failure. ANALYSIS_PY: another copy of the module to test (a mutant).
+
+Tolerances: inputs of a few significant digits give results exact up to the roundings of at
+most ~20 operations, each within half an ulp (1.1e-16 relative), so a relative 1e-13 holds every
+correct result and fails any wrong formula (n for n - 1, a missing square root, an unweighted
+fit) by far more.
+"""
+import importlib.util
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+path = os.environ.get('ANALYSIS_PY', os.path.join(HERE, '..', 'tools', 'analysis.py'))
+spec = importlib.util.spec_from_file_location('analysis', path)
+A = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(A)
+
+passed = failed = 0
+
+
+def check(name, cond, detail=''):
+    global passed, failed
+    if cond:
+        passed += 1
+        print('PASS ' + name)
+    else:
+        failed += 1
+        print('FAIL %s: %s' % (name, detail))
+
+
+def close(name, got, want, rel=1e-13):
+    g = A.num(got) if isinstance(got, str) else got
+    if isinstance(want, str) and want == 'nan':
+        check(name, A.isnan_text(got), 'got %r, want nan' % (got,))
+        return
+    ok = not math.isnan(g) and abs(g - want) <= rel * (abs(want) if want != 0 else 1)
+    check(name, ok, 'got %r, want %r' % (got, want))
+
+
+def same(name, got, want):
+    check(name, got == want, 'got %r, want %r' % (got, want))
+
+
+tmp = tempfile.mkdtemp(prefix='dpd-analysis-')
+
+
+def tsv(name, text):
+    p = os.path.join(tmp, name)
+    with open(p, 'w') as f:
+        f.write(text)
+    return p
+
+
+# ---- awk's numbers and text (mawk 1.3.4)
+same('astr: an integer value prints as an integer', A.astr(3.0), '3')
+same('astr: -0 prints as 0', A.astr(-0.0), '0')
+same('astr: a fraction by %.6g', A.astr(0.1 + 0.2), '0.3')
+same('astr: 2^31 is past mawk\'s integers: %.6g', A.astr(2.0 ** 31), '2.14748e+09')
+same('astr: -(2^31 - 1) still an integer', A.astr(-2147483647.0), '-2147483647')
+same('astr: a field\'s text unchanged', A.astr('1.50'), '1.50')
+same('cfmt: NaN as nan', A.cfmt('%.4g', float('nan')), 'nan')
+same('cfmt: a NaN with its sign bit as -nan (glibc)', A.cfmt('%.4g', -float('nan')), '-nan')
+same('cfmt: 0/0 is -nan as on x86', A.cfmt('%.3f', A.div(0.0, 0.0)), '-nan')
+same('cfmt: %d of 3e9 clamps to 2^31 - 1 (mawk d_to_I)', A.cfmt('%d', 3e9), '2147483647')
+same('cfmt: %d of NaN is -(2^31 - 1)', A.cfmt('%d', float('nan')), '-2147483647')
+same('cfmt: %d truncates', A.cfmt('%d', -2.7), '-2')
+same('cfmt: %.*f takes the precision from the arguments', A.cfmt('%.*f +- %.*f', 2, '3.14159', 2, 0.005), '3.14 +- 0.01')
+same('cfmt: a numeric conversion of text reads its leading number', A.cfmt('%.2f', '2.5abc'), '2.50')
+same('cfmt: %s of a number is astr', A.cfmt('%s|%s', 2.0, 0.5), '2|0.5')
+close('num: leading number of text', A.num('3.5e1x'), 35.0)
+close('num: empty text is 0', A.num(''), 0.0)
+check('num: the text nan is NaN', math.isnan(A.num('nan')))
+same('num: -inf', A.num('-inf'), -math.inf)
+check('eq: NaN equals any number (mawk compare() returns 0)', A.eq(float('nan'), 0))
+check('le/ge: NaN <= x and NaN >= x hold', A.le(float('nan'), 1) and A.ge(float('nan'), 1))
+check('ne: NaN != x does not hold', not A.ne(float('nan'), 5))
+check('gt: the field "nan" compares as text ("nan" > "0")', A.gt('nan', 0))
+check('gt: the field "-nan" compares as text ("-nan" < "0")', not A.gt('-nan', 0))
+check('gt: numeric-looking fields compare as numbers ("10" > "9")', A.gt('10', '9'))
+check('isnan_text: nan, -nan, NaN', A.isnan_text('nan') and A.isnan_text('-nan') and A.isnan_text('NaN'))
+check('isnan_text: inf is not nan', not A.isnan_text('inf'))
+
+# the emulation against mawk itself: print and printf of the same numbers
+mawk = shutil.which('mawk')
+if mawk:
+    xs = ['0.1', '-2.5', '1e-7', '123456.75', '2147483647', '2147483648', '-0', '1e300', '3', '0.30000000000000004',
+          '6.02214076e23', '-1.5e-300', '7']
+    prog = ('{ x = $1 + 0; print x; printf "%.10g|%.4g|%d|%.3f|%e|%s\\n", x, x, x, x, x, x; '
+            'y = x * 3 / 7; print y, (y < 0.5), (x == 3) }')
+    out = subprocess.run([mawk, prog], input='\n'.join(xs) + '\n', capture_output=True, text=True).stdout.split('\n')
+    mine = []
+    for s in xs:
+        x = A.num(s) + 0.0
+        mine.append(A.astr(x))
+        mine.append(A.cfmt('%.10g|%.4g|%d|%.3f|%e|%s', x, x, x, x, x, x))
+        y = x * 3 / 7
+        mine.append(A.astr(y) + ' ' + ('1' if A.lt(y, 0.5) else '0') + ' ' + ('1' if A.eq(x, 3) else '0'))
+    same('print and printf of %d numbers as mawk prints them' % len(xs), mine, out[:len(mine)])
+else:
+    print('SKIP mawk not installed: the emulation is checked against the fixed cases above only')
+
+# ---- error propagation (first order, independent operands)
+o = A.v_diff('5', '0.3', '2', '0.4')
+close('v_diff: value', o.v, 3.0)
+close('v_diff: errors in quadrature', o.se, 0.5)
+o = A.v_sum(1.5, 0.6, 2.5, 0.8)
+close('v_sum: value', o.v, 4.0)
+close('v_sum: errors in quadrature', o.se, 1.0)
+o = A.v_ratio('6', '0.3', '2', '0.08')
+close('v_ratio: value', o.v, 3.0)
+close('v_ratio: relative errors in quadrature', o.se, 3.0 * math.sqrt(0.05 ** 2 + 0.04 ** 2))
+o = A.v_product('3', '0.09', '4', '0.16')
+close('v_product: value', o.v, 12.0)
+close('v_product: relative errors in quadrature', o.se, 12.0 * 0.05)
+o = A.v_scale('2', '0.1', '-3')
+close('v_scale: value', o.v, -6.0)
+close('v_scale: error times |f|', o.se, 0.3)
+o = A.v_inverse(2, '4', '0.2')
+close('v_inverse: c / a', o.v, 0.5)
+close('v_inverse: |c| sa / a^2', o.se, 2 * 0.2 / 16)
+o = A.v_rel1(10.0, '5', '0.5')
+close('v_rel1: a\'s relative error on x', o.se, 1.0)
+o = A.v_div('9', '0.3', '3')
+close('v_div: (a +- sa) / c', o.v, 3.0)
+close('v_div: error sa / |c|', o.se, 0.1)
+o = A.v_lin2(2, '1', '0.3', -1, '4', '0.4')
+close('v_lin2: w1 a + w2 b', o.v, -2.0)
+close('v_lin2: errors weighted in quadrature', o.se, math.sqrt(0.36 + 0.16))
+o = A.v_sqrt('16', '0.8')
+close('v_sqrt: value', o.v, 4.0)
+close('v_sqrt: error sa / (2 sqrt a)', o.se, 0.1)
+same('a nan operand gives nan nan', A.v_ratio('nan', '1', '2', '0.1').pair(), 'nan\tnan')
+same('Val.pair: %.10g and %.4g', A.Val(1 / 3, 2 / 3).pair(), '0.3333333333\t0.6667')
+close('quad: errors in quadrature', A.quad([3, 4, 12]), 13.0)
+
+# ---- means, jackknife, weighted mean
+o = A.mean_se(['1', '2', '3', '4'])
+close('mean_se: mean', o.v, 2.5)
+close('mean_se: sample sd / sqrt(n)', o.se, math.sqrt(5 / 3 / 4))
+same('mean_se: one value has no error', A.mean_se(['2']).se, 'nan')
+same('mean: a nan value makes the mean nan', A.mean(['1', 'nan']), 'nan')
+# cancellation: a two-pass variance keeps the small scatter of large values
+o = A.mean_se([1e9 + 1, 1e9 + 2, 1e9 + 3])
+close('mean_se: two passes, no cancellation at 1e9', o.se, math.sqrt(1 / 3), 1e-6)
+o = A.jackknife_se(['1', '2', '3'])
+close('jackknife_se: mean of the leave-one-out estimates', o.v, 2.0)
+close('jackknife_se: sqrt((n - 1) / n sum (x - m)^2)', o.se, math.sqrt(2 / 3 * 2))
+o = A.wmean_se(['1', '3', '100', '7'], ['1', '1', '0', 'nan'])
+close('wmean_se: inverse-variance weights, se <= 0 and nan left out', o.v, 2.0)
+close('wmean_se: 1 / sqrt(sum w)', o.se, 1 / math.sqrt(2))
+o = A.wmean_se(['1', '4'], ['1', '2'])
+close('wmean_se: unequal weights', o.v, (1 + 4 / 4) / (1 + 1 / 4))
+o = A.sum_linear(['1', '2'], ['0.1', '0.2'])
+close('sum_linear: errors added linearly', o.se, 0.3)
+
+# ---- fits
+ln = A.line(['0', '1', '2', '3', '4'], [2 + 3 * x for x in range(5)])
+close('line: slope of an exact line', ln.slope, 3.0)
+close('line: intercept of an exact line', ln.icpt, 2.0)
+close('line: zero residuals, zero error', ln.slope_se, 0.0)
+ln = A.line(['0', '1', '2'], ['0', '2', '1'])
+close('line: least-squares slope', ln.slope, 0.5)
+close('line: least-squares intercept', ln.icpt, 0.5)
+close('line: slope error from the residuals (n - 2 dof)', ln.slope_se, math.sqrt(0.75))
+close('line: intercept error from the residuals', ln.icpt_se, math.sqrt(1.25))
+same('line: two points have no residual error', A.line(['0', '1'], ['0', '1']).slope_se, 'nan')
+same('line: equal x give nan', A.line(['1', '1', '1'], ['0', '1', '2']).slope, 'nan')
+ln = A.wline(['0', '1'], ['1', '3'], ['1', '1'])
+close('wline: slope through two points', ln.slope, 2.0)
+close('wline: slope error sqrt(sw / d)', ln.slope_se, math.sqrt(2.0))
+close('wline: intercept error sqrt(sxx / d)', ln.icpt_se, 1.0)
+ln = A.wline(['0', '1', '2'], ['0', '1', '0'], ['0.001', '0.001', '1000'])
+check('wline: a point of large error barely counts (slope ~ 1, unweighted 0)', abs(ln.slope - 1) < 1e-6, ln.slope)
+ln = A.wline(['0', '1', '2', '3'], ['0', '1', 'nan', '5'], ['1', '1', '1', '0'])
+same('wline: nan rows and se <= 0 left out', ln.n, 2)
+o = A.wpoly2(['0', '1', '2', '3'], [1 + 2 * x + 3 * x * x for x in range(4)], ['1', '1', '1', '1'])
+close('wpoly2: c0 of an exact parabola', o.v, 1.0, 1e-12)
+# c0's error for 3 points at x = -1, 0, 1 with se = 1: the inverse normal matrix's (0, 0) element is 1
+o = A.wpoly2(['-1', '0', '1'], ['2', '1', '2'], ['1', '1', '1'])
+close('wpoly2: c0 error from the inverse normal matrix', o.se, 1.0)
+same('wpoly2: fewer than 3 points give nan', A.wpoly2(['0', '1'], ['0', '1'], ['1', '1']).v, 'nan')
+close('det3: the determinant', A.det3(2, 0, 1, 1, 3, 2, 1, 1, 1), 2 * (3 - 2) - 0 + 1 * (1 - 3))
+
+# ---- interpolation, crossing, intervals
+o = A.interp(['0', '1', '2'], ['0', '2', '4'], ['0.1', '0.1', '0.1'], '1.5', '0.05')
+close('interp: linear between the bracketing points', o.v, 3.0)
+close('interp: error from the points (1 - f, f) and through the slope from x\'s', o.se,
+      math.sqrt(0.05 ** 2 + 0.05 ** 2 + (2 * 0.05) ** 2))
+same('interp: outside the table is nan', A.interp(['0', '1'], ['0', '1'], ['0', '0'], '1.5', '0').pair(), 'nan\tnan')
+o = A.crossing(['0', '1', '2', '3', '4'], [str(10 - 2 * x) for x in range(5)], ['0'] * 5, '5', '0.2')
+close('crossing: where the table reaches yq', o.v, 2.5)
+close('crossing: yq\'s error through dx/dy', o.se, 0.1)
+o = A.crossing(['0', '1', '2'], ['0', '2', '0'], ['0', '0', '0'], '1', '0')
+close('crossing: the first crossing from x[1]', o.v, 0.5)
+o = A.crossing(['0', '1', '2'], ['0', '1', '2'], ['0', '0', '0'], '1', '0')
+close('crossing: a tabulated point equal to yq is a crossing (<= 0)', o.v, 1.0)
+same('crossing: never reached is nan', A.crossing(['0', '1'], ['0', '1'], ['0', '0'], '5', '0').v, 'nan')
+close('uniform_se: (hi - lo) / sqrt(12)', A.uniform_se('0.01', '0.02'), 0.01 / math.sqrt(12))
+
+# ---- the TCAF curves (mai-duy-2019)
+free = tsv('free.tsv', '# comment\nk\tn2\tvectors\teta\teta_se\n0.5\t1\t6\t20\t0.5\n1.0\t2\t12\tnan\tnan\n'
+                       '1.5\t3\t8\t10\t0.5\n')
+hk = tsv('hk.tsv', 'k\tn2\tvectors\teta\teta_se\n1.0\t1\t6\t99\t1\n1.5\t1\t6\t98\t1\n3.0\t4\t6\t5\t0.25\n')
+same('tcaf_curve: defined shells, continued above the first file\'s largest k',
+     A.tcaf_curve([free, hk]), ['0.5\t1\t6\t20\t0.5', '1.5\t3\t8\t10\t0.5', '3.0\t4\t6\t5\t0.25'])
+rowsk = A.keff(free, '15', '0', 'x')
+close('keff: k where eta_free(k) = eta_c (linear between the shells)', rowsk[0].split('\t')[1], 1.0, 1e-9)
+close('keff: lambda_eff = 2 pi / k_eff', rowsk[1].split('\t')[1], 2 * 3.14159265358979, 1e-9)
+same('keff: eta_eff is eta_c', rowsk[2], 'eta_eff_x\t15\t0')
+same('keff: no crossing gives nan k and lambda', A.keff(free, '50', '1', 'y')[:2], ['k_eff_y\tnan\tnan', 'lambda_eff_y\tnan\tnan'])
+close('eta_at_wavelength: eta at k = 2 pi / lambda', A.eta_at_wavelength(free, 2 * 3.14159265358979, 'q')[0].split('\t')[1], 15.0, 1e-9)
+
+# ---- experiment reductions on synthetic tables
+lad = tsv('ladder.tsv', 'fluid\tlambda\tdt\tT\tT_se\n'
+                        'gw\t0.5\t0.01\t1.001\t0.001\ngw\t0.5\t0.02\t1.0115\t0.001\ngw\t0.5\t0.04\t1.05\t0.001\n'
+                        'gw\t0.5\t0.05\t1.001\t0.001\n'
+                        'md\t0.5\t0.01\t1.2\t0.001\n')
+same('dt_within_1pct: the last rung within 1 % before the first outside, its uniform error',
+     A.dt_within_1pct(lad), ['dt_T1pct_gw_l0.5\t0.02\t%s' % A.cfmt('%.3g', 0.02 / math.sqrt(12)), 'dt_T1pct_md_l0.5\t0\t%s' % A.cfmt('%.3g', 0.01 / math.sqrt(12))])
+lad_nan = tsv('ladder_nan.tsv', 'fluid\tlambda\tdt\tT\tT_se\n'
+                                'gw\t0.5\t0.01\t1.001\t0.001\ngw\t0.5\t0.02\tnan\tnan\ngw\t0.5\t0.03\t1.001\tnan\n')
+same('dt_within_1pct: an unstable rung (T and stderr nan) ends the ladder, not counted within 1 %',
+     A.dt_within_1pct(lad_nan), ['dt_T1pct_gw_l0.5\t0.01\t%s' % A.cfmt('%.3g', 0.01 / math.sqrt(12))])
+same('largest_sigmas: the largest |value| / stderr and the count',
+     A.largest_sigmas(tsv('s.tsv', 'quantity\tvalue\tstderr\nd_a1\t-3\t1\nd_a2\t1\t0\nd_a3\t2\t0.5\nother\t100\t1\n'), 'd'),
+     ['largest_sigmas_d\t4\t0', 'largest_sigmas_d_cases\t2\t0'])
+tol = tsv('tol.tsv', 'solver\ttolerance\teta\teta_se\terror\terror_se\titerations\tcpu_per_step\ttrue_rel_error\n'
+                     'pcg\t1e-1\t1\t1\t1\t1\t1\t1\t1e-2\npcg\t1e-3\t1\t1\t1\t1\t1\t2\t1e-6\npcg\t1e-5\t1\t1\t1\t1\t1\t3\t1e-10\n')
+r = A.true_error_slopes(tol)[0].split('\t')
+close('true_error_slopes: log-log slope of an exact power law', r[1], 2.0, 1e-5)
+close('rel_error: (e - r) / r', A.rel_error('3', '0', '2', '0')[0].split('\t')[0], 0.5)
+close('rel_error: error sqrt(es^2 + (e rs / r)^2) / r', A.rel_error('3', '0.3', '2', '0.4')[0].split('\t')[1],
+      math.sqrt(0.09 + 0.36) / 2, 1e-4)
+prof = tsv('prof.tsv', 'pos\tdensity\tdensity_se\n0.5\t3\t0.1\n1.5\t4\t0.3\n2.5\t5\t0.4\n9.5\t1\t0.1\n')
+same('bulk_density: mean over the bulk bins, errors in quadrature / n', A.bulk_density(prof, '1:3'), ['4.500000\t0.25'])
+same('first_defined: the first data row', A.first_defined(prof, 2), ['3\t0.1'])
+same('phi-row: count / n', A.COMMANDS['phi-row'](['phi0.1', '1', '8']), ['phi_phi0.1\t0.125\t0'])
+same('pm_text: decimals fall with the size', [A.pm_text({'a': '123.456', 'b': '0.5', 'c': 'nan'}, {'a': '1.23', 'b': '0.01', 'c': 'nan'}, q)
+                                              for q in 'abcd'], ['123.5 +- 1.2', '0.5000 +- 0.0100', 'none', '-'])
+
+# a 4 x 4 density map of side 4 (bin centres 0.5 ... 3.5), the cylinder at (0.5, 0.5) with rex 1.1:
+# by minimum image 5 bins lie within rex (the centre's and its 4 periodic neighbours), 11 remain
+grid = 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(
+    ''.join('%g\t%g\t5\t0\t0\n' % (i + 0.5, j + 0.5) for i in range(4)) for j in range(4))
+r = A.density_fields(tsv('map.tsv', grid), '4', '0.5', '0.5', '1.1', '4')[0].split('\t')
+same('density_fields: bins outside rex by minimum image', r[2], '11')
+close('density_fields: residual sqrt(sum (n - n0)^2) / nb', r[0], math.sqrt(11) / 11, 1e-9)
+# |div u| of u = (1, 2, 0, 0) along x in every row, v = 0: periodic central differences over 2 dx = 2
+# give 1, -0.5, -1, 0.5 (mean |div u| 0.75; differences clamped at the edges would give 0.5)
+grid = 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(
+    ''.join('%g\t%g\t4\t%d\t0\n' % (i + 0.5, j + 0.5, (1, 2, 0, 0)[i]) for i in range(4)) for j in range(4))
+r = A.density_fields(tsv('map2.tsv', grid), '4', '2', '2', '0', '4')[0].split('\t')
+close('density_fields: mean |div u| by periodic central differences', r[1], 0.75, 1e-12)
+
+# ---- more reductions with closed-form answers
+close('project: the amplitude of x along w', A.project(['2', '4', '6'], ['1', '2', '3']), 2.0)
+same('project: w = 0 gives nan', A.project(['1'], ['0']), 'nan')
+o = A.v_relerr(10.0, [0.03, 0.04])
+close('v_relerr: relative errors in quadrature', o.se, 0.5)
+r = A.bisect_dt_max('f', 'p', '1', ' 1:4 1:4')[0].split('\t')
+close('bisect_dt_max: geometric middle of the bracket', r[3], 2.0)
+close('bisect_dt_max: a bracket shared by every seed counts once (width / sqrt 12)', r[4], 3 / math.sqrt(12), 1e-3)
+r = A.bisect_dt_max('f', 'p', '1', ' 1:4 4:16')[0].split('\t')
+close('bisect_dt_max: mean over the seeds', r[3], 5.0)
+close('bisect_dt_max: scatter and the brackets\' resolution in quadrature', r[4],
+      math.sqrt(9 + (math.sqrt(9 + 144) / math.sqrt(12) / 2) ** 2), 1e-3)
+same('bisect_dt_max: a bracket at the end of the range gives nan', A.bisect_dt_max('f', 'p', '1', ' 1:inf 1:4')[0], 'f\tp\t1\tnan\tnan\t1\tinf')
+# dt_max = C x^p (1 + beta x^q) to first order: ln dt = ln C + p ln x + beta x^q exactly, equal relative errors
+xs = [1e4, 2e4, 3e4, 5e4, 7e4, 1e5]
+dm = tsv('dtmax.tsv', 'family\tparameter\tvalue\tdt_max\tdt_max_se\n' + ''.join(
+    'a\ta\t%g\t%.17g\t%.17g\n' % (x, math.exp(0.3 - 0.5 * math.log(x) + 2 * x ** -0.5), 0.01 * math.exp(0.3 - 0.5 * math.log(x) + 2 * x ** -0.5)) for x in xs))
+r = A.dt_max_corrected(dm, 'a', '1e4', '1e5', '-0.5', 'p', 'b', 'c')
+close('dt_max_corrected: the exponent p of an exact corrected law', r[0].split('\t')[1], -0.5, 1e-4)
+close('dt_max_corrected: the correction beta', r[1].split('\t')[1], 2.0, 1e-3)
+close('dt_max_slope: a pure power law\'s exponent', A.dt_max_slope(tsv('pl.tsv', ''.join('a\ta\t%g\t%.17g\t0.001\n' % (x, 3 * x ** -0.5) for x in xs)),
+                                                                      'q', 'a', '1', '1e9')[0].split('\t')[1], -0.5, 1e-4)
+# paired: two seeds, each an exact corrected law with its own offset, brackets of one width
+seeds = tsv('seeds.tsv', 'family\tparameter\tvalue\tseed\tdt_max\tdt_stable\tdt_unstable\n' + ''.join(
+    'a\ta\t%g\t%d\t%.17g\t%.17g\t%.17g\n' % (x, sd, math.exp(c - 0.5 * math.log(x) + x ** -0.5), 0.99 * math.exp(c - 0.5 * math.log(x) + x ** -0.5),
+                                             1.01 * math.exp(c - 0.5 * math.log(x) + x ** -0.5)) for sd, c in ((1, 0.1), (2, 0.4)) for x in xs))
+r = A.dt_max_paired(seeds, 'a', '1e4', '1e5', '-0.5', 'p')
+close('dt_max_paired: the mean exponent over the seeds (offsets cancel)', r[0].split('\t')[1], -0.5, 1e-4)
+check('dt_max_paired: five rows (total, stat, pure, model, resolution)', len(r) == 5 and r[4].startswith('p_resolution'), r)
+# start-up: every run's profile is A(t) y with A = 0.5, 0.8, 1, 1 at t = 1 ... 4; steady over t >= 3
+blk = ''.join('block\tt\tpos\tvx\n' + ''.join('%d\t%d\t%g\t%.17g\n' % (b, b + 1, y, A_ * y) for b, A_ in enumerate((0.5, 0.8, 1.0, 1.0))
+                                              for y in (0.5, 1.5)) for _ in range(3))
+gd = tempfile.mkdtemp(prefix='dpd-growth-', dir=tmp)
+r = A.couette_growth(blk.split('\n')[:-1], '3', 'x', gd)[0].split('\t')
+close('couette_growth: t90 linear between block times', r[1], 2.5, 1e-12)
+close('couette_growth: identical runs, zero jackknife error', r[2], 0.0)
+same('couette_growth: a(t) written per block', open(os.path.join(gd, 'growth_x.tsv')).read(), 't\ta\n1\t0.5\n2\t0.8\n3\t1\n4\t1\n')
+# equal error: iterations = -10 ln E, CPU = 2 x iterations, E* = 1e-3 between 1e-2 and 1e-4
+lad = tsv('ee.tsv', 'solver\ttolerance\titerations\titerations_se\ttrue_error\tcpu_seconds\tcpu_seconds_se\n' + ''.join(
+    '%s\tt\t%.17g\t0\t%g\t%.17g\t0\n' % (s, -f * 10 * math.log(e), e, -f * 20 * math.log(e)) for s, f in
+    (('scheme1', 1), ('scheme2_paper', 2), ('scheme2_consistent', 1), ('pcg', 1), ('pcg_2level', 0.5)) for e in (1e-2, 1e-4, 1e-6)))
+r = dict(l.split('\t', 1) for l in A.equal_error(lad, '1e-3'))
+close('equal_error: iterations interpolated in log E', r['iterations_at_Estar_scheme1'].split('\t')[0], -10 * math.log(1e-3), 1e-5)
+same('equal_error: the best solver', r['best_iterations_is_pcg_2level'], '1\t0')
+close('equal_error: the ratio to the best', r['iteration_ratio_scheme2_best'].split('\t')[0], 4.0, 1e-5)
+
+blk = ''.join('block\tt\tpos\tvx\n' + ''.join('%d\t%d\t%g\t%.17g\n' % (b, b + 1, y, A_ * y) for b, A_ in enumerate((0.5, 0.6, 0.7, 1.0))
+                                              for y in (0.5, 1.5)) for _ in range(2))
+close('couette_growth: t90 between the last two blocks (%.6g)',
+      A.couette_growth(blk.split('\n')[:-1], '4', 'y', gd)[0].split('\t')[1], 3 + (0.9 - 0.7) / 0.3, 1e-6)
+r = dict(l.split('\t', 1) for l in A.equal_error(lad, '3e-3'))
+close('equal_error: interpolated off the midpoint in log E', r['iterations_at_Estar_scheme1'].split('\t')[0], -10 * math.log(3e-3), 1e-5)
+
+
+def inverse3(m):
+    """Gauss-Jordan inverse of a 3 x 3 matrix (an independent route to the fit's coefficients)"""
+    a = [list(row) + [1.0 if i == j else 0.0 for j in range(3)] for i, row in enumerate(m)]
+    for c in range(3):
+        piv = max(range(c, 3), key=lambda r: abs(a[r][c]))
+        a[c], a[piv] = a[piv], a[c]
+        f = a[c][c]
+        a[c] = [x / f for x in a[c]]
+        for r in range(3):
+            if r != c:
+                g = a[r][c]
+                a[r] = [x - g * y for x, y in zip(a[r], a[c])]
+    return [row[3:] for row in a]
+
+
+rows_ = [(1.0, math.log(x), x ** -0.5) for x in xs]
+M = [[sum(r[i] * r[j] for r in rows_) for j in range(3)] for i in range(3)]
+res = math.sqrt(inverse3(M)[1][1]) * math.log(1.01 / 0.99) / math.sqrt(12)
+r = A.dt_max_paired(seeds, 'a', '1e4', '1e5', '-0.5', 'p')
+close('dt_max_paired: the resolution sqrt(sum c_i^2 ln(hi/lo)^2 / 12), c_i = (X^T X)^-1 X^T row of p', r[4].split('\t')[1],
+      float('%.3g' % res), 1e-12)
+
+# ---- the command line a run.sh calls (tools/analyse)
+cli = os.path.join(HERE, '..', 'tools', 'analyse')
+if 'ANALYSIS_PY' not in os.environ:
+    p = subprocess.run([cli, 'diff', '5\t0.3', '2\t0.4'], capture_output=True, text=True)
+    same('tools/analyse diff: a TSV row on stdout, exit 0', (p.stdout, p.returncode), ('3\t0.5\n', 0))
+    p = subprocess.run([cli, 'no-such-subcommand'], capture_output=True, text=True)
+    check('tools/analyse: an unknown subcommand exits 2 naming the subcommands, nothing on stdout',
+          p.returncode == 2 and 'usage' in p.stderr and p.stdout == '', (p.returncode, p.stderr[:60]))
+    p = subprocess.run([cli, 'lookup', os.path.join(tmp, 'no-such.tsv'), 'q'], capture_output=True, text=True)
+    check('tools/analyse: a missing file exits 1 naming it', p.returncode == 1 and 'no-such.tsv' in p.stderr, (p.returncode, p.stderr))
+
+shutil.rmtree(tmp)
+print('%d passed, %d failed' % (passed, failed))
+sys.exit(1 if failed else 0)
