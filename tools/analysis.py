@@ -356,9 +356,9 @@ def mean(xs):
     return s / n
 
 
-def mean_se(xs):
-    """mean and standard error: sample standard deviation (two passes) / sqrt(n), for n
-    independent values; error "nan" for n < 2 (num_mean_se)"""
+def _mean_spread(xs, error):
+    """the mean of XS and ERROR(n, sum of squared deviations from it), the sum in the order of
+    the values (the second of two passes); error "nan" for n < 2"""
     n = len(xs)
     m = mean(xs)
     if n < 2 or m == 'nan':
@@ -366,20 +366,19 @@ def mean_se(xs):
     ss = 0.0
     for x in xs:
         ss += sq(num(x) - m)
-    return Val(m, sqrt(ss / (n - 1) / n))
+    return Val(m, error(n, ss))
+
+
+def mean_se(xs):
+    """mean and standard error: sample standard deviation (two passes) / sqrt(n), for n
+    independent values; error "nan" for n < 2 (num_mean_se)"""
+    return _mean_spread(xs, lambda n, ss: sqrt(ss / (n - 1) / n))
 
 
 def jackknife_se(xs):
     """X the n leave-one-out estimates: their mean and the jackknife error
     sqrt((n - 1) / n sum (x - mean)^2) (Efron & Tibshirani 1993, ch. 11; num_jackknife_se)"""
-    n = len(xs)
-    m = mean(xs)
-    if n < 2 or m == 'nan':
-        return Val(m, 'nan')
-    ss = 0.0
-    for x in xs:
-        ss += sq(num(x) - m)
-    return Val(m, sqrt((n - 1) / n * ss))
+    return _mean_spread(xs, lambda n, ss: sqrt((n - 1) / n * ss))
 
 
 def wmean_se(xs, ses):

@@ -390,3 +390,21 @@ emit_minus() {
     num_awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { if (split(a, x, "\t") < 2) x[2] = 0; if (split(b, y, "\t") < 2) y[2] = 0
         num_diff(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
 }
+
+# two_sphere_blocks NAME BLOCKS: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
+# the torque (T_a - T_b) / 2 about z (sphere a at lower y) of a run with two fixed colloids (pan-2008
+# tab03's pair), BLOCKS contiguous blocks of the samples in run.h5 (the first n mod BLOCKS skipped, as
+# src/core/blockavg.c), kept in runs/NAME/sphere_blocks.tsv (run.h5 is not kept): the two spheres'
+# noises are averaged sample by sample, so their correlation is in the error
+two_sphere_blocks() {
+    local f=$OUT/runs/$1/sphere_blocks.tsv nb=$2
+    [ -f "$f" ] && return 0
+    [ -f "$OUT/runs/$1/run.h5" ] || { echo "exp.sh: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
+    paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
+          <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
+        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
+            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
+                for (b = 0; b < B; b++) {
+                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
+                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
+}

@@ -110,20 +110,7 @@ windows() {
         for (i = 1; i <= W; i++) y[i] = x[b * W + i]; printf "%.10g\n", num_mean(y, W) } }' > "$f.tmp" && mv "$f.tmp" "$f"
 }
 # pan-2008/tab03's drag per sphere and antisymmetric torque per block (its sphere_blocks)
-pair_blocks() {
-    local f=$OUT/runs/$1/sphere_blocks.tsv nb=50
-    [ -f "$f" ] && return 0
-    # (a planned run has no run.h5 yet: the pass stops here, as tab03's; without this check the
-    # failing h5_series inside paste would leave a table of nan blocks that later passes keep)
-    [ -f "$OUT/runs/$1/run.h5" ] || { echo "pan-estimators: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
-    paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
-          <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
-            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
-                for (b = 0; b < B; b++) {
-                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
-                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
-}
+pair_blocks() { two_sphere_blocks "$1" 50; }
 analysis() {
 for s in $SEEDS; do
     for V in 0.0 0.3 0.003; do windows twin_drag_s${s}_V$V drag_on_colloid_x 5; done

@@ -71,23 +71,9 @@ eq23() {  # l u -> F_the T_the (eq. 23)
         T = 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024)
         printf "%.10g %.10g\n", F, T}'
 }
-# sphere_blocks NAME [BLOCKS]: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
-# the torque (T_a - T_b) / 2 about z (sphere a at lower y), B (or BLOCKS) contiguous blocks of the
-# samples in run.h5 (the first n mod B skipped, as src/core/blockavg.c), kept in
-# runs/NAME/sphere_blocks.tsv: the two spheres' noises are averaged sample by sample, so
-# their correlation is in the error
-sphere_blocks() {
-    local f=$OUT/runs/$1/sphere_blocks.tsv nb=${2:-$B}
-    [ -f "$f" ] && return 0
-    [ -f "$OUT/runs/$1/run.h5" ] || { echo "tab03: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
-    paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
-          <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
-            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
-                for (b = 0; b < B; b++) {
-                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
-                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
-}
+# sphere_blocks NAME [BLOCKS]: the two spheres' per-block drag and torque, B (or BLOCKS) blocks
+# (tools/lib/exp.sh two_sphere_blocks)
+sphere_blocks() { two_sphere_blocks "$1" "${2:-$B}"; }
 # row_blocks R: the sphere_blocks of row R's runs, one header
 row_blocks() { local n; echo "block	drag	torque"; for n in $(row_runs $1); do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
