@@ -22,7 +22,7 @@ DEPS_STAMP := build/.deps-ok
 
 # The simulator's folders, lowest layer first (README.md, "The simulator"): a
 # file includes only from its own layer and those before it (tests/layers.sh).
-LAYERS := core pair dynamics bodies measure analysis io app
+LAYERS := core pair dynamics bodies measure simd analysis io app
 SRC_DIRS := $(addprefix src/,$(LAYERS))
 INCLUDES := $(addprefix -I,$(SRC_DIRS))
 HDRS := $(wildcard $(addsuffix /*.h,$(SRC_DIRS)))
@@ -47,12 +47,13 @@ PKG_LIBS = $(shell pkg-config --libs $(PKGS) 2>/dev/null)
 $(BUILD)/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)
 	@echo "CC $<"
-	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) (forces.c and pair_*.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) (forces.c, pair_*.c and pan_lanes_x86.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
 
 # the pair driver and the pair styles without errno from sqrt (an argument never negative
-# there), so that the lane-wise pair loops vectorise (pair_pan2008.c); the same IEEE results
+# there), so that the lane-wise pair loops vectorise (pan_lanes.h, in pair_pan2008.c and the
+# backend's pan_lanes_x86.c and pair_avx512.c); the same IEEE results
 PAIR_DRIVER_FLAGS := -fno-math-errno
-PAIR_DRIVER_OBJ := forces.o pair_dpd.o pair_pan2008.o pair_avx512.o pair_styles.o
+PAIR_DRIVER_OBJ := forces.o pair_dpd.o pair_pan2008.o pair_avx512.o pan_lanes_x86.o pair_styles.o
 $(addprefix $(BUILD)/,$(PAIR_DRIVER_OBJ)) $(addprefix $(BUILD)/bare/,$(PAIR_DRIVER_OBJ)): CFLAGS_ALL += $(PAIR_DRIVER_FLAGS)
 
 # the objects that print the version are rebuilt when it changes, not only when their source does
@@ -82,7 +83,7 @@ BARE_OBJ := $(patsubst %.c,$(BUILD)/bare/%.o,$(notdir $(SRC) src/app/main.c))
 $(BUILD)/bare/%.o: %.c $(HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(BUILD)/bare
 	@echo "CC $< (bare)"
-	@$(CC) $(CFLAGS_ALL) $(INCLUDES) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE (forces.c and pair_*.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
+	@$(CC) $(CFLAGS_ALL) $(INCLUDES) -DDPD_BARE $(PKG_CFLAGS) -DDPD_GIT='"$(GIT_DESCRIBE)"' -DDPD_CFLAGS='"$(CFLAGS_ALL) -DDPD_BARE (forces.c, pair_*.c and pan_lanes_x86.c: $(PAIR_DRIVER_FLAGS))"' -c $< -o $@
 
 $(BARE): $(BARE_OBJ)
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm

@@ -95,6 +95,19 @@ static inline __attribute__((always_inline)) double rng_pair_normal(uint32_t see
  * pairs of the batch at once). */
 #define RNG_BATCH 256
 
+/* GSL's ziggurat strip tables as random.c reads them out of GSL at start, for
+ * the batch kernels (random.c, and the backend's: simd.h SimdKernels): per
+ * strip i, the word (j << 8 | 0x80 | i) is accepted at once iff j < k[i], and
+ * then gives j * w[i]; wedge_a and wedge_b bracket GSL's wedge test (random.c
+ * wedge_init). */
+typedef struct ZigTables {
+    uint32_t k[128];
+    double w[128];
+    double wedge_a[2][128], wedge_b[2][128];
+} ZigTables;
+/* The wedge's outcome for a pair not accepted at once */
+enum { WEDGE_KEPT = 0, WEDGE_NOT_KEPT = 1, WEDGE_OPEN = 2 };
+
 /* The first block of each pair's noise sequence: counter (step, lo id, hi id). */
 void rng_pair_blocks(uint32_t seed, uint64_t step, int m, const uint32_t *id_a, const uint32_t *id_b,
                      uint32_t w[4][RNG_BATCH]);

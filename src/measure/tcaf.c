@@ -12,6 +12,7 @@
 #include "tcaf.h"
 #include "blockavg.h"
 #include "simd.h"
+#include "tcaf_sums.h"
 
 static int selected(const Tcaf *t, const System *s, int i)
 {
@@ -169,21 +170,9 @@ void tcaf_free(Tcaf *t)
  * the TCAF_CHUNKS fixed particle ranges in chunk order: J does not depend on
  * the thread count, nor on the instruction set (the same IEEE operations in
  * every lane, no contraction). Particles side by side, not wave vectors: the
- * runs are 1 to 11 vectors long, which lanes of wave vectors had to pad. */
-#define TCAF_LANES 8
+ * runs are 1 to 11 vectors long, which lanes of wave vectors had to pad.
+ * TCAF_LANES, the runs and items, the layout and the block sums: tcaf_sums.h. */
 #define TCAF_TILES 32   /* tiles of TCAF_LANES particles per block (80 KB of tables at n2max = 25; 8, 16, 32, 64: 0.98, 0.88, 0.86, 0.85 s per 600 steps of fig01's scene) */
-
-/* A run: fixed (i, |j|) (jneg: j < 0, the conjugate of the y table), its
- * items it0 ... it1 - 1. An item: l >= 0, the vector of +l and that of -l
- * (-1: not in the run). The half space of wave_vectors has +l wherever it
- * has -l. */
-typedef struct TcafRun { int i, j, jneg, it0, it1; } TcafRun;
-typedef struct TcafItem { int l, qp, qm; } TcafItem;
-
-/* A tile's tables in rows of TCAF_LANES doubles (one per particle): from row
- * a, Re and Im of e^{i m k_x x} for m = 0 ... nmax[0] (rows a + 2m, a + 2m + 1);
- * then the same for y (from b) and z (from c); then the velocity (rows v ... v + 2). */
-typedef struct { int a, b, c, v, stride; } TcafLayout;
 
 static TcafLayout tcaf_layout(const Tcaf *t)
 {
@@ -261,72 +250,10 @@ static void clear_lanes(double *p, int k0, TcafLayout lay)
         for (int k = k0; k < TCAF_LANES; k++) p[(size_t)r * TCAF_LANES + k] = 0.0;
 }
 
-/* The sums of a block of ntile tiles, added to the lanes' sums acc (vector q,
- * component c = 2d + (0: Re, 1: Im), lane k at ((q * 6 + c) * TCAF_LANES + k)).
- * VT holds W of a tile's lanes, which are done W at a time (h): every level
- * does the same operations on every lane. The sums of an item stay in
- * registers while the block's tiles are added. */
-#define TCAF_ROW(VT, base, row) (*(VT *)((base) + (size_t)(row) * TCAF_LANES))
-#define TCAF_BLOCK_SUMS(NAME, VT, W, TARGET)                                                          \
-TARGET static void NAME(const Tcaf *t, TcafLayout lay, const double *tab, int ntile,                   \
-                        double *restrict abuf, double *restrict acc)                                   \
-{                                                                                                      \
-    for (int h = 0; h < TCAF_LANES; h += W)                                                            \
-        for (int r = 0; r < t->nrun; r++) {                                                            \
-            const TcafRun *R = &t->run[r];                                                             \
-            for (int b = 0; b < ntile; b++) {   /* e^{i(k_x x + k_y y)}: (a)(b) or (a)(conj b) */       \
-                const double *p = tab + (size_t)b * lay.stride * TCAF_LANES + h;                       \
-                const VT ar = TCAF_ROW(VT, p, lay.a + 2 * R->i), ai = TCAF_ROW(VT, p, lay.a + 2 * R->i + 1); \
-                const VT br = TCAF_ROW(VT, p, lay.b + 2 * R->j), bj = TCAF_ROW(VT, p, lay.b + 2 * R->j + 1); \
-                const VT bi = R->jneg ? -bj : bj;                                                      \
-                TCAF_ROW(VT, abuf + h, 2 * b) = ar * br - ai * bi;                                     \
-                TCAF_ROW(VT, abuf + h, 2 * b + 1) = ar * bi + ai * br;                                 \
-            }                                                                                          \
-            for (int it = R->it0; it < R->it1; it++) {                                                 \
-                const TcafItem *e = &t->item[it];                                                      \
-                const int both = e->qm >= 0;                                                           \
-                double *sp = acc + (size_t)e->qp * 6 * TCAF_LANES + h;                                 \
-                double *sm = acc + (size_t)(both ? e->qm : 0) * 6 * TCAF_LANES + h;                    \
-                VT s[6], m[6];                                                                         \
-                for (int c = 0; c < 6; c++) { s[c] = TCAF_ROW(VT, sp, c); m[c] = TCAF_ROW(VT, sm, c); } \
-                for (int b = 0; b < ntile; b++) {                                                      \
-                    const double *p = tab + (size_t)b * lay.stride * TCAF_LANES + h;                   \
-                    const VT abr = TCAF_ROW(VT, abuf + h, 2 * b), abi = TCAF_ROW(VT, abuf + h, 2 * b + 1); \
-                    const VT cr = TCAF_ROW(VT, p, lay.c + 2 * e->l), cj = TCAF_ROW(VT, p, lay.c + 2 * e->l + 1); \
-                    const VT v0 = TCAF_ROW(VT, p, lay.v), v1 = TCAF_ROW(VT, p, lay.v + 1), v2 = TCAF_ROW(VT, p, lay.v + 2); \
-                    if (both) {   /* (ab)(c) and (ab)(conj c) from four products */                    \
-                        const VT p1 = abr * cr, p2 = abi * cj, p3 = abr * cj, p4 = abi * cr;           \
-                        const VT pr = p1 - p2, pi = p3 + p4, qr = p1 + p2, qi = p4 - p3;               \
-                        s[0] += v0 * pr; s[1] += v0 * pi; s[2] += v1 * pr;                             \
-                        s[3] += v1 * pi; s[4] += v2 * pr; s[5] += v2 * pi;                             \
-                        m[0] += v0 * qr; m[1] += v0 * qi; m[2] += v1 * qr;                             \
-                        m[3] += v1 * qi; m[4] += v2 * qr; m[5] += v2 * qi;                             \
-                    } else {      /* +l alone: (ab)(c) */                                              \
-                        const VT pr = abr * cr - abi * cj, pi = abr * cj + abi * cr;                   \
-                        s[0] += v0 * pr; s[1] += v0 * pi; s[2] += v1 * pr;                             \
-                        s[3] += v1 * pi; s[4] += v2 * pr; s[5] += v2 * pi;                             \
-                    }                                                                                  \
-                }                                                                                      \
-                for (int c = 0; c < 6; c++) TCAF_ROW(VT, sp, c) = s[c];                                \
-                if (both) for (int c = 0; c < 6; c++) TCAF_ROW(VT, sm, c) = m[c];                      \
-            }                                                                                          \
-        }                                                                                              \
-}
-
-/* The vector types (may_alias: they read the double arrays); 8 lanes on
- * AVX-512, 4 on AVX2, 2 on baseline x86-64 (SSE2), chosen by simd_level(). */
-typedef double tcaf_v2 __attribute__((vector_size(16), may_alias));
-typedef double tcaf_v4 __attribute__((vector_size(32), may_alias));
-typedef double tcaf_v8 __attribute__((vector_size(64), may_alias));
-typedef void (*BlockSumsFn)(const Tcaf *, TcafLayout, const double *, int, double *, double *);
-TCAF_BLOCK_SUMS(block_sums_portable, tcaf_v2, 2, )
-#ifdef DPD_HAVE_X86_SIMD
-TCAF_BLOCK_SUMS(block_sums_avx2, tcaf_v4, 4, __attribute__((target("avx2"))))
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"
-TCAF_BLOCK_SUMS(block_sums_avx512, tcaf_v8, 8, __attribute__((target("avx512f"))))
-#pragma GCC diagnostic pop
-#endif
+/* The block sums (tcaf_sums.h) on two lanes at a time, for any x86-64 (SSE2);
+ * the backend has them on four (AVX2) and eight (AVX-512): simd.h
+ * SimdKernels.tcaf_block_sums. */
+TCAF_BLOCK_SUMS(block_sums_portable, tcaf_v2, 2, static)
 
 void tcaf_current(Tcaf *t, const System *s)
 {
@@ -335,7 +262,8 @@ void tcaf_current(Tcaf *t, const System *s)
     const TcafLayout lay = tcaf_layout(t);
     const size_t per_chunk = (size_t)nv * 6 * TCAF_LANES, tile = (size_t)lay.stride * TCAF_LANES;
     memset(t->lane_sum, 0, TCAF_CHUNKS * per_chunk * sizeof(double));
-    const BlockSumsFn block_sums = SIMD_PICK(block_sums_portable, block_sums_avx2, block_sums_avx512);
+    const SimdKernels *sk = simd_kernels();
+    const TcafBlockSumsFn block_sums = sk->tcaf_block_sums ? sk->tcaf_block_sums : block_sums_portable;
     #pragma omp parallel for schedule(static, 1)
     for (int chunk = 0; chunk < TCAF_CHUNKS; chunk++) {
         double *acc = t->lane_sum + chunk * per_chunk;
@@ -345,11 +273,11 @@ void tcaf_current(Tcaf *t, const System *s)
         for (int i = i0; i < i1; i++) {
             if (!selected(t, s, i)) continue;
             phase_tables(tab + (size_t)(nb / TCAF_LANES) * tile, nb % TCAF_LANES, lay, s, i, M);
-            if (++nb == TCAF_TILES * TCAF_LANES) { block_sums(t, lay, tab, TCAF_TILES, abuf, acc); nb = 0; }
+            if (++nb == TCAF_TILES * TCAF_LANES) { block_sums(t->run, t->nrun, t->item, &lay, tab, TCAF_TILES, abuf, acc); nb = 0; }
         }
         if (nb > 0) {
             if (nb % TCAF_LANES) clear_lanes(tab + (size_t)(nb / TCAF_LANES) * tile, nb % TCAF_LANES, lay);
-            block_sums(t, lay, tab, (nb + TCAF_LANES - 1) / TCAF_LANES, abuf, acc);
+            block_sums(t->run, t->nrun, t->item, &lay, tab, (nb + TCAF_LANES - 1) / TCAF_LANES, abuf, acc);
         }
     }
     /* the lanes' sums in lane order, then the chunks' in chunk order (as

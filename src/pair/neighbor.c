@@ -283,67 +283,9 @@ size_t scan_segment(const double *x, int j0, int j1, double sx, double sy, doubl
     return len;
 }
 
-/* SCAN_SLACK: the slots past the last kept entry that a scan may write. */
-#ifdef DPD_HAVE_X86_SIMD
-#include <immintrin.h>
+/* SCAN_SLACK: the slots past the last kept entry that a scan may write (the
+ * backend's, simd.h SimdKernels.nl_scan, stores sixteen at a time). */
 #define SCAN_SLACK 16
-/* scan_segment eight candidates at a time: their coordinates read as three
- * whole vectors (x is x, y, z per particle) and sorted into x, y and z lanes,
- * the same subtractions and r^2 (no contraction), so the same test results;
- * the kept j compressed and stored whole. */
-/* The coordinates of candidates j .. j + cnt - 1 (cnt <= 8) in x, y and z
- * lanes: three whole vectors of x (x, y, z per particle) sorted by six
- * permutations, no gather */
-static inline __attribute__((target("avx512f"), always_inline))
-void load_group_avx512(const double *x, int j, int cnt, __m512d *X, __m512d *Y, __m512d *Z)
-{
-    /* lanes of x, y, z from A = x[3j .. 3j + 7], B = the next 8, C = the 8 after */
-    const __m512i xab = _mm512_set_epi64(0, 0, 15, 12, 9, 6, 3, 0), xc = _mm512_set_epi64(13, 10, 5, 4, 3, 2, 1, 0);
-    const __m512i yab = _mm512_set_epi64(0, 0, 0, 13, 10, 7, 4, 1), yc = _mm512_set_epi64(14, 11, 8, 4, 3, 2, 1, 0);
-    const __m512i zab = _mm512_set_epi64(0, 0, 0, 14, 11, 8, 5, 2), zc = _mm512_set_epi64(15, 12, 9, 4, 3, 2, 1, 0);
-    const int nv = 3 * cnt;
-    const double *p = x + 3 * (size_t)j;
-    const __m512d A = _mm512_maskz_loadu_pd((__mmask8)(nv >= 8 ? 0xff : (1u << nv) - 1), p);
-    const __m512d B = _mm512_maskz_loadu_pd((__mmask8)(nv >= 16 ? 0xff : nv <= 8 ? 0 : (1u << (nv - 8)) - 1), p + 8);
-    const __m512d C = _mm512_maskz_loadu_pd((__mmask8)(nv >= 24 ? 0xff : nv <= 16 ? 0 : (1u << (nv - 16)) - 1), p + 16);
-    *X = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, xab, B), xc, C);
-    *Y = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, yab, B), yc, C);
-    *Z = _mm512_permutex2var_pd(_mm512_permutex2var_pd(A, zab, B), zc, C);
-}
-
-/* The distance test of one point (sx, sy, sz) against a loaded group: the
- * same subtractions and r^2 as scan_segment (no contraction), so the same
- * results; the kept j compressed and stored whole at buf + len. */
-static inline __attribute__((target("avx512f"), always_inline))
-size_t test_group_avx512(__m512d X, __m512d Y, __m512d Z, int j, int cnt, double sx, double sy, double sz,
-                         __m512d c2, int *buf, size_t len)
-{
-    const __m512i step = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
-    const __m512d dx = _mm512_sub_pd(_mm512_set1_pd(sx), X), dy = _mm512_sub_pd(_mm512_set1_pd(sy), Y);
-    const __m512d dz = _mm512_sub_pd(_mm512_set1_pd(sz), Z);
-    const __m512d r2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-    const __mmask8 keep = _mm512_mask_cmp_pd_mask((__mmask8)((1u << cnt) - 1), r2, c2, _CMP_LT_OQ);
-    const __m512i js = _mm512_add_epi32(_mm512_set1_epi32(j), step);
-    _mm512_storeu_si512(buf + len, _mm512_maskz_compress_epi32((__mmask16)keep, js));
-    return len + (size_t)__builtin_popcount(keep);
-}
-
-static inline __attribute__((target("avx512f")))
-size_t scan_segment_avx512(const double *x, int j0, int j1, double sx, double sy, double sz, double cut2,
-                           int *buf, size_t len)
-{
-    const __m512d c2 = _mm512_set1_pd(cut2);
-    for (int j = j0; j < j1; j += 8) {
-        const int cnt = j1 - j < 8 ? j1 - j : 8;
-        __m512d X, Y, Z;
-        load_group_avx512(x, j, cnt, &X, &Y, &Z);
-        len = test_group_avx512(X, Y, Z, j, cnt, sx, sy, sz, c2, buf, len);
-    }
-    return len;
-}
-#else
-#define SCAN_SLACK 1
-#endif
 
 /* The stencil segments of cell c with their particle ranges (m returned),
  * and the particles they hold in *span: room one particle of c can need. */
@@ -419,21 +361,21 @@ int build_range(const NeighborList *nl, const System *s, int i0, int i1, int fil
 static int build_range_portable(const NeighborList *nl, const System *s, int i0, int i1, int filter,
                                 int **buf, size_t *cap, size_t *len)
 { return build_range(nl, s, i0, i1, filter, buf, cap, len); }
-#ifdef DPD_HAVE_X86_SIMD
-/* build_range for the particles of one cell at a time (at most CELL_BLOCK):
- * each group of eight candidates of a shared stencil segment is loaded and
- * sorted into lanes once and tested against every particle of the block, each
- * writing into a region of its own; the regions are then closed up in
- * particle order. Every particle's entries are those of build_range, in its
- * order (its own row first, then the segments in order). */
+/* build_range for the particles of one cell at a time (at most CELL_BLOCK),
+ * with the backend's distance test (3D; simd.h SimdKernels.nl_scan,
+ * nl_scan_block): each group of eight candidates of a shared stencil segment
+ * is loaded and sorted into lanes once and tested against every particle of
+ * the block, each writing into a region of its own; the regions are then
+ * closed up in particle order. Every particle's entries are those of
+ * build_range, in its order (its own row first, then the segments in order). */
 #define CELL_BLOCK 32
-__attribute__((target("avx512f"))) static int build_cells_avx512(const NeighborList *nl, const System *s, int i0, int i1,
-                                                                 int filter, int **buf_out, size_t *cap_out, size_t *len_out)
+static int build_cells(const NeighborList *nl, const System *s, int i0, int i1, int filter, int **buf_out,
+                       size_t *cap_out, size_t *len_out)
 {
+    const SimdKernels *sk = simd_kernels();
     int *buf = *buf_out;
     size_t cap = *cap_out, len = *len_out;
     const double cut2 = nl->cutoff * nl->cutoff, *x = s->x;
-    const __m512d c2 = _mm512_set1_pd(cut2);
     Segment seg[MAX_SEGMENTS];
     size_t at[CELL_BLOCK], end[CELL_BLOCK];
     int rc = 0;
@@ -449,20 +391,14 @@ __attribute__((target("avx512f"))) static int build_cells_avx512(const NeighborL
         for (int q = 0; q < nb; q++) {   /* the own row, from the particle after i */
             const int i = ia + q;
             at[q] = len + (size_t)q * room;
-            end[q] = scan_segment_avx512(x, i + 1, seg[0].j1, x[3 * i] - seg[0].shift[0], x[3 * i + 1] - seg[0].shift[1],
-                                         x[3 * i + 2] - seg[0].shift[2], cut2, buf, at[q]);
+            end[q] = sk->nl_scan(x, i + 1, seg[0].j1, x[3 * i] - seg[0].shift[0], x[3 * i + 1] - seg[0].shift[1],
+                                 x[3 * i + 2] - seg[0].shift[2], cut2, buf, at[q]);
         }
         for (int k = 1; k < m; k++) {
             double sp[CELL_BLOCK][3];
             for (int q = 0; q < nb; q++)
                 for (int a = 0; a < 3; a++) sp[q][a] = x[3 * (ia + q) + a] - seg[k].shift[a];
-            for (int j = seg[k].j0; j < seg[k].j1; j += 8) {
-                const int cnt = seg[k].j1 - j < 8 ? seg[k].j1 - j : 8;
-                __m512d X, Y, Z;
-                load_group_avx512(x, j, cnt, &X, &Y, &Z);
-                for (int q = 0; q < nb; q++)
-                    end[q] = test_group_avx512(X, Y, Z, j, cnt, sp[q][0], sp[q][1], sp[q][2], c2, buf, end[q]);
-            }
+            sk->nl_scan_block(x, seg[k].j0, seg[k].j1, nb, (const double (*)[3])sp, cut2, buf, end);
         }
         for (int q = 0; q < nb; q++) {   /* close up, in particle order (len <= at[q]: moves go down) */
             const int i = ia + q;
@@ -482,13 +418,12 @@ __attribute__((target("avx512f"))) static int build_cells_avx512(const NeighborL
     return rc;
 }
 /* 3D boxes (2D ones keep z = 0 but are few and small) */
-__attribute__((target("avx512f"))) static int build_range_avx512(const NeighborList *nl, const System *s, int i0, int i1,
-                                                                 int filter, int **buf, size_t *cap, size_t *len)
+static int build_range_cells(const NeighborList *nl, const System *s, int i0, int i1, int filter, int **buf,
+                             size_t *cap, size_t *len)
 {
-    if (!nl->brute_force) return build_cells_avx512(nl, s, i0, i1, filter, buf, cap, len);
+    if (!nl->brute_force) return build_cells(nl, s, i0, i1, filter, buf, cap, len);
     return build_range(nl, s, i0, i1, filter, buf, cap, len);   /* all pairs: the scalar test */
 }
-#endif
 
 /* Particles per build chunk on more than one thread: small enough that a
  * thread on a slower (shared) core takes fewer chunks, large enough that a
@@ -523,9 +458,7 @@ int neighbor_build(NeighborList *nl, System *s)
     int failed = 0;
     size_t at[NL_MAX_CHUNKS + 1];
     int (*range_fn)(const NeighborList *, const System *, int, int, int, int **, size_t *, size_t *) = build_range_portable;
-#ifdef DPD_HAVE_X86_SIMD
-    if (s->box.dim == 3 && simd_level() == SIMD_AVX512) range_fn = build_range_avx512;
-#endif
+    if (s->box.dim == 3 && simd_kernels()->nl_scan_block) range_fn = build_range_cells;
     #pragma omp parallel
     {
         #pragma omp for schedule(dynamic, 1)

@@ -1,7 +1,9 @@
-/* pair_avx512.h - the entry points of the pair layer's vector backend
- * (pair_avx512.c, the one file of the pair layer with intrinsics). They exist
- * in x86-64 builds only: name them through SIMD_X86 (simd.h), which is NULL
- * elsewhere. */
+/* pair_avx512.h - the pair layer's entry points into the vector backend
+ * (src/simd/pair_avx512.c: the walk's candidate pass and the styles'
+ * evaluators of one-type batches; src/simd/pan_lanes_x86.c: the Pan 2008
+ * lanes), which forces.c pair_kernels picks per force call and the styles
+ * register in their PairStyle.accel. They exist in x86-64 builds only: name
+ * them through SIMD_X86 (simd.h), which is NULL elsewhere. */
 #ifndef DPD_PAIR_AVX512_H
 #define DPD_PAIR_AVX512_H
 
@@ -23,5 +25,9 @@ int dpd_one_type_avx512(const System *s, int i, int ie, const int *near, const d
                         const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv);
 int pan_one_type_avx512(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
                         const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv);
+
+/* The Pan 2008 style's lanes (PairLanesFn) for AVX2 and AVX-512: pan_lanes.h pan_lanes_force. */
+void pan_lanes_avx2(void *L, int m, double inv_sqrt_dt, const PairParams *u);
+void pan_lanes_avx512(void *L, int m, double inv_sqrt_dt, const PairParams *u);
 
 #endif

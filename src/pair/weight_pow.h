@@ -22,6 +22,7 @@
 #define DPD_WEIGHT_POW_H
 
 #include <math.h>
+#include <string.h>
 
 typedef double v8d __attribute__((vector_size(64)));
 typedef long long v8i __attribute__((vector_size(64)));
@@ -112,6 +113,25 @@ V8_INLINE v8d weight_pow_lanes(v8d w, v8d p, v8i *bad)
                   | (pb - 1) | (0x4020000000000000ULL - pb) | pb | (0x4085e00000000000ULL - zb);
     *bad = (v8i)(out >> 63);
     return E * scale;
+}
+
+/* out[q] = w[q]^p[q] for q < m, eight at a time (weight_pow_batch's loop):
+ * compiled by weight_pow.c for any x86-64 and by the backend
+ * (src/simd/pow_x86.c) for AVX2 and AVX-512, the same bits at each. */
+V8_INLINE void weight_pow_batch_lanes(const double *w, const double *p, double *out, int m)
+{
+    for (int q = 0; q < m; q += 8) {
+        v8d wv, pv;
+        memcpy(&wv, w + q, sizeof wv);
+        memcpy(&pv, p + q, sizeof pv);
+        v8i bad;
+        const v8d r = weight_pow_lanes(wv, pv, &bad);
+        long long any = 0;
+        for (int l = 0; l < 8; l++) any |= bad[l];
+        if (m - q >= 8 && !any) { memcpy(out + q, &r, sizeof r); continue; }
+        const int n = m - q < 8 ? m - q : 8;
+        for (int l = 0; l < n; l++) out[q + l] = bad[l] ? pow(wv[l], pv[l]) : r[l];
+    }
 }
 
 #undef V8_INLINE
