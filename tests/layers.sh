@@ -1,11 +1,13 @@
 #!/bin/bash
 # layers.sh - the simulator's folders are layers (README.md, "The simulator"),
-# lowest first: core pair dynamics bodies measure analysis io app (the order
-# of LAYERS in the Makefile). A file includes only headers of its own layer and
-# the layers below it, and no header of src/ exists twice; then the include
-# graph has no cycle between layers. Also checks the include graph of the
-# files themselves for cycles, and that the Lees-Edwards image velocity, w_R and
-# the r -> 0 guard each exist once. Prints "N passed, M failed"; exit status = verdict.
+# lowest first: core pair dynamics bodies measure simd analysis io app (the
+# order of LAYERS in the Makefile). A file includes only headers of its own
+# layer and the layers below it, and no header of src/ exists twice; then the
+# include graph has no cycle between layers. Also checks the include graph of
+# the files themselves for cycles, that the Lees-Edwards image velocity, w_R and
+# the r -> 0 guard each exist once, and that the vector code lives in one
+# backend, src/simd/, with one dispatch point (simd.h). Prints "N passed, M
+# failed"; exit status = verdict.
 set -u
 cd "$(dirname "$0")/.."
 . tests/shlib.sh layers
@@ -66,5 +68,32 @@ for d in core pair dynamics bodies; do
     if [ -z "$files" ]; then ok "src/$d writes no file (its tables go to io/)"
     else bad "src/$d writes files itself" "$files"; fi
 done
+# one vector backend (simd.h): every intrinsic (immintrin.h, __m256d, _mm512_add_pd, ...) and every
+# target("avx...") attribute is in src/simd/; the guard DPD_HAVE_X86_SIMD only there and in simd.h and
+# simd.c (the detection and the dispatch point); the backend's entry points (simd_x86.h) are included
+# by simd.c and src/simd/ alone; and the level in use is read (simd_level(), SIMD_PICK) only by the
+# dispatch points: simd.c's table (simd_kernels) and forces.c's choice of the pair styles'
+# accelerators (pair_kernels). Code only: comments removed first.
+mkdir -p "$tmp/code"
+for f in src/*/*.[ch]; do
+    mkdir -p "$tmp/code/$(dirname "$f")"
+    perl -0pe 's{/\*.*?\*/}{$& =~ tr/\n//cdr}gse; s{//[^\n]*}{}g' "$f" > "$tmp/code/$f"
+done
+only_in() {  # NAME PATTERN ALLOWED: PATTERN (grep -E) in the code of files matching ALLOWED (bash regex) only
+    local name=$1 pat=$2 allow=$3 hits=""
+    for f in src/*/*.[ch]; do
+        [[ $f =~ $allow ]] && continue
+        grep -qE "$pat" "$tmp/code/$f" && hits+="$f "
+    done
+    if [ -z "$hits" ]; then ok "$name"; else bad "$name" "also in $hits"; fi
+}
+only_in "intrinsics only in the backend (src/simd/)" \
+    '[a-z]*intrin\.h|__m(64|128|256|512)[a-z]*|__mmask|(^|[^A-Za-z0-9_])_mm(256|512)?_[a-z0-9_]+|__builtin_ia32' '^src/simd/'
+only_in "target attributes only in the backend (src/simd/)" '(^|[^A-Za-z0-9_])(target|target_clones)[[:space:]]*\(|SIMD_TARGET' '^src/simd/'
+only_in "the x86 guard only in the backend, simd.h and simd.c" 'DPD_HAVE_X86_SIMD' '^src/simd/|^src/core/simd\.[ch]$'
+only_in "the backend's entry points (simd_x86.h) only in simd.c and the backend" \
+    '#[[:space:]]*include[[:space:]]*"simd_x86\.h"' '^src/simd/|^src/core/simd\.c$'
+only_in "the level read only at the dispatch points (simd.c, forces.c pair_kernels)" \
+    'simd_level[[:space:]]*\(|SIMD_PICK' '^src/core/simd\.[ch]$|^src/pair/forces\.c$'
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
