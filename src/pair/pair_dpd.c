@@ -1,7 +1,7 @@
 /* pair_dpd.c - the pair style of standard DPD (Groot & Warren 1997) with the
  * general weight exponent of Mai-Duy et al. 2019 (eqs 2-7): its evaluator,
  * its walks, its m = 0 terms and its registration. Its AVX-512 evaluator of
- * one-type batches (pair_avx512.c dpd_one_type_avx512) performs this
+ * one-type batches (src/simd/pair_avx512.c dpd_one_type_avx512) performs this
  * evaluator's operations in its order, eight pairs at a time. */
 #include "pair_walk.h"
 #include "pair_avx512.h"

@@ -21,9 +21,10 @@
  *
  * The scalar evaluator is the style's reference. Vector kernels are optional
  * accelerators of a style (PairAccel, by instruction-set level), each tested
- * to give the scalar evaluator's bits; their intrinsics live in the pair
- * layer's one backend (pair_avx512.c), and forces.c picks them once per force
- * call (pair_kernels). Adding a style is one file (a PairEvaluator, its walks,
+ * to give the scalar evaluator's bits; their intrinsics live in the vector
+ * backend (src/simd/pair_avx512.c, pan_lanes_x86.c; entry points in
+ * pair_avx512.h), and forces.c picks them once per force call
+ * (pair_kernels). Adding a style is one file (a PairEvaluator, its walks,
  * a PairStyle) and one registration (pair_styles.c for a built-in one, or
  * pair_style_register): README.md, "Pair styles", has a worked example. */
 #ifndef DPD_PAIR_STYLE_H
@@ -66,7 +67,7 @@ typedef void (*PairLanesFn)(void *lanes, int m, double inv_sqrt_dt, const PairPa
  * (the walk then goes pair by pair). Each particle closed after its pairs. */
 typedef int (*PairOneTypeFn)(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
                              const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv);
-/* The candidate pass of a walk batch on AVX-512 (pair_avx512.c): as
+/* The candidate pass of a walk batch on AVX-512 (src/simd/pair_avx512.c): as
  * walk_gather (pair_walk.h), into rows dd or planes pl. */
 typedef int (*PairGatherRowsFn)(const System *s, const NeighborList *nl, int i, int i1, int *near, double (*dd)[4],
                                 int *count, uint32_t *id_a, uint32_t *id_b, int *np, int ahead);

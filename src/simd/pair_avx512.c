@@ -1,5 +1,6 @@
-/* pair_avx512.c - the pair layer's vector backend: every intrinsic of the walk
- * and of the pair styles' vector evaluators is here, behind the entry points
+/* pair_avx512.c - the backend's pair kernels (src/simd/: every intrinsic of
+ * the simulator; simd.h): the walk's candidate pass and the pair styles'
+ * AVX-512 evaluators of one-type batches, behind the entry points
  * of pair_avx512.h, which forces.c picks once per force call (pair_kernels)
  * and the styles register as their accelerators (pair_style.h PairAccel).
  * Each kernel performs the scalar code's IEEE operations in its order (no
