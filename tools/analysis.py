@@ -1880,6 +1880,541 @@ def equal_error(path, estar, solvers=('scheme1', 'scheme2_paper', 'scheme2_consi
     return out
 
 
+# ---------------------------------------------------------------- pan-2008 (Pan, Caswell & Karniadakis 2008)
+# Each formula is the paper's equation as the run.sh's awk evaluated it (same association, powers by
+# the C library's pow() as mawk's ^), so the committed tables keep their bytes.
+
+PI = 3.141592653589793
+
+
+def table_rows(path, suffix=''):
+    """the rows after a table's header, as summary rows (selection, no arithmetic); with SUFFIX
+    their first three columns, the name suffixed (fluid-viscosity: the fit at dt = 0.01)"""
+    rs = rows(path)[1:]
+    if not suffix:
+        return ['\t'.join(r) for r in rs]
+    return [fld(r, 1) + suffix + '\t' + fld(r, 2) + '\t' + fld(r, 3) for r in rs]
+
+
+def mean_runs(lines):
+    """the equal-weight mean of runs of equal length ("value<TAB>stderr" lines): the mean of the
+    values, its error sqrt(sum se^2) / n (independent runs; the runs' own errors, not their
+    scatter, which two or three runs would give poorly)"""
+    xs = [l.split('\t')[0] for l in lines]
+    es = [fld(l.split('\t'), 2) for l in lines]
+    return Val(mean(xs), div(quad(es), len(xs)))
+
+
+def column_mean_se(path, col):
+    """the mean of column COL over the rows after the header and its standard error, the rows as
+    independent samples (blocks of a series, replicas' blocks; mean_se)"""
+    return mean_se([fld(r, col) for r in rows(path)[1:]])
+
+
+def noise_row(name, se, t, dof):
+    """a torque's noise intensity: the variance of a mean times the production time it took,
+    v = se^2 t (torque^2 x time: what sets every projected run length), with the relative
+    standard error of a variance estimated from DOF + 1 blocks, sqrt(2 / DOF) (chi-square)"""
+    v = num(se) * num(se) * num(t)
+    return cfmt('%s\t%.4g\t%.2g', name, v, v * sqrt(div(2, num(dof))))
+
+
+def half_percent_time(se, t=None, dof=49):
+    """the production time (t given: t (se / 0.005)^2) or the factor on the time ((se / 0.005)^2)
+    that would bring a ratio's standard error SE to 0.5 % (the paper's precision), the error
+    scaling as 1 / sqrt(time); its relative error that of a variance from DOF + 1 blocks,
+    sqrt(2 / DOF)"""
+    a = num(se) / 0.005
+    v = a * a if t is None else num(t) * a * a
+    return cfmt('%.4g\t%.2g', v, v * sqrt(div(2, num(dof))))
+
+
+def per_unit_ratio(a, sa, da, b, sb, db):
+    """linear response: the response per unit drive at the second drive over the first's,
+    (b / db) / (a / da), the drives exact, the responses' relative errors in quadrature (first
+    order, independent runs); 1 where the response is linear"""
+    a, sa, b, sb, da, db = num(a), num(sa), num(b), num(sb), num(da), num(db)
+    x = div(div(b, db), div(a, da))
+    return Val(x, abs(x) * sqrt(pw(div(sa, a), 2) + pw(div(sb, b), 2)))
+
+
+def theory_ratio(v, sv, u, su, th):
+    """a force or torque over its theory th, which is linear in the velocity u: the ratio's
+    error the value's and u's relative errors in quadrature (num_rel2 of v / th)"""
+    return v_rel2(div(num(v), num(th)), v, sv, u, su)
+
+
+def time_of_steps(steps, dt='0.01'):
+    """production time = steps x dt, as awk printed it (%.6g past an integer)"""
+    return astr(num(steps) * num(dt))
+
+
+def production_time(steps, eq, dt=0.01):
+    """the summed production time of runs: sum over runs of (steps - equilibration steps) dt, in
+    the runs' order, printed as awk prints a number"""
+    s = 0.0
+    for n in steps:
+        s += (num(n) - num(eq)) * dt
+    return astr(s)
+
+
+def rotlet_torque(mu, R, w):
+    """Pan et al. 2008 eq. 18: the torque on a sphere of radius R spinning at w in a fluid of
+    viscosity mu at rest, T = -8 pi mu w R^3 (Stokes flow)"""
+    return cfmt('%.10g', -8 * PI * num(mu) * num(w) * pw(num(R), 3))
+
+
+def chain_shape_factor(t, st, mu, R, w, n):
+    """fig03: the shape factor T_s of a chain of N touching spheres spinning about its axis, its
+    torque over N times eq. 18's single-sphere torque, -8 pi mu w N R^3 (T_s = 1 for N = 1)"""
+    d = -8 * PI * num(mu) * num(w) * num(n) * pw(num(R), 3)
+    return cfmt('%.10g\t%.4g', div(num(t), d), div(num(st), d))
+
+
+def chain_positions(n, R, c):
+    """fig03: the centres of N touching spheres of radius R along x, centred on (c, c, c), as the
+    scene's list ([x,y,z],...) at %.4f: x_k = c + (k - (N - 1) / 2) 2 R"""
+    n, R, c = int(num(n)), num(R), num(c)
+    s = '('
+    for k in range(n):
+        s += '%s%s' % (',' if k else '', cfmt('[%.4f,%.4f,%.4f]', c + (k - (n - 1) / 2) * 2 * R, c, c))
+    return s + ')'
+
+
+def diff_sigmas(summary, a, b, name):
+    """A - B of two summary rows (errors in quadrature, num_diff; the last row of each name) and
+    the difference in units of its standard error"""
+    va = sa = vb = sb = ''
+    for r in rows(summary):
+        if fld(r, 1) == a:
+            va, sa = fld(r, 2), fld(r, 3)
+        if fld(r, 1) == b:
+            vb, sb = fld(r, 2), fld(r, 3)
+    o = v_diff(va, sa, vb, sb)
+    return [o.row(name), cfmt('%s_sigmas\t%.4g\t0', name, div(num(o.v), num(o.se)))]
+
+
+def drag_theory(mu, R, nf, g, L):
+    """fig02: eq. 19's superficial velocity of a fixed sphere dragged by the body force on N_f
+    fluid particles, u = N_f g / (6 pi mu R) (Stokes), Hasimoto's (1959) value in a periodic
+    cubic array, u (1 - 1.7601 phi^(1/3) + phi - 1.5593 phi^2), and the sphere's volume fraction
+    phi = 4 pi R^3 / (3 L^3): "u19 uH phi" """
+    m, r, n, g, L = num(mu), num(R), num(nf), num(g), num(L)
+    u19 = n * g / (6 * PI * m * r)
+    phi = 4 * PI * pw(r, 3) / (3 * pw(L, 3))
+    return cfmt('%.10g %.10g %.6g', u19, u19 * (1 - 1.7601 * pw(phi, 1 / 3) + phi - 1.5593 * pw(phi, 2)), phi)
+
+
+def superficial_velocity(u, su, nf, g, steps):
+    """fig02: the fluid's mean velocity u with the larger of the blocks' error and the
+    Ornstein-Uhlenbeck error of the total momentum relaxing through the sphere,
+    sqrt(2 u / (N_f g T)) over the production time T (friction zeta = N_f g / u, kT = 1):
+    "u<TAB>se<TAB>se_blocks<TAB>se_ou" """
+    T = num(time_of_steps(steps))
+    ou = sqrt(2 * num(u) / (num(nf) * num(g) * T))
+    se = su if gt(su, ou) else ou
+    return cfmt('%.10g\t%.4g\t%.4g\t%.4g', u, se, su, ou)
+
+
+def fig02_ratios(summary, u19, uh, q='u_gC3.5'):
+    """fig02: the calibrated u over eq. 19's and over Hasimoto's (num_div: the theories exact)"""
+    out = []
+    for r in rows(summary):
+        if fld(r, 1) == q:
+            out.append(v_div(fld(r, 2), fld(r, 3), u19).row('u_ratio_eq19_gC3.5'))
+            out.append(v_div(fld(r, 2), fld(r, 3), uh).row('u_ratio_hasimoto_gC3.5'))
+    return out
+
+
+def ou_over_blocks(path):
+    """fig02: per run, the Ornstein-Uhlenbeck error of u over the blocks' error; its relative
+    error that of the blocks' error from 20 blocks, 1 / sqrt(2 x 19), and half of u's relative
+    error (the Ornstein-Uhlenbeck error goes as sqrt(u)) in quadrature"""
+    out = []
+    for r in rows(path)[1:]:
+        x = div(num(fld(r, 5)), num(fld(r, 4)))
+        out.append(Val(x, x * sqrt(1 / 38 + sq(div(0.5 * num(fld(r, 3)), num(fld(r, 2)))))).row('u_se_ou_over_blocks_gC' + fld(r, 1)))
+    return out
+
+
+def torque_slope(path, omega, gs='5.5'):
+    """fig01: the slope of the torque against gamma^C_cf at gamma^S_cf = GS, a weighted (1 / se^2)
+    least-squares line (wline), the torques scaled to the paper's Omega = -0.4 by 0.4 / |Omega|
+    (Stokes flow is linear in Omega)"""
+    w = num(omega)
+    f = num(cfmt('%.10g', 0.4 / (-w if w < 0 else w)))
+    xs, ys, ss = [], [], []
+    for r in rows(path)[1:]:
+        if eq(fld(r, 2), num(gs)):
+            xs.append(fld(r, 1)); ys.append(num(fld(r, 3)) * f); ss.append(num(fld(r, 4)) * f)
+    o = wline(xs, ys, ss)
+    return [cfmt('torque_slope_gC\t%.10g\t%.4g', o.slope, o.slope_se)]
+
+
+def couette_torque(mu, R, c2, w):
+    """tab01, Pan et al. 2008 eq. 21: the torque on a sphere spinning at Omega in simple shear of
+    vorticity/2 = curl/2, T = 8 pi mu R^3 (curl/2 - Omega)"""
+    return cfmt('%.10g', 8 * PI * num(mu) * pw(num(R), 3) * (num(c2) - num(w)))
+
+
+def cv_pairs(paths):
+    """tab01's control variate: per run summary, sphere and component, the run means of the torque
+    without its random part (D, torque_on_sK_C) and of the random part (R, torque_random_on_sK_C):
+    "D<TAB>R" lines, sorted as text (C locale)"""
+    out = []
+    for p in paths:
+        d, r = {}, {}
+        for x in rows(p):
+            q = fld(x, 1)
+            if re.match(r'^torque_on_s[0-9]_[xyz]$', q):
+                d[q[10:]] = fld(x, 2)
+            if re.match(r'^torque_random_on_s[0-9]_[xyz]$', q):
+                r[q[17:]] = fld(x, 2)
+        out.extend(d[k] + '\t' + r.get(k, '') for k in d)
+    return sorted(out, key=lambda l: l.encode())
+
+
+def control_variate(path, t='10'):
+    """tab01: the control variate R (zero mean) of the torque D from n "D<TAB>R" pairs of run
+    means: sample variances and covariance (one pass, n - 1), the intensities (variance x the
+    runs' time t) of D, R and D + R, the correlation rho, the best coefficient c = -cov / var R
+    and its variance factor 1 - rho^2 (Rubinstein & Marcus 1985); stderrs: a variance's
+    sqrt(2 / (n - 1)), rho's (1 - rho^2) / sqrt(n - 3) (Fisher)"""
+    t = num(t)
+    n = 0
+    d = r = dd = rr = dr = 0.0
+    for x in rows(path):
+        a, b = num(fld(x, 1)), num(fld(x, 2))
+        n += 1; d += a; r += b; dd += a * a; rr += b * b; dr += a * b
+    md = d / n; mr = r / n
+    vd = (dd - n * md * md) / (n - 1); vr = (rr - n * mr * mr) / (n - 1)
+    c = (dr - n * md * mr) / (n - 1); vt = vd + vr + 2 * c
+    rho = c / sqrt(vd * vr); f = sqrt(2 / (n - 1))
+    q = lambda name, v, se: cfmt('%s\t%.6g\t%.3g', name, v, se)
+    return [q('cv_samples', n, 0),
+            q('cv_torque_mean', md, sqrt(vd / n)), q('cv_random_mean', mr, sqrt(vr / n)),
+            q('cv_noise_D', vd * t, vd * t * f), q('cv_noise_R', vr * t, vr * t * f), q('cv_noise_total', vt * t, vt * t * f),
+            q('cv_rho', rho, (1 - rho * rho) / sqrt(n - 3)), q('cv_c_best', div(-c, vr), sqrt((1 - rho * rho) * vd / vr / (n - 3))),
+            q('cv_variance_factor_best', 1 - rho * rho, 2 * abs(rho) * (1 - rho * rho) / sqrt(n - 3))]
+
+
+def bin_window(z, half):
+    """the range z - half : z + half (%g), a block_mean's bins"""
+    return cfmt('%g:%g', num(z) - num(half), num(z) + num(half))
+
+
+def linear_scale(v, sv, g, g0):
+    """a response measured at drive g0 scaled to drive g (linear response): (v g) / g0, its
+    error likewise"""
+    o = v_scale(v, sv, g)
+    return v_div(o.v, o.se, g0)
+
+
+def wall_sphere_theory(uh, mu, R, h):
+    """tab02, Pan et al. 2008 eq. 22: drag and torque on a sphere at distance h from a wall in a
+    shear flow of velocity u_h at its centre (Goldman, Cox & Brenner 1967, as the paper fits
+    them): F = 6 pi mu u R (1 - q^2 / 9) / (1 - 0.6526 q + 0.3160 q^3 - 0.242 q^4),
+    T = 8/3 pi mu u R^3 / h (1 + 0.0758 q + 0.049 q^2), q = R / h: "F T" """
+    u, m, R, h = num(uh), num(mu), num(R), num(h)
+    q = R / h
+    F = 6 * PI * m * u * R * (1 - pw(q, 2) / 9) / (1 - 0.6526 * q + 0.3160 * pw(q, 3) - 0.242 * pw(q, 4))
+    T = 8 / 3 * PI * m * u * pw(R, 3) / h * (1 + 0.0758 * q + 0.049 * pw(q, 2))
+    return cfmt('%.10g %.10g', F, T)
+
+
+def tab02_row(r, uh, suh, F, sF, T, sT, Fth, Tth, pF, pT):
+    """tab02: a row of the rendered Table 2 (formatting; the paper's Re per row)"""
+    re_ = '0.0491' if eq(r, 1) else '0.0993' if eq(r, 2) else '0.201'
+    return cfmt('%s\t%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s',
+                r, re_, uh, suh, pF, F, sF, Fth, r, pT, T, sT, Tth, r)
+
+
+def no_slip_poiseuille(g, z, mu):
+    """tab02: the no-slip Poiseuille velocity at height z of a channel with walls at z = 1 and 9
+    (rho = 3): u = 3 g (z - 1) (9 - z) / (2 mu)"""
+    g, z, m = num(g), num(z), num(mu)
+    return cfmt('%.10g', g * 3 * (z - 1) * (9 - z) / (2 * m))
+
+
+def two_sphere_theory(l, u, mu, R):
+    """tab03, Pan et al. 2008 eq. 23: drag and torque on each of two spheres a distance l apart,
+    flow u normal to their line of centres (the method of reflections to q^5, q = R / l):
+    F = 6 pi mu R u (1 - 3q/4 + 9q^2/16 - 59q^3/64 + 465q^4/256 - 15813q^5/7168),
+    T = 8 pi mu R^3 u / l (3q/4 - 9q^2/16 + 27q^3/64 - 273q^4/256 + 1683q^5/1024): "F T" """
+    l, u, m, R = num(l), num(u), num(mu), num(R)
+    q = R / l
+    F = 6 * PI * m * R * u * (1 - 3 * q / 4 + 9 * pw(q, 2) / 16 - 59 * pw(q, 3) / 64 + 465 * pw(q, 4) / 256 - 15813 * pw(q, 5) / 7168)
+    T = 8 * PI * m * pw(R, 3) * u / l * (3 * q / 4 - 9 * pw(q, 2) / 16 + 27 * pw(q, 3) / 64 - 273 * pw(q, 4) / 256 + 1683 * pw(q, 5) / 1024)
+    return cfmt('%.10g %.10g', F, T)
+
+
+def two_sphere_positions(L, l):
+    """tab03: the box centre c = L / 2 and the spheres' y = c -+ l / 2 (%.4f each): "c ya yb" """
+    c = cfmt('%.4f', num(L) / 2)
+    return '%s %s %s' % (c, cfmt('%.4f', num(c) - num(l) / 2), cfmt('%.4f', num(c) + num(l) / 2))
+
+
+def tab03_row(r, l, u, F, sF, T, sT, Fth, Tth, pF, pT):
+    """tab03: a row of the rendered Table 3 (formatting)"""
+    return cfmt('%s\t%.2f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s',
+                l, u, pF, F, sF, Fth, r, pT, T, sT, Tth, r)
+
+
+def linear_decision(v, se):
+    """tab03's rule for the projection's drive (fixed before the ladder ran): 1 if the torque
+    per unit u is linear, |x - 1| <= 0.10 + 2 se, and resolved, 2 se <= 0.20; else 0"""
+    d = abs(num(v) - 1)
+    return '1' if le(d, 0.10 + 2 * num(se)) and le(2 * num(se), 0.20) else '0'
+
+
+def torque_projection(r, u, u0, noise, snoise, tth, cpu, steps):
+    """tab03: the time for a torque stderr of 10 % of eq. 23's torque at drive u,
+    t = noise / (0.1 T(u))^2 with T(u) = T(u0) u / u0 (linear), and its CPU-hours at the row's
+    cost per time unit (cpu / (steps dt)); the hours left after the 600 time units run at u0
+    (worth 600 (u0 / u)^2 at u); the hours at u0 itself; stderrs the noise's"""
+    n, sn, th, c_, st = num(noise), num(snoise), num(tth), num(cpu), num(steps)
+    T = th * num(u) / num(u0)
+    t = n / pw(0.1 * T, 2)
+    c = c_ / (st * 0.01)
+    f = div(sn, n)
+    h = t * c / 3600
+    rem = (t - 600 * pw(num(u0) / num(u), 2)) * c / 3600
+    t3 = n / pw(0.1 * th, 2)
+    return ['projection_u_row%s\t%s\t0' % (r, u),
+            cfmt('projection_time_row%s\t%.4g\t%.2g', r, t, t * f),
+            cfmt('projection_cpu_hours_row%s\t%.4g\t%.2g', r, h, h * f),
+            cfmt('projection_cpu_hours_remaining_row%s\t%.4g\t%.2g', r, rem, rem * f),
+            cfmt('projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g', r, t3 * c / 3600, t3 * c / 3600 * f)]
+
+
+def sphere_blocks(lines, nb):
+    """two fixed spheres a and b: per sample the drag per sphere (F_a + F_b) / 2 and the torque
+    (T_a - T_b) / 2 ("Fa Fb Ta Tb" lines), then their means over NB contiguous blocks, the first
+    n mod NB samples skipped (as src/core/blockavg.c): "block drag torque" rows (the two
+    spheres' noises averaged sample by sample, so their correlation is in the blocks' scatter)"""
+    nb = int(num(nb))
+    F, T = [], []
+    for l in lines:
+        a = l.split('\t')
+        F.append((float(a[0]) + float(a[1])) / 2)
+        T.append((float(a[2]) - float(a[3])) / 2)
+    n = len(F)
+    ln = n // nb
+    skip = n - ln * nb
+    out = ['block\tdrag\ttorque']
+    for b in range(nb):
+        f = F[skip + b * ln: skip + (b + 1) * ln]
+        t = T[skip + b * ln: skip + (b + 1) * ln]
+        out.append(cfmt('%d\t%.10g\t%.10g', b, _fmean(f), _fmean(t)))
+    return out
+
+
+def window_means(xs, w):
+    """the means of W consecutive samples from the first, a last partial window dropped (pan-estimators:
+    the twins' series kept at the resolution their analysis needs, W = 5 steps)"""
+    return [cfmt('%.10g', _fmean(xs[b * w:(b + 1) * w])) for b in range(len(xs) // w)]
+
+
+def _fmean(xs):
+    """mean (num_mean) of numbers, summed in order: nan if any is NaN or there are none"""
+    if not xs:
+        return 'nan'
+    s = 0.0
+    for x in xs:
+        if math.isnan(x):
+            return 'nan'
+        s += x
+    return s / len(xs)
+
+
+def colloid_count(L, density='0.027'):
+    """eq16: the colloids of a box of side L at the number density of the 10^3 box (rounded)"""
+    return cfmt('%d', num(density) * pw(num(L), 3) + 0.5)
+
+
+def stokes_radius(D, sD, mu):
+    """Pan et al. 2008 eq. 16 with c = 6 (Stokes-Einstein, kT = 1): R = 1 / (6 pi mu D), the
+    error from D's alone (mu the paper's, exact)"""
+    return v_rel1(div(1, 6 * PI * num(mu) * num(D)), D, sD)
+
+
+def box_corrected(D, sD, mu, L):
+    """eq16: D corrected for the periodic box, D + 2.837297 kT / (6 pi mu L) (Yeh & Hummer 2004,
+    cubic box; the correction exact), and eq. 16's R from it"""
+    c = 2.837297 / (6 * PI * num(mu) * num(L))
+    d = num(D) + c
+    return [cfmt('D_colloid_box_corrected\t%.10g\t%.4g', d, sD), stokes_radius(d, sD, mu).row('R_box_corrected')]
+
+
+def se_ratio_row(q, pair, g, n):
+    """eq16: the replicas' error of D over the colloid groups' pooled error G, and its relative
+    error that of a standard deviation from N replicas, 1 / sqrt(2 (N - 1))"""
+    s = num(parse_pair(pair).se)
+    x = div(s, num(g))
+    return cfmt('%s\t%.4g\t%.2g', q, x, div(x, sqrt(2 * (num(n) - 1))))
+
+
+def finite_size_fit(path):
+    """eq16: D(L) = D_inf + slope / L, a weighted least-squares line in 1/L (wline) over the rows
+    of d-of-L.tsv with a usable error; the errors scaled by sqrt(chi^2 / dof) when that exceeds 1
+    (the scatter exceeding the errors); r2 the unweighted coefficient of determination: the table
+    fit-d-of-L.tsv (None: fewer than 3 usable rows)"""
+    xs, ys, ss = [], [], []
+    for r in rows(path)[1:]:
+        if usable(fld(r, 4), fld(r, 5)):
+            xs.append(fld(r, 2)); ys.append(fld(r, 4)); ss.append(fld(r, 5))
+    n = len(xs)
+    if n < 3:
+        return None
+    o = wline(xs, ys, ss)
+    b, a = num(o.slope), num(o.icpt)
+    chi2 = ssr = ym = sst = 0.0
+    for x, y, s in zip(xs, ys, ss):
+        rr = num(y) - (a + b * num(x))
+        chi2 += sq(div(rr, num(s))); ssr += sq(rr); ym += num(y) / n
+    for y in ys:
+        sst += sq(num(y) - ym)
+    c = chi2 / (n - 2)
+    f = sqrt(c if c > 1 else 1)
+    return ['quantity\tvalue\tstderr',
+            cfmt('slope\t%.10g\t%.4g', b, f * num(o.slope_se)),
+            cfmt('value_at_centre\t%.10g\t%.4g', a, f * num(o.icpt_se)),
+            cfmt('r2\t%.10g\t0', 1 - ssr / sst if sst > 0 else 1), cfmt('chi2_dof\t%.10g\t0', c), cfmt('points\t%d\t0', n)]
+
+
+def yeh_hummer_rows(eta, slope, dinf, mu):
+    """eq16: Yeh & Hummer's (2004) coefficient of the finite-size term, c = 2.837297 kT /
+    (6 pi eta) with the measured eta (its relative error), the fitted slope's magnitude over it,
+    eq. 16's R from the extrapolated D with the paper's mu (D's error) and with the measured eta
+    (both errors in quadrature), and eta itself"""
+    E, S, DI = parse_pair(eta), parse_pair(slope), parse_pair(dinf)
+    m = num(mu)
+    cy = v_rel1(2.837297 / (6 * PI * num(E.v)), E.v, E.se)
+    return [cy.row('yeh_hummer_coefficient'),
+            v_ratio(-num(S.v), S.se, cy.v, cy.se).row('finite_size_slope_over_yeh_hummer'),
+            stokes_radius(DI.v, DI.se, m).row('R_extrapolated'),
+            v_rel2(div(1, 6 * PI * num(E.v) * num(DI.v)), DI.v, DI.se, E.v, E.se).row('R_extrapolated_measured_eta'),
+            Val(E.v, E.se).row('measured_eta')]
+
+
+def yeh_hummer_corrections(summary, cyh, boxes):
+    """eq16: the difference D(8) - D(6) that Yeh & Hummer's c expects, c (1/6 - 1/8), and each
+    box's D corrected by c / L (errors of D and c in quadrature: c comes from the fluid's
+    viscosity, independent of the boxes' runs)"""
+    C = parse_pair(cyh)
+    out = [v_scale(C.v, C.se, 1 / 6 - 1 / 8).row('yeh_hummer_D_L8_minus_L6')]
+    for L in boxes:
+        d = parse_pair(_lookup(summary, 'D_colloid_L' + L))
+        out.append(v_lin2(1, d.v, d.se, 1 / num(L), C.v, C.se).row('D_colloid_L%s_yeh_hummer_corrected' % L))
+    return out
+
+
+def _pan_cmd_fit(a):
+    t = finite_size_fit(a[0])
+    if t is None:
+        sys.stderr.write('eq16: fewer than 3 usable rows in %s\n' % a[0])
+        return 1
+    return t
+
+
+def _stdin_lines():
+    return [l for l in sys.stdin.read().split('\n') if l != '']
+
+
+PAN_COMMANDS = {
+    # table-rows FILE [SUFFIX]: the rows after the header (SUFFIX: the name suffixed, 3 columns)
+    'table-rows': lambda a: table_rows(a[0], a[1] if len(a) > 1 else ''),
+    # mean-runs < "v<TAB>se" lines -> the equal-weight mean of runs
+    'mean-runs': lambda a: [mean_runs(_stdin_lines()).pair()],
+    # mean-se < values (first column) -> mean and standard error of independent values
+    'mean-se': lambda a: [mean_se([l.split('\t')[0] for l in _stdin_lines()]).pair()],
+    # column-mean FILE COL -> mean and standard error of a column after the header
+    'column-mean': lambda a: [column_mean_se(a[0], int(a[1])).pair()],
+    # div "v<TAB>se" C [NAME] -> (v +- se) / c, as a pair or a row NAME
+    'div': lambda a: [(lambda o: o.row(a[2]) if len(a) > 2 else o.pair())(v_div(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1]))],
+    # noise-row NAME SE TIME DOF
+    'noise-row': lambda a: [noise_row(*a[:4])],
+    # half-percent-time SE [TIME] DOF (TIME "-": the factor on the time)
+    'half-percent-time': lambda a: [half_percent_time(a[0], None if a[1] == '-' else a[1], a[2])],
+    # per-unit-ratio "a<TAB>se" DRIVE_A "b<TAB>se" DRIVE_B [NAME]
+    'per-unit-ratio': lambda a: [(lambda o: o.row(a[4]) if len(a) > 4 else o.pair())(
+        per_unit_ratio(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], parse_pair(a[2]).v, parse_pair(a[2]).se, a[3]))],
+    # theory-ratio NAME "v<TAB>se" "u<TAB>se" THEORY
+    # per-drive-ratio "Ta<TAB>se" "curl2a<TAB>se" OMEGA_A "Tb<TAB>se" "curl2b<TAB>se" OMEGA_B NAME: tab01's torque per
+    # unit drive curl/2 - Omega (the measured curl/2, its error neglected: 0.1-0.2 %)
+    'per-drive-ratio': lambda a: [per_unit_ratio(parse_pair(a[0]).v, parse_pair(a[0]).se, num(parse_pair(a[1]).v) - num(a[2]),
+                                                 parse_pair(a[3]).v, parse_pair(a[3]).se, num(parse_pair(a[4]).v) - num(a[5])).row(a[6])],
+    'theory-ratio': lambda a: [theory_ratio(parse_pair(a[1]).v, parse_pair(a[1]).se, parse_pair(a[2]).v, parse_pair(a[2]).se, a[3]).row(a[0])],
+    'time-of-steps': lambda a: [time_of_steps(a[0])],
+    # production-time EQ_STEPS < steps lines (first column)
+    'production-time': lambda a: [production_time([l.split('\t')[0] for l in _stdin_lines()], a[0])],
+    'rotlet-torque': lambda a: [rotlet_torque(*a[:3])],
+    'chain-shape-factor': lambda a: [chain_shape_factor(parse_pair(a[0]).v, parse_pair(a[0]).se, *a[1:5])],
+    'chain-positions': lambda a: [chain_positions(*a[:3])],
+    'diff-sigmas': lambda a: diff_sigmas(*a[:4]),
+    'drag-theory': lambda a: [drag_theory(*a[:5])],
+    'superficial-velocity': lambda a: [superficial_velocity(parse_pair(a[0]).v, parse_pair(a[0]).se, *a[1:4])],
+    'fig02-ratios': lambda a: fig02_ratios(a[0], a[1], a[2]),
+    'ou-over-blocks': lambda a: ou_over_blocks(a[0]),
+    'torque-slope': lambda a: torque_slope(a[0], a[1]),
+    'couette-torque': lambda a: [couette_torque(*a[:4])],
+    'cv-pairs': lambda a: cv_pairs(a),
+    'control-variate': lambda a: control_variate(a[0]),
+    'bin-window': lambda a: [bin_window(a[0], a[1])],
+    'linear-scale': lambda a: [linear_scale(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], a[2]).pair()],
+    'wall-sphere-theory': lambda a: [wall_sphere_theory(*a[:4])],
+    # tab02-row R "uh" "F" "T" FTH TTH PAPER_F PAPER_T (pairs "v<TAB>se")
+    'tab02-row': lambda a: [tab02_row(a[0], *_pairs(a[1:4]), *a[4:8])],
+    'no-slip-poiseuille': lambda a: [no_slip_poiseuille(*a[:3])],
+    'two-sphere-theory': lambda a: [two_sphere_theory(*a[:4])],
+    # fluid-count L -> 3 L^3 (%d): the fluid particles of a box of side L at density 3
+    'fluid-count': lambda a: [cfmt('%d', 3 * pw(num(a[0]), 3))],
+    # box-centre L DIGITS -> L / 2 to DIGITS decimals
+    'box-centre': lambda a: [cfmt('%.*f', a[1], num(a[0]) / 2)],
+    # window-means W < samples -> the mean of each W consecutive samples (%.10g), a last partial window dropped
+    'window-means': lambda a: window_means([float(l) for l in _stdin_lines()], int(num(a[0]))),
+    'two-sphere-positions': lambda a: [two_sphere_positions(a[0], a[1])],
+    # tab03-row R L "u" "F" "T" FTH TTH PAPER_F PAPER_T
+    'tab03-row': lambda a: [tab03_row(a[0], a[1], parse_pair(a[2]).v, parse_pair(a[3]).v, parse_pair(a[3]).se,
+                                      parse_pair(a[4]).v, parse_pair(a[4]).se, *a[5:9])],
+    'linear-decision': lambda a: [linear_decision(parse_pair(a[0]).v, parse_pair(a[0]).se)],
+    # torque-projection R U U0 "noise" THEORY "cpu" "steps"
+    'torque-projection': lambda a: torque_projection(a[0], a[1], a[2], parse_pair(a[3]).v, parse_pair(a[3]).se, a[4],
+                                                     parse_pair(a[5]).v, parse_pair(a[6]).v),
+    # sum-first FMT < lines: FMT of the sum of their first column, in order
+    'sum-first': lambda a: [cfmt(a[0], _sum_first(_stdin_lines()))],
+    # sphere-blocks BLOCKS < "Fa Fb Ta Tb" lines
+    'sphere-blocks': lambda a: sphere_blocks(_stdin_lines(), a[0]),
+    'colloid-count': lambda a: [colloid_count(a[0])],
+    # stokes-radius NAME "D<TAB>se" MU
+    'stokes-radius': lambda a: [stokes_radius(parse_pair(a[1]).v, parse_pair(a[1]).se, a[2]).row(a[0])],
+    'box-corrected': lambda a: box_corrected(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], a[2]),
+    'se-ratio-row': lambda a: [se_ratio_row(*a[:4])],
+    # inverse X -> 1 / x (%.10g)
+    'inverse': lambda a: [cfmt('%.10g', div(1, num(a[0])))],
+    'finite-size-fit': _pan_cmd_fit,
+    'yeh-hummer-rows': lambda a: yeh_hummer_rows(*a[:4]),
+    # yeh-hummer-corrections SUMMARY "c<TAB>se" "L..."
+    'yeh-hummer-corrections': lambda a: yeh_hummer_corrections(a[0], a[1], a[2].split()),
+}
+
+
+def _pairs(ps):
+    """the value and error of each "v<TAB>se", in one list"""
+    out = []
+    for p in ps:
+        o = parse_pair(p)
+        out += [o.v, o.se]
+    return out
+
+
+def _sum_first(lines):
+    s = 0.0
+    for l in lines:
+        s += num(l.split('\t')[0])
+    return s
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -2055,6 +2590,8 @@ COMMANDS = {
     # times6 A B -> a b (%.6g)
     'times6': lambda a: [cfmt('%.6g', num(a[0]) * num(a[1]))],
 }
+
+COMMANDS.update(PAN_COMMANDS)
 
 
 def _stderr_second(pair):

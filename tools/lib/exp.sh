@@ -313,8 +313,7 @@ emit_drag_torque() {
     emit "torque_theory_row$r" "$Tth" 0
     for q in drag torque; do
         [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
-        printf '%s\t%s\n' "$v" "$u" | num_awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{
-            num_rel2($1 / t, $1, $2, $3, $4, o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+        "$ANALYSE" theory-ratio ${q}_ratio_row$r "$v" "$u" "$th" >> "$OUT/summary.tsv"
     done
 }
 
@@ -402,9 +401,5 @@ two_sphere_blocks() {
     [ -f "$OUT/runs/$1/run.h5" ] || { echo "exp.sh: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
     paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
           <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
-            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
-                for (b = 0; b < B; b++) {
-                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
-                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
+        "$ANALYSE" sphere-blocks $nb > "$f.tmp" && mv "$f.tmp" "$f"
 }
