@@ -446,6 +446,18 @@ r = A.yeh_hummer_corrections(tsv('yh.tsv', 'quantity\tvalue\tstderr\nD_colloid_L
 close('yeh_hummer_corrections: c (1/6 - 1/8)', r[0].split('\t')[1], 1.0, 1e-9)
 close('yeh_hummer_corrections: D + c / L', r[1].split('\t')[1], 5.0, 1e-9)
 
+# ---- simulation arguments
+same('steps_for: t / dt rounded to the nearest', A.steps_for('10', '0.003'), '3333')
+same('steps_for: rounds up from one half', A.steps_for('0.5', '0.2'), '3')
+same('sample_every: the nearest stride for an interval', A.sample_every('0.05', '0.02'), '3')
+same('sample_every: at least 1', A.sample_every('0.05', '0.5'), '1')
+same('tcaf_axis_nmax: two past kq (4 pi / 3)^(1/3)', A.tcaf_axis_nmax('3'), '6')
+same('tcaf_axis_nmax: capped at 31', A.tcaf_axis_nmax('40'), '31')
+same('geometric_mid: sqrt(a b)', A.geometric_mid('0.001', '0.1', '%.4g'), '0.01')
+same('octahedron_inertia: (2/3) M d^2', A.octahedron_inertia('6', '0.5'), '1')
+same('octahedron_inertia: at d = 0.25', A.octahedron_inertia('3', '0.25'), '0.125')
+same('sum-fmt: a + b in the format', A.COMMANDS['sum-fmt'](['%.3f', '2.0', '0.0005']), ['2.001'])
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

@@ -2415,6 +2415,53 @@ def _sum_first(lines):
     return s
 
 
+# ---------------------------------------------------------------- simulation arguments
+# What a run.sh's declared simulations compute from its tier's settings (issue 40 item 5: no
+# arithmetic in a shell string); each prints the argument as the awk it replaces did.
+
+def steps_for(t, dt):
+    """the steps of length DT that make the time T, rounded to the nearest: int(t / dt + 0.5)"""
+    return cfmt('%d', num(t) / num(dt) + 0.5)
+
+
+def sample_every(interval, dt):
+    """the sampling stride in steps for a sampling INTERVAL in time at step DT: the nearest
+    integer to interval / dt, at least 1"""
+    e = int(num(interval) / num(dt) + 0.5)
+    return cfmt('%d', 1 if e < 1 else e)
+
+
+def tcaf_axis_nmax(k, cap=31):
+    """mai-duy-2019 fig04's high-k TCAF runs: the largest wave-vector index per axis, two past
+    kq (4 pi / 3)^(1/3) (the index of the colloid lattice's equal-volume sphere, kq colloids per
+    axis), at most CAP"""
+    n = int(num(k) * pw(4 * 3.14159265358979 / 3, 1 / 3)) + 2
+    return astr(min(n, cap))
+
+
+def geometric_mid(a, b, fmt):
+    """a bisection's next trial in a bracket spanning decades: the geometric middle sqrt(a b),
+    printed with FMT (the stability map's dt)"""
+    return cfmt(fmt, sqrt(num(a) * num(b)))
+
+
+def octahedron_inertia(m, d):
+    """the moment of inertia of a rigid octahedron of total mass M whose six sites sit at D from
+    its centre: I = (2/3) M d^2 (%.10g)"""
+    return cfmt('%.10g', 2 * num(m) * num(d) * num(d) / 3)
+
+
+ARGS_COMMANDS = {
+    'steps-for': lambda a: [steps_for(a[0], a[1])],
+    'sample-every': lambda a: [sample_every(a[0], a[1])],
+    'tcaf-axis-nmax': lambda a: [tcaf_axis_nmax(a[0])],
+    'geometric-mid': lambda a: [geometric_mid(a[0], a[1], a[2])],
+    'octahedron-inertia': lambda a: [octahedron_inertia(a[0], a[1])],
+    # sum-fmt FMT A B -> FMT of a + b (a position offset by a small distance, %.15f)
+    'sum-fmt': lambda a: [cfmt(a[0], num(a[1]) + num(a[2]))],
+}
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -2592,6 +2639,7 @@ COMMANDS = {
 }
 
 COMMANDS.update(PAN_COMMANDS)
+COMMANDS.update(ARGS_COMMANDS)
 
 
 def _stderr_second(pair):
