@@ -11,7 +11,7 @@ case $TIER in
     paper) T=10 TEQ=2 masses="0.3 0.1 0.03" dts="0.005 0.01 0.02 0.05 0.1" ;;
 esac
 od=../fig03-couette-profile/couette.cfg
-nsteps() { awk -v t=$1 -v dt=$2 'BEGIN{printf "%d", t/dt + 0.5}'; }
+nsteps() { "$ANALYSE" steps-for $1 $2; }
 # analyse NAME PREFIX: shear rate (blocks' bulk slopes), viscosity from the wall force, bulk density deviation
 analyse() {
     local p=$OUT/runs/$1/profile.tsv g gse tau tause eta etase
@@ -21,19 +21,19 @@ analyse() {
     emit "density_bulk_max_rel_dev_$2" $(max_rel_dev "$p" 2:10)
     emit_from $1 temperature "temperature_$2"
 }
-mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
+mdt() { "$ANALYSE" quotient6 $1 30; }   # the time step of the inertial run at mass m
 # the simulations: 1. the m = 0 solve and the inertial runs at decreasing m; 2. the m = 0 time steps
 simulations() {
 dpd_run m0 $od --set measure.profile.per_block=true --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
 for m in $masses; do
     dt=$(mdt $m)
-    every=$(awk -v dt=$dt 'BEGIN{e=int(0.05/dt+0.5); printf "%d", e<1?1:e}')
+    every=$("$ANALYSE" sample-every 0.05 $dt)
     dpd_run m$m inertial.cfg --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$every $(for t in 0 1 2 3 4; do printf -- '--set types.[%d].mass=%s ' $t $m; done)
 done
 for dt in $dts; do
     dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
-        --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
+        --set measure.every=$("$ANALYSE" sample-every 0.1 $dt) --set measure.blocks=10
 done
 }
 analysis() {
