@@ -55,7 +55,7 @@ pair_simulations() {
         dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
             --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
     fi
-    nax=$(awk -v k="$kq" 'BEGIN { n = int(k * (4 * 3.14159265358979 / 3)^(1/3)) + 2; print (n > 31 ? 31 : n) }')
+    nax=$("$ANALYSE" tcaf-axis-nmax "$kq")
     dpd_run freehk_$tag "$T02/free.cfg" "${hik[@]}" "${rep3[@]}" "${geo[@]}" --set "measure.tcaf.axis_nmax=$nax" \
         --set "seed=$((40500 + 2 * i))"
     dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
