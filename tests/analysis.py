@@ -458,6 +458,11 @@ same('octahedron_inertia: (2/3) M d^2', A.octahedron_inertia('6', '0.5'), '1')
 same('octahedron_inertia: at d = 0.25', A.octahedron_inertia('3', '0.25'), '0.125')
 same('sum-fmt: a + b in the format', A.COMMANDS['sum-fmt'](['%.3f', '2.0', '0.0005']), ['2.001'])
 
+close('sigmas: (a - b) / sqrt(sa^2 + sb^2)', A.sigmas('5', '0.3', '1', '0.4'), 8.0)
+close('sigmas: against an exact number', A.sigmas('3', '0.5', '2', '0'), 2.0)
+same('sigmas: no error gives nan', A.sigmas('3', '0', '2', '0'), 'nan')
+same('sigmas: a row, a number for B', A.COMMANDS['sigmas'](['q', '3\t0.5', '2']), ['q\t2\t0'])
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

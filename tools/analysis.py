@@ -2451,7 +2451,32 @@ def octahedron_inertia(m, d):
     return cfmt('%.10g', 2 * num(m) * num(d) * num(d) / 3)
 
 
+def sigmas(a, sa, b, sb):
+    """(a - b) / sqrt(sa^2 + sb^2): a difference in units of its standard error (independent a and
+    b; b may be an exact number, sb = 0); nan without an error"""
+    if _nan4(a, sa, b, sb):
+        return 'nan'
+    d = sqrt(sq(sa) + sq(sb))
+    return 'nan' if d == 0 else (num(a) - num(b)) / d
+
+
+def _pairs_or_numbers(xs):
+    out = []
+    for x in xs:
+        o = _pair_or_number(x)
+        out += [o.v, o.se]
+    return out
+
+
+def _pair_or_number(x):
+    """ "value<TAB>stderr" (as get gives it), or a number (exact: stderr 0)"""
+    o = parse_pair(x)
+    return Val(o.v, o.se if '\t' in x else '0')
+
+
 ARGS_COMMANDS = {
+    # sigmas NAME A B: (a - b) / sqrt(sa^2 + sb^2) as a row (%.4g, stderr 0); A, B "v<TAB>se" or a number
+    'sigmas': lambda a: [cfmt('%s\t%.4g\t0', a[0], sigmas(*_pairs_or_numbers(a[1:3])))],
     'steps-for': lambda a: [steps_for(a[0], a[1])],
     'sample-every': lambda a: [sample_every(a[0], a[1])],
     'tcaf-axis-nmax': lambda a: [tcaf_axis_nmax(a[0])],
