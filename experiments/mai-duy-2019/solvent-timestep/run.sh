@@ -47,5 +47,8 @@ case $TIER in
     paper) emit_ratio eta_ratio_dt0.005_dt0.0025 dt0.005 viscosity dt0.0025 viscosity
            emit_ratio eta_ratio_dt0.01_dt0.0025 dt0.01 viscosity dt0.0025 viscosity ;;
 esac
+# what paper.md says in words (issue 40 item 7): the limit over the paper tier's step 0.005 (the limit
+# is a rung of the ladder: no error)
+emit dt_max_T1pct_over_0.005 "$("$ANALYSE" quotient "$best" 0.005)" nan
 }
 experiment
