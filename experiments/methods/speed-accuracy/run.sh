@@ -115,6 +115,8 @@ emit eta_fig03_paper_tier $eta_ref $eta_ref_se
 "$ANALYSE" tolerance-summary "$OUT/ladder-tolerance.tsv" >> "$OUT/summary.tsv"
 # slope of log(true error) against log(tolerance), per solver (weighted equally)
 "$ANALYSE" true-error-slopes "$OUT/ladder-tolerance.tsv" | sort >> "$OUT/summary.tsv"
+# what paper.md says in words (issue 40 item 7): Mai-Duy's fluid's step within 1 % over the step 0.01
+"$ANALYSE" div "$(get . dt_T1pct_maiduy_l0.5)" 0.01 dt_T1pct_maiduy_l0.5_over_0.01 >> "$OUT/summary.tsv"
 # (CPU of every run, the unstable ones included: tools/run-experiment sums runs/*/.cpu_seconds)
 }
 experiment
