@@ -10,6 +10,8 @@ case $TIER in
     quick) T=4 TEQ=1 masses="0.3 0.1" dts="0.005 0.01 0.05" ;;
     paper) T=10 TEQ=2 masses="0.3 0.1 0.03" dts="0.005 0.01 0.02 0.05 0.1" ;;
 esac
+# fig03's committed m = 0 shear rate, the limit the inertial runs approach (paper.md)
+needs any phan-thien-2016/fig03-couette-profile@paper
 od=../fig03-couette-profile/couette.cfg
 nsteps() { "$ANALYSE" steps-for $1 $2; }
 # analyse NAME PREFIX: shear rate (blocks' bulk slopes), viscosity from the wall force, bulk density deviation
@@ -54,5 +56,16 @@ printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OU
 for dt in $dts; do analyse dt$dt dt$dt; done
 "$ANALYSE" dt-scan "$OUT/summary.tsv" "$dts" "$OUT/dt-scan.tsv" > "$OUT/.rows"
 cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+# what paper.md says in words (issue 40 item 7): the largest sound m = 0 step over the inertial
+# step 0.01; at the paper tier, the smallest mass's shear rate against fig03's m = 0 one and the
+# viscosity at dt = 0.1 against dt = 0.005 (in standard errors and in per cent)
+"$ANALYSE" div "$(get . dt_max_sound)" 0.01 dt_max_sound_over_0.01 >> "$OUT/summary.tsv"
+if [ "$TIER" = paper ]; then
+    fig03=$(upstream phan-thien-2016/fig03-couette-profile@paper)/summary.tsv
+    "$ANALYSE" sigmas shear_rate_m0.03_sigmas_from_m0 "$(get . shear_rate_m0.03)" "$("$ANALYSE" lookup "$fig03" shear_rate)" >> "$OUT/summary.tsv"
+    emit_pct shear_rate_m0.03_pct_from_m0 "$(get . shear_rate_m0.03)" "$("$ANALYSE" lookup "$fig03" shear_rate)"
+    "$ANALYSE" sigmas eta_dt0.1_sigmas_from_dt0.005 "$(get . eta_dt0.1)" "$(get . eta_dt0.005)" >> "$OUT/summary.tsv"
+    emit_pct eta_dt0.1_pct_from_dt0.005 "$(get . eta_dt0.1)" "$(get . eta_dt0.005)"
+fi
 }
 experiment
