@@ -131,5 +131,10 @@ for pair in $PAIRS; do
     fi
     "$ANALYSE" fig04-eta-r-row "$OUT/summary.tsv" "$tag" >> "$OUT/eta_r.tsv"
 done
+# what paper.md says in words (issue 40 item 7): the free system's eta(k -> 0) against eta_eff at
+# phi = 0.19 (where that phi is run)
+if f=$(get . eta_k0_free_phi0.19 2> /dev/null) && e=$(get . eta_eff_phi0.19 2> /dev/null); then
+    emit_minus eta_k0_free_minus_eta_eff_phi0.19 "$f" "$e"
+fi
 }
 experiment
