@@ -2415,6 +2415,87 @@ def _sum_first(lines):
     return s
 
 
+# ---------------------------------------------------------------- exp.sh's shared helpers
+# The statistics that tools/lib/exp.sh's helpers (emit_mean, emit_pct, block_slope, ...) computed
+# with numerics.awk, for every experiment that calls them.
+
+def block_stat(path, lo, hi, kind):
+    """exp.sh's block_slope and block_mean: per block of a profile_blocks.tsv (rows block, ...,
+    pos, ..., v_x; the header and nan rows left out; blocks in the order of their first row), the
+    straight-line slope of v_x against pos over LO <= pos <= HI (KIND slope: line) or the mean of
+    v_x over LO < pos < HI (KIND mean); then the blocks' mean and standard error as independent
+    samples (mean_se); nan for fewer than 2 blocks. The bins of one profile share the flow's
+    fluctuations: the blocks' scatter, not the bins', is the error"""
+    order, pts = [], {}
+    for n, r in enumerate(rows(path)):
+        if n == 0 or fld(r, 5) == 'nan':
+            continue
+        p = fld(r, 3)
+        inside = (ge(p, lo) and le(p, hi)) if kind == 'slope' else (gt(p, lo) and lt(p, hi))
+        if inside:
+            k = fld(r, 1)
+            if k not in pts:
+                pts[k] = ([], [])
+                order.append(k)
+            pts[k][0].append(p)
+            pts[k][1].append(fld(r, 5))
+    if kind == 'slope':
+        s = [line(*pts[k]).slope for k in order]
+    else:
+        s = [mean(pts[k][1]) for k in order]
+    if len(order) < 2:
+        return Val()
+    return mean_se(s)
+
+
+def max_rel_dev(path, lo, hi):
+    """exp.sh's max_rel_dev: the largest relative deviation |x - mean| / mean of a profile's
+    density over the bins with LO <= pos <= HI (the first if tied), its error that bin's
+    stderr / mean (the mean's own error neglected; num_max_rel_dev)"""
+    d, e = [], []
+    for r in rows(path):
+        if fld(r, 1).startswith('#') or fld(r, 1) == 'pos':
+            continue
+        if ge(fld(r, 1), lo) and le(fld(r, 1), hi):
+            d.append(fld(r, 2)); e.append(fld(r, 3))
+    m = mean(d)
+    best = be = 0.0
+    for x, s in zip(d, e):
+        dv = abs((num(x) - num(m)) / num(m))
+        if dv > best:
+            best, be = dv, num(s) / num(m)
+    return Val(best, be)
+
+
+def wall_stress(forces, lx):
+    """exp.sh's couette_viscosity: the shear stress of the m = 0 Couette channel from the x forces
+    on its walls (bottom_inner, bottom_outer, top_inner, top_outer: "F<TAB>se" each),
+    (F_bottom - F_top) / (2 LX), the errors added linearly (at m = 0 the walls' forces are
+    opposite step by step and a wall's two layers move together; at m > 0 an upper bound)"""
+    xs = [(1 if i < 2 else -1) * num(parse_pair(f).v) for i, f in enumerate(forces)]
+    o = sum_linear(xs, [parse_pair(f).se for f in forces])
+    return cfmt('%.10g %.4g', o.v / (2 * num(lx)), o.se / (2 * num(lx)))
+
+
+def pct_from(a, b):
+    """100 (a / b - 1), a's deviation from b in per cent, first-order error of independent a, b
+    (exp.sh's emit_pct; b may be exact)"""
+    x, y = _pair_or_number(a), _pair_or_number(b)
+    r = v_ratio(x.v, x.se, y.v, y.se)
+    if isnan_text(r.v):
+        return Val()
+    return v_scale(num(r.v) - 1, r.se, 100)
+
+
+def lattice_tag(kp, kq, digits):
+    """mai-duy-2019's suspensions (exp.sh's lattice_pair): the paper's KP^3 colloids of 6 particles
+    among 13500 solvent particles in 15^3 run as KQ^3 colloids in a box of side 15 KQ / KP: the tag
+    "phi" + phi = 6 KP^3 / (13500 + 6 KP^3) to DIGITS decimals, and the side (%.10g): "tag L" """
+    k = num(kp)
+    phi = 6 * pw(k, 3) / (13500 + 6 * pw(k, 3))
+    return cfmt('phi%.*f %.10g', digits, phi, 15 * num(kq) / k)
+
+
 # ---------------------------------------------------------------- simulation arguments
 # What a run.sh's declared simulations compute from its tier's settings (issue 40 item 5: no
 # arithmetic in a shell string); each prints the argument as the awk it replaces did.
@@ -2472,6 +2553,21 @@ def _pair_or_number(x):
     """ "value<TAB>stderr" (as get gives it), or a number (exact: stderr 0)"""
     o = parse_pair(x)
     return Val(o.v, o.se if '\t' in x else '0')
+
+
+HELPER_COMMANDS = {
+    # block-stat PROFILE_BLOCKS LO HI slope|mean -> "value<TAB>se"
+    'block-stat': lambda a: [block_stat(a[0], a[1], a[2], a[3]).pair()],
+    'max-rel-dev': lambda a: [max_rel_dev(a[0], a[1], a[2]).pair()],
+    # wall-stress LX F_BOTTOM_INNER F_BOTTOM_OUTER F_TOP_INNER F_TOP_OUTER -> "tau tau_se"
+    'wall-stress': lambda a: [wall_stress(a[1:5], a[0])],
+    # pct A B, minus A B (A, B "v<TAB>se" or a number) -> "value<TAB>se"
+    'pct': lambda a: [pct_from(a[0], a[1]).pair()],
+    'minus': lambda a: [(lambda x, y: v_diff(x.v, x.se, y.v, y.se))(_pair_or_number(a[0]), _pair_or_number(a[1])).pair()],
+    # mean-se-row NAME V...: the mean of independent runs' values, its standard error (0 for one run)
+    'mean-se-row': lambda a: [(lambda o: o.row(a[0]))(mean_se(a[1:]) if len(a) != 2 else Val(mean(a[1:]), 0))],
+    'lattice-tag': lambda a: [lattice_tag(a[0], a[1], a[2])],
+}
 
 
 ARGS_COMMANDS = {
@@ -2665,6 +2761,7 @@ COMMANDS = {
 
 COMMANDS.update(PAN_COMMANDS)
 COMMANDS.update(ARGS_COMMANDS)
+COMMANDS.update(HELPER_COMMANDS)
 
 
 def _stderr_second(pair):
