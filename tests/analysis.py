@@ -487,6 +487,39 @@ same('mean-se-row: one run has no error', A.COMMANDS['mean-se-row'](['q', '2.5']
 same('mean-se-row: the runs\' mean and standard error', A.COMMANDS['mean-se-row'](['q', '1', '3']), ['q\t2\t1'])
 same('lattice_tag: phi = 6 k^3 / (13500 + 6 k^3) and the side 15 kq / kp', A.lattice_tag('15', '5', '4'), 'phi0.6000 5')
 
+# ---- methods/pan-estimators
+pr = tsv('prec.tsv', 'h' + '\tc' * 13 + '\n' + 'a' + '\tx' * 11 + '\t1.5\t2\n' + 'b' + '\tx' * 11 + '\tinf\t3\n' + 'c' + '\tx' * 11 + '\t0.5\tinf\n')
+same('precision_totals: the claims\' CPU-hours summed, inf left out', A.precision_totals(pr),
+     ['precision_cpu_hours_at_paper_values\t2\t0', 'precision_cpu_hours_at_our_values\t5\t0'])
+hp = tsv('hp.tsv', 'e' + '\tc' * 12 + '\n' + ''.join('pan-2008/%s' % e + '\tx' * 11 + '\t%s\n' % v for e, v in
+                                                (('tab01-couette', '1'), ('fig02-drag', '2'), ('tab01-couette', '4'))))
+same('half_percent_totals: per source (name to its first -) in the order met, and in all', A.half_percent_totals(hp),
+     ['half_percent_cpu_hours_tab01\t5\t0', 'half_percent_cpu_hours_fig02\t2\t0', 'half_percent_cpu_hours_all\t7\t0'])
+r = A.ladder_row('-1', '2', '0.1', '100', '4', repr(1 / (8 * math.pi)), '1').split('\t')
+close('ladder_row: the torque over eq. 18 (-8 pi mu Omega R^3 = 1 here)', r[3], 2.0, 1e-9)
+close('ladder_row: the noise se^2 x time', r[5], 1.0)
+close('ladder_row: (se / T)^2 x CPU-hours', r[7], 0.01)
+lt = tsv('lad.tsv', 'omega\tt\tse\tr\trse\tnoise\n-1.0\t2\t0.1\t1.05\t0.01\t1.4\n')
+same('ladder_rows: the ratio, and the noise with sqrt(2 / 49)', A.ladder_rows(lt, '-1.0'),
+     ['ladder_torque_ratio_W-1.0\t1.05\t0.01', 'ladder_noise_W-1.0\t1.4\t' + A.astr(1.4 * math.sqrt(2 / 49))])
+Lp = repr((4 * math.pi / 3 / 0.001) ** (1 / 3))
+r = A.hold_row(Lp, '1', '3', '0.3', '0', '0.2', '10', '1', repr(1 / (6 * math.pi)), '1', '6').split('\t')
+K = 1 / (1 - 1.7601 * 0.1 + 0.001 - 1.5593e-6)
+close('hold_row: zeta = drag / u over Stokes (1 here)', r[4], 3.0, 1e-9)
+close('hold_row: Hasimoto\'s K at phi = 0.001', r[6], K, 1e-6)
+close('hold_row: u at F_ext, F_ext / zeta', r[9], 2.0, 1e-9)
+close('hold_row: the Einstein form var x T / 2', r[14], 0.2, 1e-9)
+ht = tsv('hold.tsv', 'L\tu\tz\tzs\t5\t6\tK\n10\t0.3\t20\t1\t.\t.\t1.2\n6\t0.3\t30\t1.5\t.\t.\t1.5\n')
+r = A.hold_ratio(ht, '6', '0.3', '10', '0.3', 'z', 'h')
+close('hold_ratio: zeta over zeta', r[0].split('\t')[1], 1.5)
+close('hold_ratio: relative errors in quadrature', r[0].split('\t')[2], float('%.4g' % (1.5 * math.sqrt(0.0025 + 0.0025))))
+close('hold_ratio: Hasimoto\'s K over K', r[1].split('\t')[1], 1.25)
+sc = tsv('sc.cfg', 'steps = 9000;\nequilibration = 500; # a comment = 7\n# equilibration = 900\n')
+same('prod_time: steps less the scene\'s equilibration, times dt', A.prod_time('1500', tsv('a1', 'x.cfg\n--set\nsteps=1500\n'), sc), '10')
+same('prod_time: the arguments\' equilibration first', A.prod_time('1500', tsv('a2', 'x.cfg\n--set\nequilibration=1000\n'), sc), '5')
+o = A.gk_rotational_friction('3', '0.2', repr(1 / (8 * math.pi)), '1')
+close('gk_rotational_friction: variance x time / 2 over 8 pi mu R^3 (1 here)', o.v, 1.5, 1e-9)
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

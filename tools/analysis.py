@@ -2415,6 +2415,137 @@ def _sum_first(lines):
     return s
 
 
+# ---------------------------------------------------------------- methods/pan-estimators
+
+def precision_totals(path):
+    """pan-estimators: the CPU-hours every claim needs for its deciding stderr, summed over the
+    claims (precision.tsv's columns 13 and 14: at the paper's values and at ours; inf left out)"""
+    p = o = 0.0
+    for r in rows(path)[1:]:
+        if fld(r, 13) != 'inf':
+            p += num(fld(r, 13))
+        if fld(r, 14) != 'inf':
+            o += num(fld(r, 14))
+    return [cfmt('precision_cpu_hours_at_paper_values\t%.4g\t0', p), cfmt('precision_cpu_hours_at_our_values\t%.4g\t0', o)]
+
+
+def half_percent_totals(path):
+    """pan-estimators: the CPU-hours for a stderr of 0.5 % of every number Pan prints (column 13),
+    summed per source (the experiment's name up to its first '-', in the order first met) and in all"""
+    order, h, tot = [], {}, 0.0
+    for r in rows(path)[1:]:
+        k = re.sub(r'-.*', '', re.sub(r'.*/', '', fld(r, 1), count=1), count=1)
+        if k not in h:
+            h[k] = 0.0
+            order.append(k)
+        h[k] += num(fld(r, 13))
+        tot += num(fld(r, 13))
+    return [cfmt('half_percent_cpu_hours_%s\t%.4g\t0', k, h[k]) for k in order] + [cfmt('half_percent_cpu_hours_all\t%.4g\t0', tot)]
+
+
+def ladder_row(w, t, st, prod, cpu, mu, R):
+    """pan-estimators' rotation ladder: at spin Omega, the torque over eq. 18 (-8 pi mu Omega R^3),
+    the noise (stderr^2 x production time) and the figure of merit (se / T)^2 x CPU-hours: a
+    ladder.tsv row"""
+    T, sT, m, r = num(t), num(st), num(mu), num(R)
+    t18 = -8 * PI * m * num(w) * r * r * r
+    return cfmt('%s\t%s\t%s\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g', w, t, st, T / t18, sT / t18, sT * sT * num(prod), cpu, sq(sT / T) * num(cpu))
+
+
+def _row_where(path, conds):
+    """the first row after the header whose columns equal the given values (mawk's comparison)"""
+    for r in rows(path)[1:]:
+        if all(eq(fld(r, c), v) for c, v in conds):
+            return r
+    return None
+
+
+def ladder_rows(path, w):
+    """pan-estimators: a drive's torque ratio to eq. 18 and its noise, whose stderr is that of a
+    variance from 50 blocks, sqrt(2 / 49)"""
+    r = _row_where(path, [(1, w)])
+    return ['ladder_torque_ratio_W%s\t%s\t%s' % (w, fld(r, 4), fld(r, 5)),
+            'ladder_noise_W%s\t%s\t%s' % (w, fld(r, 6), astr(num(fld(r, 6)) * sqrt(2 / 49)))]
+
+
+def hold_row(L, u, drag, sdrag, force, sforce, prod, cpu, mu, R, fext):
+    """pan-estimators' held mean velocity: the drag coefficient zeta = drag / u, over Stokes
+    6 pi mu R and over Hasimoto's simple cubic array K(phi) = 1 / (1 - 1.7601 phi^(1/3) + phi
+    - 1.5593 phi^2) (Sangani & Acrivos 1982), phi = (4/3) pi R^3 / L^3; u at fig02's F_ext from
+    zeta, Hasimoto's u there; the noise of the drag and of the total force (variance x time) and
+    the Einstein form of the total force's fluctuations, var x T / (2 kT): a hold.tsv row"""
+    m, r, Lf, uf, Fe = num(mu), num(R), num(L), num(u), num(fext)
+    z, zs = num(drag) / uf, num(sdrag) / uf
+    S = 6 * PI * m * r
+    phi = 4 / 3 * PI * r * r * r / (Lf * Lf * Lf)
+    K = 1 / (1 - 1.7601 * pw(phi, 1 / 3) + phi - 1.5593 * phi * phi)
+    sd, sf, T = num(sdrag), num(sforce), num(prod)
+    return cfmt('%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g',
+                L, u, z, zs, z / S, zs / S, K, z / S / K, zs / S / K, Fe / z, Fe / z * zs / z, Fe / (S * K),
+                sd * sd * T, sf * sf * T, sf * sf * T / 2, cpu)
+
+
+def hold_rows(path, L, u):
+    """pan-estimators: the summary rows of a held-u run (K over Hasimoto's, u at F_ext, zeta)"""
+    r = _row_where(path, [(1, L), (2, u)])
+    return ['K_over_hasimoto_L%s_u%s\t%s\t%s' % (L, u, fld(r, 8), fld(r, 9)),
+            'u_at_fext_L%s_u%s\t%s\t%s' % (L, u, fld(r, 10), fld(r, 11)),
+            'zeta_L%s_u%s\t%s\t%s' % (L, u, fld(r, 3), fld(r, 4))]
+
+
+def hold_ratio(path, L1, u1, L2, u2, name, hname=None):
+    """pan-estimators: zeta of one held-u run over another's (relative errors in quadrature), and
+    Hasimoto's K of the two boxes over each other (exact)"""
+    a, b = _row_where(path, [(1, L1), (2, u1)]), _row_where(path, [(1, L2), (2, u2)])
+    out = [v_ratio(fld(a, 3), fld(a, 4), fld(b, 3), fld(b, 4)).row(name)]
+    if hname:
+        out.append(cfmt('%s\t%.10g\t0', hname, num(fld(a, 7)) / num(fld(b, 7))))
+    return out
+
+
+def prod_time(steps, args, scene):
+    """the production time units (dt = 0.01) of a run: its steps less the equilibration of its
+    arguments (a line equilibration=N of .args), else of its scene (the last `equilibration =`
+    setting outside comments), else 0"""
+    eq = 0.0
+    with open(scene) as f:
+        for l in f.read().split('\n'):
+            l = re.sub(r'#.*', '', l, count=1)
+            if re.match(r'^[ \t]*equilibration[ \t]*=', l):
+                eq = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+    with open(args) as f:
+        for l in f.read().split('\n'):
+            if l.startswith('equilibration='):
+                eq = num(l.split('=', 1)[1])
+    return cfmt('%.6g', (num(steps) - eq) * 0.01)
+
+
+def gk_rotational_friction(noise, snoise, mu, R):
+    """pan-estimators: the rotational friction by the Einstein form of Green-Kubo, the total
+    torque's variance x time / (2 kT), over eq. 18's 8 pi mu R^3"""
+    z = 8 * PI * num(mu) * num(R) * num(R) * num(R)
+    return v_div(num(noise) / 2, num(snoise) / 2, z)
+
+
+PE_COMMANDS = {
+    'precision-totals': lambda a: precision_totals(a[0]),
+    'half-percent-totals': lambda a: half_percent_totals(a[0]),
+    # ladder-row OMEGA "T<TAB>se" PROD_TIME CPU_H MU R
+    'ladder-row': lambda a: [ladder_row(a[0], *_pairs(a[1:2]), a[2], a[3], a[4], a[5])],
+    'ladder-rows': lambda a: ladder_rows(a[0], a[1]),
+    # hold-row L U "drag<TAB>se" "force<TAB>se" PROD_TIME CPU_H MU R F_EXT
+    'hold-row': lambda a: [hold_row(a[0], a[1], *_pairs(a[2:4]), *a[4:9])],
+    'hold-rows': lambda a: hold_rows(a[0], a[1], a[2]),
+    # hold-ratio HOLD L1 U1 L2 U2 NAME [HASIMOTO_NAME]
+    'hold-ratio': lambda a: hold_ratio(*a[:6], a[6] if len(a) > 6 else None),
+    # hold-cols HOLD L U COL...: those columns of the run's row, tab-separated (nothing if there is none)
+    'hold-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[3:])] if r else [])(_row_where(a[0], [(1, a[1]), (2, a[2])])),
+    # prod-time STEPS ARGS SCENE
+    'prod-time': lambda a: [prod_time(a[0], a[1], a[2])],
+    'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
+}
+
+
 # ---------------------------------------------------------------- exp.sh's shared helpers
 # The statistics that tools/lib/exp.sh's helpers (emit_mean, emit_pct, block_slope, ...) computed
 # with numerics.awk, for every experiment that calls them.
@@ -2762,6 +2893,7 @@ COMMANDS = {
 COMMANDS.update(PAN_COMMANDS)
 COMMANDS.update(ARGS_COMMANDS)
 COMMANDS.update(HELPER_COMMANDS)
+COMMANDS.update(PE_COMMANDS)
 
 
 def _stderr_second(pair):

@@ -6,37 +6,29 @@ FV=$(up fluid-viscosity paper) EQ16=$(up eq16-effective-radius reduced) F01=$(up
 F02=$(up fig02-drag-calibration reduced) T01=$(up tab01-couette-torque reduced) T02=$(up tab02-poiseuille reduced)
 T03=$(up tab03-two-spheres reduced) F03=$(up fig03-chain-rotation reduced)
 # sget DIR QUANTITY -> "value<TAB>stderr" of a summary (an upstream result's or one of its runs')
-sget() { awk -F'\t' -v q="$2" '$1 == q { print $2 "\t" $3; f = 1; exit } END { exit !f }' "$1/summary.tsv" \
-         || { echo "pan-estimators: $2 missing in $1/summary.tsv" >&2; return 1; }; }
+sget() { tsv_lookup "$1/summary.tsv" "$2" pan-estimators; }
 # speed factor of the committed pan-2008 runs (made by binaries of b789431's speed; tools/cost's class
 # factor for these scenes) and of this experiment's own runs (the current binary: 1)
-OLD=$(awk -F'\t' '$1 == "rotation-generic" { print $2 }' "$DPD_ROOT/bench/speedup.tsv")
+OLD=$(tsv_lookup "$DPD_ROOT/bench/speedup.tsv" rotation-generic pan-estimators | cut -f1)
 # prod_time NAME -> production time units of one of this experiment's runs (dt = 0.01): the summary's
 # steps less the equilibration of its arguments, else of its scene (no simulator call: verification)
 prod_time() {
     local a=$OUT/runs/$1/.args sc
     sc=$(head -1 "$a" | sed -E "s#^/([^/]+/)*experiments/#$DPD_ROOT/experiments/#"); case $sc in /*) ;; *) sc=$HERE/$sc ;; esac
-    get "$1" steps | awk -F'\t' -v a="$a" -v sc="$sc" 'BEGIN { while ((getline l < sc) > 0) { sub(/#.*/, "", l)
-            if (l ~ /^[ \t]*equilibration[ \t]*=/) { sub(/.*=[ \t]*/, "", l); eq = l + 0 } }
-        while ((getline l < a) > 0) if (l ~ /^equilibration=/) { sub(/^[^=]*=/, "", l); eq = l + 0 } }
-        { printf "%.6g", ($1 - eq) * 0.01 }'
+    "$ANALYSE" prod-time "$(get "$1" steps | cut -f1)" "$a" "$sc"
 }
 # column_mean_se FILE COLUMN -> "mean<TAB>stderr" over the rows after the header (blocks)
-column_mean_se() { num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%s", num_pair(o) }' "$1"; }
+column_mean_se() { "$ANALYSE" column-mean "$1" $2; }
 # cpu_h NAME -> the run's CPU hours (this binary)
-cpu_h() { get "$1" cpu_seconds | awk -F'\t' '{ printf "%.6g", $1 / 3600 }'; }
+cpu_h() { "$ANALYSE" quotient6 "$(get "$1" cpu_seconds | cut -f1)" 3600; }
 
 # ------------------------------------------------------------------ 1. the precision each claim needs
 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/claim-runs.tsv" > "$OUT/precision.tsv"
-awk -F'\t' 'NR > 1 && $13 != "inf" { p += $13 } NR > 1 && $14 != "inf" { o += $14 }
-    END { printf "precision_cpu_hours_at_paper_values\t%.4g\t0\nprecision_cpu_hours_at_our_values\t%.4g\t0\n", p, o }' \
-    "$OUT/precision.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" precision-totals "$OUT/precision.tsv" >> "$OUT/summary.tsv"
 # Pan's 0.5 % (item 5): the plain average's CPU-hours for a stderr of 0.5 % of every number the paper
 # prints from a simulation (entries.tsv), in the paper's box at the paper's drive; totals per source
 PRECISION_REL=0.005 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/entries.tsv" > "$OUT/half_percent.tsv"
-awk -F'\t' 'NR > 1 { k = $1; sub(/.*\//, "", k); sub(/-.*/, "", k); h[k] += $13; if (!(k in seen)) { seen[k] = 1; ks[++n] = k }; all += $13 }
-    END { for (i = 1; i <= n; i++) printf "half_percent_cpu_hours_%s\t%.4g\t0\n", ks[i], h[ks[i]]
-          printf "half_percent_cpu_hours_all\t%.4g\t0\n", all }' "$OUT/half_percent.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" half-percent-totals "$OUT/half_percent.tsv" >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 2a. the rotation ladder (stronger drive)
 # torque over eq. 18 at each Omega, the noise (variance of the mean x production time), the relative
@@ -44,11 +36,8 @@ awk -F'\t' 'NR > 1 { k = $1; sub(/.*\//, "", k); sub(/-.*/, "", k); h[k] += $13;
 printf 'omega\ttorque\ttorque_se\tratio_eq18\tratio_se\tnoise\tcpu_h\trel_var_cpu_h\n' > "$OUT/ladder.tsv"
 for w in $LADDER; do
     W=${w%%:*} n=rot_W${w%%:*}
-    paste <(get $n torque_on_colloid_z) <(echo "$(prod_time $n)	$(cpu_h $n)") |
-        num_awk -F'\t' -v W=$W -v m=$MU -v R=$R -v pi=$PI '{ T18 = -8 * pi * m * W * R * R * R
-            printf "%s\t%s\t%s\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g\n", W, $1, $2, $1 / T18, $2 / T18, $2 * $2 * $3, $4, num_sq($2 / $1) * $4 }' >> "$OUT/ladder.tsv"
-    emit "ladder_torque_ratio_W$W" $(awk -F'\t' -v W=$W '$1 == W { print $4 "\t" $5 }' "$OUT/ladder.tsv")
-    emit "ladder_noise_W$W" $(awk -F'\t' -v W=$W '$1 == W { print $6 "\t" $6 * sqrt(2 / 49) }' "$OUT/ladder.tsv")
+    "$ANALYSE" ladder-row $W "$(get $n torque_on_colloid_z)" "$(prod_time $n)" "$(cpu_h $n)" $MU $R >> "$OUT/ladder.tsv"
+    "$ANALYSE" ladder-rows "$OUT/ladder.tsv" $W >> "$OUT/summary.tsv"
 done
 # the plain average at the paper's Omega = -0.4 (fig01's committed 1500 time units) for comparison
 emit plain_torque_ratio_W-0.4 $(sget "$F01" torque_ratio_gS5.5)
@@ -57,8 +46,7 @@ ws=($(for w in $LADDER; do echo ${w%%:*}; done | sort -g -r))   # -1.0 -2.0 -4.0
 prev=-0.4 prevv=$(sget "$F01" torque_ratio_gS5.5)
 for W in "${ws[@]}"; do
     cur=$(get . ladder_torque_ratio_W$W)
-    num_awk -v a="$prevv" -v b="$cur" -v q="ladder_linearity_W${W}_vs_W$prev" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
-        num_ratio(y[1], y[2], x[1], x[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+    emit "ladder_linearity_W${W}_vs_W$prev" "$("$ANALYSE" ratio "$cur" "$prevv")"
     prev=$W prevv=$cur
 done
 
@@ -70,27 +58,19 @@ done
 printf 'L\tu\tzeta\tzeta_se\tK_measured\tK_se\tK_hasimoto\tK_over_hasimoto\tK_over_hasimoto_se\tu_at_Fext\tu_at_Fext_se\tu_hasimoto_at_Fext\tnoise_drag\tnoise_total\tzeta_einstein\tcpu_h\n' > "$OUT/hold.tsv"
 for h in $HOLD; do
     IFS=: read -r Lb u n <<< "$h"; nm=hold_L${Lb}_u$u
-    paste <(get $nm drag_on_colloid_x) <(get $nm force_on_colloid_x) <(echo "$(prod_time $nm)	$(cpu_h $nm)") |
-        num_awk -F'\t' -v L=$Lb -v u=$u -v m=$MU -v R=$R -v pi=$PI -v Fe=$FEXT '{
-            z = $1 / u; zs = $2 / u; S = 6 * pi * m * R; phi = 4 / 3 * pi * R * R * R / (L * L * L)
-            K = 1 / (1 - 1.7601 * phi ^ (1 / 3) + phi - 1.5593 * phi * phi)
-            printf "%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g\n", L, u, z, zs, z / S, zs / S, K,
-                   z / S / K, zs / S / K, Fe / z, Fe / z * zs / z, Fe / (S * K), $2 * $2 * $5, $4 * $4 * $5, $4 * $4 * $5 / 2, $6 }' >> "$OUT/hold.tsv"
-    emit "K_over_hasimoto_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $8 "\t" $9 }' "$OUT/hold.tsv")
-    emit "u_at_fext_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $10 "\t" $11 }' "$OUT/hold.tsv")
-    emit "zeta_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $3 "\t" $4 }' "$OUT/hold.tsv")
+    "$ANALYSE" hold-row $Lb $u "$(get $nm drag_on_colloid_x)" "$(get $nm force_on_colloid_x)" "$(prod_time $nm)" "$(cpu_h $nm)" \
+        $MU $R $FEXT >> "$OUT/hold.tsv"
+    "$ANALYSE" hold-rows "$OUT/hold.tsv" $Lb $u >> "$OUT/summary.tsv"
 done
 # the box test: zeta(6) / zeta(10) against Hasimoto's K(6) / K(10); linearity: zeta at u = 0.15 / at 0.3 (L = 6)
-zrow() { awk -F'\t' -v L=$1 -v u=$2 '$1 == L && $2 == u { print $3 "\t" $4 "\t" $7 }' "$OUT/hold.tsv"; }
+zrow() { "$ANALYSE" hold-cols "$OUT/hold.tsv" $1 $2 3 4 7; }
 if [ -n "$(zrow 10 0.3)" ] && [ -n "$(zrow 6 0.3)" ]; then
-    paste <(zrow 6 0.3) <(zrow 10 0.3) | num_awk -F'\t' '{ num_ratio($1, $2, $4, $5, o); print num_row("zeta_L6_over_L10", o)
-        printf "hasimoto_L6_over_L10\t%.10g\t0\n", $3 / $6 }' >> "$OUT/summary.tsv"
+"$ANALYSE" hold-ratio "$OUT/hold.tsv" 6 0.3 10 0.3 zeta_L6_over_L10 hasimoto_L6_over_L10 >> "$OUT/summary.tsv"
     # the body-force plain average (fig02, 3000 time units) against the held-u estimate in the same box
-    paste <(sget "$F02" u_gC3.5) <(get . u_at_fext_L10_u0.3) | num_awk -F'\t' '{ num_diff($1, $2, $3, $4, o)
-        print num_row("u_bodyforce_minus_held_L10", o) }' >> "$OUT/summary.tsv"
+    emit u_bodyforce_minus_held_L10 "$("$ANALYSE" diff "$(sget "$F02" u_gC3.5)" "$(get . u_at_fext_L10_u0.3)")"
 fi
 if [ -n "$(zrow 6 0.15)" ] && [ -n "$(zrow 6 0.3)" ]; then
-    paste <(zrow 6 0.15) <(zrow 6 0.3) | num_awk -F'\t' '{ num_ratio($1, $2, $4, $5, o); print num_row("zeta_L6_u0.15_over_u0.3", o) }' >> "$OUT/summary.tsv"
+"$ANALYSE" hold-ratio "$OUT/hold.tsv" 6 0.15 6 0.3 zeta_L6_u0.15_over_u0.3 >> "$OUT/summary.tsv"
 fi
 
 # ------------------------------------------------------------------ 2c. the twins (correlated sampling)
@@ -159,8 +139,7 @@ twins rot torque_on_colloid_z W0.0 W-0.4 W-0.004 "$sr" "$pr"
 # tab01's control-variate diagnostic (seven frozen spheres at rest, 504 run means of 10 time units): the
 # total torque's variance x time over 2 kBT is the rotational friction (Einstein form of Green-Kubo);
 # against fig01's driven friction (torque / Omega at -0.4) and the ladder's
-sget "$T01" cv_noise_total | num_awk -F'\t' -v m=$MU -v R=$R -v pi=$PI '{ z = 8 * pi * m * R * R * R
-    num_div($1 / 2, $2 / 2, z, o); print num_row("gk_rotational_friction_over_eq18", o) }' >> "$OUT/summary.tsv"
+"$ANALYSE" gk-rotational-friction "$(sget "$T01" cv_noise_total)" $MU $R >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 3. Table 3's pair in two boxes
 # drag per sphere over eq. 23 at the same u, against the leading periodic-array correction for two
