@@ -520,6 +520,26 @@ same('prod_time: the arguments\' equilibration first', A.prod_time('1500', tsv('
 o = A.gk_rotational_friction('3', '0.2', repr(1 / (8 * math.pi)), '1')
 close('gk_rotational_friction: variance x time / 2 over 8 pi mu R^3 (1 here)', o.v, 1.5, 1e-9)
 
+# twins: base windows alternating +-1, the driven twin base + 0.5 from the 6th window on (a response of 0.5 from t = 0.25), the
+# tiny twin base + d (seed 1) and base - d (seed 2): its rms difference d over sqrt(2) x the sd of one run's
+# window means over the second half
+import statistics
+base = [1.0 if w % 2 else -1.0 for w in range(1, 11)]
+d_ = 0.8
+tw = []
+for sd_, sign in ((1, 1), (2, -1)):
+    for name, vals in (('b', base), ('d', [v + (0.5 if w >= 6 else 0) for w, v in enumerate(base, 1)]), ('t', [v + sign * d_ for v in base])):
+        tw.append(tsv('tw%d%s' % (sd_, name), ''.join('%.17g\n' % v for v in vals)))
+sd_one = statistics.stdev([base[w - 1] for w in range(6, 11)] * 2)
+twout = os.path.join(tmp, 'twin.tsv')
+r = dict(l.split('\t', 1) for l in A.twins('k', tw, '0.5', '2', twout))
+tab = [l.split('\t') for l in open(twout).read().split('\n')[1:-1]]
+close('twins: the response, driven minus base', tab[1][1], 0.5)
+close('twins: the tiny twin\'s rms difference over sqrt(2) x one run\'s sd', tab[0][4], float('%.4g' % (d_ / (math.sqrt(2) * sd_one))), 1e-12)
+close('twins: the driven twin\'s difference about the response is 0', tab[1][5], 0.0)
+same('twins: the decorrelation time, the first bin where the tiny twin reaches 0.5', r['twin_k_decorrelation_time'], '0\t0.25')
+same('twins: an unbiased estimator over [0.25, 0.5]', r['twin_k_bias_0.25_0.5'].split('\t')[0], '0')
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

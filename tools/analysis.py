@@ -2527,6 +2527,91 @@ def gk_rotational_friction(noise, snoise, mu, R):
     return v_div(num(noise) / 2, num(snoise) / 2, z)
 
 
+def twins(kind, files, steady, plain, out):
+    """pan-estimators' twins (correlated sampling): per seed a base run, a driven one and a tiny-drive
+    one branched from the same state, their series as means over windows of 5 steps (W = 0.05 time
+    units; FILES: base, drive, tiny per seed). Per bin of 5 windows: the response (driven minus base,
+    its stderr from the seeds' scatter), over the steady value STEADY, and the rms of the tiny twin's
+    difference and of the driven twin's difference about the response, each over sqrt(2) x the rms
+    of one run's window means over the second half (1: independent, 0: identical) - written to OUT;
+    the Lyapunov rate, the slope of log(tiny decorrelation) against time where it lies in
+    (0.005, 0.3) (line); the decorrelation time, the first bin start where it reaches 0.5 (stderr:
+    the bin, 0.25); per window [t1, t2] after the branch, the twin estimator's (the mean difference
+    there, over the seeds) bias against STEADY and its variance x 2 t2 (a driven and a base run)
+    over the plain average's variance x time PLAIN, with a variance's relative error
+    sqrt(2 / (n - 1)): the summary rows"""
+    W = 0.05
+    ns = len(files) // 3
+    x = {}
+    nw = 0
+    for si in range(ns):
+        for k in range(3):
+            with open(files[3 * si + k]) as f:
+                vals = f.read().split('\n')
+            if vals and vals[-1] == '':
+                vals.pop()
+            x[si, k] = vals
+            nw = len(vals)
+
+    def xv(si, k, w):
+        v = x[si, k]
+        return num(v[w - 1]) if w - 1 < len(v) else 0.0
+    v = [x[si, 0][w - 1] if w - 1 < len(x[si, 0]) else '' for si in range(ns) for w in range(1, nw + 1) if 2 * w > nw]
+    o = mean_se(v)
+    ind = sqrt(2) * (num(o.se) * sqrt(len(v)))
+    table = ['t\tresponse\tresponse_se\tresponse_over_steady\ttiny_decorrelation\tfull_decorrelation']
+    nb = nw // 5
+    tdec = 'nan'
+    lx, ly = [], []
+    for b in range(1, nb + 1):
+        e2 = r2 = 0.0
+        rr = []
+        for si in range(ns):
+            rs = 0.0
+            for w in range(5 * (b - 1) + 1, 5 * b + 1):
+                e2 += sq(xv(si, 2, w) - xv(si, 0, w))
+                rs += xv(si, 1, w) - xv(si, 0, w)
+            rr.append(rs / 5)
+        o = mean_se(rr)
+        resp, rse = o.v, o.se
+        for si in range(ns):
+            for w in range(5 * (b - 1) + 1, 5 * b + 1):
+                r2 += sq(xv(si, 1, w) - xv(si, 0, w) - num(resp))
+        c = div(sqrt(e2 / (5 * ns)), ind)
+        cf = div(sqrt(r2 / (5 * ns)), ind)
+        t = (b - 0.5) * 5 * W
+        if tdec == 'nan' and ge(c, 0.5):
+            tdec = (b - 1) * 5 * W
+        if gt(c, 0.005) and lt(c, 0.3):
+            lx.append(t)
+            ly.append(log(c))
+        table.append(cfmt('%.3f\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g', t, resp, rse, 'nan' if steady == '' else div(num(resp), num(steady)), c, cf))
+    with open(out, 'w') as f:
+        f.write(''.join(l + '\n' for l in table))
+    ln = line(lx, ly)
+    rows_ = ['twin_%s_lyapunov_rate\t%s\t%s' % (kind, fmt_nan('%.4g', ln.slope), fmt_nan('%.2g', ln.slope_se)),
+             cfmt('twin_%s_decorrelation_time\t%s\t%.2g', kind, tdec, 5 * W)]
+    for t1, t2 in (('0.25', '0.5'), ('0.5', '1'), ('1', '2'), ('2', '4')):
+        y = []
+        for si in range(ns):
+            a = 0.0
+            k = 0
+            for w in range(1, nw + 1):
+                if (w - 1) * W >= num(t1) and w * W <= num(t2) + 1e-9:
+                    a += xv(si, 1, w) - xv(si, 0, w)
+                    k += 1
+            y.append(div(a, k))
+        o = mean_se(y)
+        S, P = steady, plain
+        bias = 'nan' if S == '' else num(o.v) / num(S) - 1
+        bse = 'nan' if S == '' else num(o.se) / abs(num(S))
+        vr = 'nan' if P == '' else num(o.se) * num(o.se) * ns * 2 * num(t2) / num(P)
+        vrs = 'nan' if P == '' else num(o.se) * num(o.se) * ns * 2 * num(t2) / num(P) * sqrt(2 / (ns - 1))
+        rows_.append('twin_%s_bias_%s_%s\t%s\t%s' % (kind, t1, t2, fmt_nan('%.4g', bias), fmt_nan('%.2g', bse)))
+        rows_.append('twin_%s_variance_ratio_%s_%s\t%s\t%s' % (kind, t1, t2, fmt_nan('%.4g', vr), fmt_nan('%.2g', vrs)))
+    return rows_
+
+
 PE_COMMANDS = {
     'precision-totals': lambda a: precision_totals(a[0]),
     'half-percent-totals': lambda a: half_percent_totals(a[0]),
@@ -2542,6 +2627,12 @@ PE_COMMANDS = {
     'hold-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[3:])] if r else [])(_row_where(a[0], [(1, a[1]), (2, a[2])])),
     # prod-time STEPS ARGS SCENE
     'prod-time': lambda a: [prod_time(a[0], a[1], a[2])],
+    # twins KIND STEADY PLAIN OUT FILE...: the twins' table OUT and summary rows
+    'twins': lambda a: twins(a[0], a[4:], a[1], a[2], a[3]),
+    # ladder-cols LADDER OMEGA COL...: those columns of the drive's row
+    'ladder-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[2:])] if r else [])(_row_where(a[0], [(1, a[1])])),
+    # ladder-steady LADDER OMEGA: the drive's torque scaled to Omega = -0.4 (linear), %.10g
+    'ladder-steady': lambda a: [cfmt('%.10g', num(fld(_row_where(a[0], [(1, a[1])]), 2)) * -0.4 / num(a[1]))],
     'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
 }
 

@@ -86,53 +86,21 @@ twins() {
     for s in $SEEDS; do
         files="$files $OUT/runs/twin_${kind}_s${s}_$b/$ser.windows $OUT/runs/twin_${kind}_s${s}_$d/$ser.windows $OUT/runs/twin_${kind}_s${s}_$t/$ser.windows"
     done
-    num_awk -v files="$files" -v S="$steady" -v P="$plain" -v kind=$kind -v out="$OUT/twin_$kind.tsv" 'BEGIN {
-        nf = split(files, f, " "); ns = nf / 3; W = 0.05
-        for (s = 1; s <= ns; s++) for (k = 0; k < 3; k++) { n = 0
-            while ((getline l < f[3 * (s - 1) + k + 1]) > 0) x[s, k, ++n] = l; nw = n }
-        # one run'"'"'s window variance, over the second half of the windows (the fluid settled), all seeds
-        m = 0; for (s = 1; s <= ns; s++) for (w = 1; w <= nw; w++) if (2 * w > nw) { v[++m] = x[s, 0, w] }
-        num_mean_se(v, m, o); sd = o["se"] * sqrt(m); ind = sqrt(2) * sd
-        print "t\tresponse\tresponse_se\tresponse_over_steady\ttiny_decorrelation\tfull_decorrelation" > out
-        # bins of 5 windows (0.25 time units): the table; lambda from the tiny twin over bins where it is 0.005 ... 0.3
-        nb = int(nw / 5); tdec = "nan"; nl = 0
-        for (b = 1; b <= nb; b++) { q = 0; e2 = 0; r2 = 0
-            for (s = 1; s <= ns; s++) { rs = 0
-                for (w = 5 * (b - 1) + 1; w <= 5 * b; w++) { e2 += num_sq(x[s, 2, w] - x[s, 0, w]); rs += x[s, 1, w] - x[s, 0, w] }
-                rr[s] = rs / 5 }
-            num_mean_se(rr, ns, o); resp = o["v"]; rse = o["se"]
-            for (s = 1; s <= ns; s++) for (w = 5 * (b - 1) + 1; w <= 5 * b; w++) { r2 += num_sq(x[s, 1, w] - x[s, 0, w] - resp) }
-            c = sqrt(e2 / (5 * ns)) / ind; cf = sqrt(r2 / (5 * ns)) / ind; t = (b - 0.5) * 5 * W
-            if (tdec == "nan" && c >= 0.5) tdec = (b - 1) * 5 * W
-            if (c > 0.005 && c < 0.3) { nl++; lx[nl] = t; ly[nl] = log(c) }
-            printf "%.3f\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\n", t, resp, rse, (S == "" ? "nan" : resp / S), c, cf > out }
-        num_line(lx, ly, nl, o)
-        printf "twin_%s_lyapunov_rate\t%s\t%s\n", kind, num_fmt("%.4g", o["slope"]), num_fmt("%.2g", o["slope_se"])
-        printf "twin_%s_decorrelation_time\t%s\t%.2g\n", kind, tdec, 5 * W
-        # the twin estimator over [t1, t2]: its mean over the steady value, and its variance x 2 t2 over
-        # the plain average'"'"'s variance x time
-        split("0.25:0.5 0.5:1 1:2 2:4", win, " ")
-        for (i = 1; i <= 4; i++) { split(win[i], tt, ":")
-            for (s = 1; s <= ns; s++) { a = 0; k = 0
-                for (w = 1; w <= nw; w++) if ((w - 1) * W >= tt[1] && w * W <= tt[2] + 1e-9) { a += x[s, 1, w] - x[s, 0, w]; k++ }
-                y[s] = a / k }
-            num_mean_se(y, ns, o)
-            printf "twin_%s_bias_%s_%s\t%s\t%s\n", kind, tt[1], tt[2], num_fmt("%.4g", S == "" ? "nan" : o["v"] / S - 1), num_fmt("%.2g", S == "" ? "nan" : o["se"] / num_abs(S))
-            printf "twin_%s_variance_ratio_%s_%s\t%s\t%s\n", kind, tt[1], tt[2],
-                   num_fmt("%.4g", P == "" ? "nan" : o["se"] * o["se"] * ns * 2 * tt[2] / P), num_fmt("%.2g", P == "" ? "nan" : o["se"] * o["se"] * ns * 2 * tt[2] / P * sqrt(2 / (ns - 1))) } }' >> "$OUT/summary.tsv"
+    # shellcheck disable=SC2086
+    "$ANALYSE" twins "$kind" "$steady" "$plain" "$OUT/twin_$kind.tsv" $files >> "$OUT/summary.tsv"
 }
 # the steady responses and the plain averages' noise (variance x time) they are compared with: drag at
 # V = 0.3 from the held u = 0.3 in the same 10^3 box (opposite sign: the sphere moves through the fluid),
 # torque at Omega = -0.4 from the ladder's weakest drive (scaled by Omega; gamma^C_cf does not enter, Fig. 1)
 sd=""; pd=""
 if [ -n "$(zrow 10 0.3)" ]; then
-    sd=$(get hold_L10_u0.3 drag_on_colloid_x | awk '{ printf "%.10g", -$1 }')
-    pd=$(awk -F'\t' '$1 == 10 && $2 == 0.3 { print $13 }' "$OUT/hold.tsv")
+    sd=$("$ANALYSE" scale "$(get hold_L10_u0.3 drag_on_colloid_x)" -1 | cut -f1)
+    pd=$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 13)
 fi
 twins drag drag_on_colloid_x V0.0 V0.3 V0.003 "$sd" "$pd"
 wk=${ws[0]}
-sr=$(awk -F'\t' -v W=$wk '$1 == W { printf "%.10g", $2 * -0.4 / W }' "$OUT/ladder.tsv")
-pr=$(awk -F'\t' -v W=$wk '$1 == W { print $6 }' "$OUT/ladder.tsv")
+sr=$("$ANALYSE" ladder-steady "$OUT/ladder.tsv" $wk)
+pr=$("$ANALYSE" ladder-cols "$OUT/ladder.tsv" $wk 6)
 twins rot torque_on_colloid_z W0.0 W-0.4 W-0.004 "$sr" "$pr"
 
 # ------------------------------------------------------------------ 2d. Green-Kubo for the rotational friction
