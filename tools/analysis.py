@@ -2612,6 +2612,64 @@ def twins(kind, files, steady, plain, out):
     return rows_
 
 
+def pair_periodic_factor(L, R):
+    """the leading periodic-array correction of the drag on each of two spheres per cubic cell of side
+    L: 1 / (1 - 2 x 2.837297 R / L) (the partner's images and the sphere's own each give the backflow
+    -2.837297 F / (6 pi mu L) at the sphere: the Hasimoto / Yeh-Hummer constant), %.10g"""
+    return cfmt('%.10g', 1 / (1 - 2 * 2.837297 * num(R) / num(L)))
+
+
+def pair_box_row(L, l, u, drag, sdrag, F, P, pF):
+    """pan-estimators: a pair's drag per sphere over eq. 23's F, over the periodic prediction P as
+    well, and Pan's value pF over F: a pair_boxes.tsv row"""
+    d, sd_, F_, P_ = num(drag), num(sdrag), num(F), num(P)
+    return cfmt('%s\t%s\t%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g', L, l, u, drag, sdrag, d / F_, sd_ / F_, P_,
+                d / F_ / P_, sd_ / F_ / P_, num(pF) / F_)
+
+
+def cols_where(path, conds, cols):
+    """selection: the given columns of the first row after the header whose columns equal the given
+    values ("C=V" each, mawk's comparison), tab-separated; None if there is none"""
+    r = _row_where(path, [(int(c.split('=', 1)[0]), c.split('=', 1)[1]) for c in conds])
+    return None if r is None else '\t'.join(fld(r, int(c)) for c in cols)
+
+
+def torque_over_drag(files):
+    """pan-estimators: the torque over the drag of a pair of spheres from the per-block tables of one
+    or more runs: each run's block means (mean_se of the columns drag and torque, as printed), the
+    runs' inverse-variance weighted means (wmean_se), their ratio (first order):
+    "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se" """
+    F = [column_mean_se(f, 2).pair() for f in files]
+    T = [column_mean_se(f, 3).pair() for f in files]
+    oF = wmean_se([x.split('\t')[0] for x in F], [x.split('\t')[1] for x in F])
+    oT = wmean_se([x.split('\t')[0] for x in T], [x.split('\t')[1] for x in T])
+    return '\t'.join([v_ratio(oT.v, oT.se, oF.v, oF.se).pair(), oF.pair(), oT.pair()])
+
+
+def tf_ratios(tf8, tf12, p8, p12):
+    """pan-estimators: T/F and the drag of the 8^3 box over the 12^3 box's (first order), and the
+    periodic prediction's ratio of the drags"""
+    a, b = tf8.split('\t'), tf12.split('\t')
+    return [v_ratio(a[0], a[1], b[0], b[1]).row('tf_L8_over_L12'), v_ratio(a[2], a[3], b[2], b[3]).row('drag_L8_over_L12'),
+            cfmt('drag_periodic_L8_over_L12\t%.10g\t0', num(p8) / num(p12))]
+
+
+def tf_torque(tf12, drag, t23):
+    """pan-estimators: Table 3's row-3 torque as (T/F of the 12^3 box) x the 30^3 drag (relative
+    errors in quadrature), and over eq. 23's torque"""
+    a, d = tf12.split('\t'), parse_pair(drag)
+    o = v_product(a[0], a[1], d.v, d.se)
+    return [o.row('tab03_row3_torque_via_tf'), v_div(o.v, o.se, t23).row('tab03_row3_torque_ratio_via_tf')]
+
+
+def pan_compare_row(lab, q, p, pt, v, se, r, rse):
+    """pan-estimators: one of Pan's simulated numbers p beside ours (v +- se): their ratio, the
+    difference in our stderrs, Pan's over his theory pt ("-": none) and ours over ours (r +- rse)"""
+    V, S, P = num(v), num(se), num(p)
+    return cfmt('%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.3g\t%s\t%s\t%s', lab, q, p, v, se, div(V, P), div(S, P), div(V - P, S),
+                '-' if pt == '-' else cfmt('%.10g', div(P, num(pt))), r, rse)
+
+
 PE_COMMANDS = {
     'precision-totals': lambda a: precision_totals(a[0]),
     'half-percent-totals': lambda a: half_percent_totals(a[0]),
@@ -2633,6 +2691,20 @@ PE_COMMANDS = {
     'ladder-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[2:])] if r else [])(_row_where(a[0], [(1, a[1])])),
     # ladder-steady LADDER OMEGA: the drive's torque scaled to Omega = -0.4 (linear), %.10g
     'ladder-steady': lambda a: [cfmt('%.10g', num(fld(_row_where(a[0], [(1, a[1])]), 2)) * -0.4 / num(a[1]))],
+    'pair-periodic-factor': lambda a: [pair_periodic_factor(a[0], a[1])],
+    # pair-box-row L l u "drag<TAB>se" F P PAN_F
+    'pair-box-row': lambda a: [pair_box_row(a[0], a[1], a[2], *_pairs(a[3:4]), a[4], a[5], a[6])],
+    # cols-where FILE C=V[,C=V...] COL...: selection of a row's columns (nothing if no row matches)
+    'cols-where': lambda a: (lambda t: [t] if t is not None else [])(cols_where(a[0], a[1].split(','), a[2:])),
+    # pair30-rows PAIR_BOXES: the 30^3 rows' drag over the periodic prediction as summary rows
+    'pair30-rows': lambda a: ['pair30_drag_over_periodic_l%s\t%s\t%s' % (fld(r, 2), fld(r, 9), fld(r, 10)) for r in rows(a[0])[1:] if eq(fld(r, 1), 30)],
+    # periodic-ratio-row P12 P30: the periodic predictions' ratio as awk printed it (%.6g), then %.10g
+    'periodic-ratio-row': lambda a: [cfmt('pair_periodic_L12_over_L30\t%.10g\t0', num(astr(num(a[0]) / num(a[1]))))],
+    'torque-over-drag': lambda a: [torque_over_drag(a)],
+    'tf-ratios': lambda a: tf_ratios(*a[:4]),
+    'tf-torque': lambda a: tf_torque(*a[:3]),
+    # pan-compare-row LAB Q PAN PAN_THEORY "ours<TAB>se" "ratio<TAB>se"
+    'pan-compare-row': lambda a: [pan_compare_row(a[0], a[1], a[2], a[3], *_pairs(a[4:6]))],
     'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
 }
 

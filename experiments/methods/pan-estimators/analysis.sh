@@ -114,30 +114,26 @@ twins rot torque_on_colloid_z W0.0 W-0.4 W-0.004 "$sr" "$pr"
 # spheres per cell, 1 / (1 - 2 x 2.837297 R / L) (the partner's images and the sphere's own, each
 # -2.837297 F / (6 pi mu L) at the sphere: the Yeh-Hummer / Hasimoto constant), in 12^3 (this
 # experiment, l = 1, u = 0.3) and 30^3 (tab03's committed rows)
-eq23F() { awk -v l=$1 -v u=$2 -v m=$MU -v R=$R -v pi=$PI 'BEGIN { q = R / l
-    printf "%.10g", 6*pi*m*R*u * (1 - 3*q/4 + 9*q^2/16 - 59*q^3/64 + 465*q^4/256 - 15813*q^5/7168) }'; }
-lattice2() { awk -v L=$1 -v R=$R 'BEGIN { printf "%.10g", 1 / (1 - 2 * 2.837297 * R / L) }'; }
+eq23F() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R | cut -d' ' -f1; }
+lattice2() { "$ANALYSE" pair-periodic-factor $1 $R; }
 printf 'L\tl\tu\tdrag\tdrag_se\tdrag_over_eq23\tse\tperiodic_prediction\tover_prediction\tse\tpan_over_eq23\n' > "$OUT/pair_boxes.tsv"
 pan_F() { case $1 in 2.0) echo 4.861;; 1.5) echo 4.857;; 1.0) echo 4.863;; esac; }
 for r in 1 2 3; do
     l=$(case $r in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac)
-    paste <(sget "$T03" drag_row$r) | num_awk -F'\t' -v l=$l -v F=$(eq23F $l 0.3) -v P=$(lattice2 30) -v pF=$(pan_F $l) '{
-        printf "30\t%s\t0.3\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\n", l, $1, $2, $1 / F, $2 / F, P, $1 / F / P, $2 / F / P, pF / F }' >> "$OUT/pair_boxes.tsv"
+    "$ANALYSE" pair-box-row 30 $l 0.3 "$(sget "$T03" drag_row$r)" $(eq23F $l 0.3) $(lattice2 30) $(pan_F $l) >> "$OUT/pair_boxes.tsv"
 done
 for p in $PAIR12; do
     u=${p%%:*}
     F=$(column_mean_se "$OUT/runs/pair12_u$u/sphere_blocks.tsv" 2)
-    echo "$F" | num_awk -F'\t' -v u=$u -v F=$(eq23F 1.0 $u) -v P=$(lattice2 12) -v pF=$(pan_F 1.0) '{
-        printf "12\t1.0\t%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\n", u, $1, $2, $1 / F, $2 / F, P, $1 / F / P, $2 / F / P, pF / F }' >> "$OUT/pair_boxes.tsv"
-    emit "pair12_drag_over_eq23_u$u" $(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $6 "\t" $7 }' "$OUT/pair_boxes.tsv")
-    emit "pair12_drag_over_periodic_u$u" $(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $9 "\t" $10 }' "$OUT/pair_boxes.tsv")
+    "$ANALYSE" pair-box-row 12 1.0 $u "$F" $(eq23F 1.0 $u) $(lattice2 12) $(pan_F 1.0) >> "$OUT/pair_boxes.tsv"
+    emit "pair12_drag_over_eq23_u$u" $("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 6 7)
+    emit "pair12_drag_over_periodic_u$u" $("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 9 10)
     emit "pair12_torque_u$u" $(column_mean_se "$OUT/runs/pair12_u$u/sphere_blocks.tsv" 3)
     # the box ratio: l = 1's drag per sphere in 12^3 over 30^3, both at u = 0.3, against the prediction
-    paste <(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $4 "\t" $5 }' "$OUT/pair_boxes.tsv") <(sget "$T03" drag_row3) |
-        num_awk -F'\t' -v p=$(awk -v a=$(lattice2 12) -v b=$(lattice2 30) 'BEGIN { print a / b }') '{ num_ratio($1, $2, $3, $4, o)
-            print num_row("pair_drag_L12_over_L30", o); printf "pair_periodic_L12_over_L30\t%.10g\t0\n", p }' >> "$OUT/summary.tsv"
+    emit pair_drag_L12_over_L30 "$("$ANALYSE" ratio "$("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 4 5)" "$(sget "$T03" drag_row3)")"
+    "$ANALYSE" periodic-ratio-row $(lattice2 12) $(lattice2 30) >> "$OUT/summary.tsv"
 done
-awk -F'\t' 'NR > 1 && $1 == 30 { printf "pair30_drag_over_periodic_l%s\t%s\t%s\n", $2, $9, $10 }' "$OUT/pair_boxes.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" pair30-rows "$OUT/pair_boxes.tsv" >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 3b. torque over drag, box by box
 # The periodic images change the flow a sphere of the pair sees by a uniform backflow at leading
@@ -148,12 +144,7 @@ awk -F'\t' 'NR > 1 && $1 == 30 { printf "pair30_drag_over_periodic_l%s\t%s\t%s\n
 # at a fraction of the cost. Tested: l = 1, u = 0.6 in 8^3 and 12^3 (12^3: this experiment's run and
 # the committed ladder's u = 0.6 run, weighted by their errors); 30^3 at u = 0.3 (tab03 row 3).
 tf() {   # FILE(S) of sphere_blocks -> "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se" (runs weighted by their errors)
-    local f F="" T=""
-    for f in "$@"; do F="$F$(column_mean_se "$f" 2);"; T="$T$(column_mean_se "$f" 3);"; done
-    num_awk -v F="$F" -v T="$T" 'BEGIN { n = split(F, a, ";") - 1; split(T, b, ";")
-        for (i = 1; i <= n; i++) { split(a[i], x, "\t"); split(b[i], y, "\t"); f[i] = x[1]; fs[i] = x[2]; t[i] = y[1]; ts[i] = y[2] }
-        num_wmean_se(f, fs, n, oF); num_wmean_se(t, ts, n, oT); num_ratio(oT["v"], oT["se"], oF["v"], oF["se"], o)
-        printf "%s\t%s\t%s\n", num_pair(o), num_pair(oF), num_pair(oT) }'
+    "$ANALYSE" torque-over-drag "$@"
 }
 if [ -n "$PAIRBOX" ]; then
     printf 'L\tu\tT_over_F\tse\tdrag\tdrag_se\ttorque\ttorque_se\tperiodic_prediction_drag\n' > "$OUT/torque_over_drag.tsv"
@@ -164,17 +155,11 @@ if [ -n "$PAIRBOX" ]; then
     emit tf_L8_u0.6 $(echo "$tf8" | cut -f1,2)
     emit tf_L12_u0.6 $(echo "$tf12" | cut -f1,2)
     emit tf_L30_u0.3 $(echo "$tf30" | cut -f1,2)
-    paste <(echo "$tf8") <(echo "$tf12") | num_awk -F'\t' -v p8=$(lattice2 8) -v p12=$(lattice2 12) '{
-        num_ratio($1, $2, $7, $8, o); print num_row("tf_L8_over_L12", o)
-        num_ratio($3, $4, $9, $10, o); print num_row("drag_L8_over_L12", o)
-        printf "drag_periodic_L8_over_L12\t%.10g\t0\n", p8 / p12 }' >> "$OUT/summary.tsv"
+"$ANALYSE" tf-ratios "$tf8" "$tf12" $(lattice2 8) $(lattice2 12) >> "$OUT/summary.tsv"
     # Table 3's row 3 torque in 30^3 from (T / F) of 12^3 times the 30^3 drag (u = 0.3; the ratio is
     # linear in u within the ladder's 6 %), over eq. 23, beside the plain 30^3 average
-    T23=$(awk -v l=1.0 -v u=0.3 -v m=$MU -v R=$R -v pi=$PI 'BEGIN { q = R / l
-        printf "%.10g", 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024) }')
-    paste <(echo "$tf12") <(sget "$T03" drag_row3) | num_awk -F'\t' -v t=$T23 '{
-        num_product($1, $2, $7, $8, o); print num_row("tab03_row3_torque_via_tf", o)
-        num_div(o["v"], o["se"], t, r); print num_row("tab03_row3_torque_ratio_via_tf", r) }' >> "$OUT/summary.tsv"
+    T23=$("$ANALYSE" two-sphere-theory 1.0 0.3 $MU $R | cut -d' ' -f2)
+    "$ANALYSE" tf-torque "$tf12" "$(sget "$T03" drag_row3)" $T23 >> "$OUT/summary.tsv"
 fi
 
 # ------------------------------------------------------------------ 4. ours against Pan's simulated values
@@ -186,9 +171,7 @@ pan_compare() {
     # (PAN_THEORY and OURS_RATIO_QUANTITY "-": no theory value)
     row() { local d=$1 q=$2 p=$3 pt=$4 rq=$5 lab=$6 rr="-	-"
         [ "$rq" = - ] || rr=$(sget "$d" "$rq")
-        paste <(sget "$d" "$q") <(echo "$rr") | awk -F'\t' -v p=$p -v pt=$pt -v lab="$lab" -v q=$q '{
-            printf "%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.3g\t%s\t%s\t%s\n", lab, q, p, $1, $2, $1 / p, $2 / p, ($1 - p) / $2,
-                   (pt == "-" ? "-" : sprintf("%.10g", p / pt)), $3, $4 }'; }
+        "$ANALYSE" pan-compare-row "$lab" $q $p $pt "$(sget "$d" "$q")" "$rr"; }
     row "$F01" torque_ratio_gS5.5 1.013 1 torque_ratio_gS5.5 "fig01	Omega -0.4"
     row "$F02" u_gC3.5 0.2986 - u_ratio_eq19_gC3.5 "fig02	gC 3.5"
     row "$EQ16" D_colloid 0.0533 - - "eq16	10^3"
