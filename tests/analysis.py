@@ -563,6 +563,14 @@ close('pan_compare_row: ours over Pan\'s', r[6], 1.5)
 close('pan_compare_row: the difference in our stderrs', r[8], 2.0)
 close('pan_compare_row: Pan\'s over his theory', r[9], 0.5)
 
+r = A.est_row('q', 'e', 's', '2', '0.2', '3', 'ck', 'k').split('\t')
+close('est_row: (se / value)^2 x CPU-hours', r[6], 0.03)
+close('est_row: the CPU-hours for 1 %, r / 1e-4', r[7], 300.0)
+same('run_cpu_hours: the runs\' cpu_seconds summed, scaled, in hours', A.run_cpu_hours(['cpu_seconds\t3600\t0', 'x\t5\t0', 'cpu_seconds\t1800\t0'], '2'), '3')
+same('fmt: a pair gives two arguments', A.COMMANDS['fmt'](['%.2f +- %.2f', '1.234\t0.056']), ['1.23 +- 0.06'])
+same('half-pair: v / 2 and se / 2', A.COMMANDS['half-pair'](['3\t0.5']), ['1.5 0.25'])
+same('drive_projection: the torque linear in u', A.drive_projection('0.1', '0.01', '0.6', '5'), '0.2 0.01 5')
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

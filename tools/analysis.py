@@ -2670,6 +2670,33 @@ def pan_compare_row(lab, q, p, pt, v, se, r, rse):
                 '-' if pt == '-' else cfmt('%.10g', div(P, num(pt))), r, rse)
 
 
+def est_row(q, e, st, v, se, c, ck, k):
+    """pan-estimators' figure of merit of an estimator: the relative variance x CPU-hours,
+    r = (se / value)^2 x CPU_h, and r / 1e-4, the CPU-hours a relative stderr of 1 % needs: an
+    estimators.tsv row"""
+    r = pw(div(num(se), num(v)), 2) * num(c)
+    if r < 0:
+        r = -r
+    return cfmt('%s\t%s\t%s\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%s\t%s', q, e, st, v, se, c, r, r / 1e-4, ck, k)
+
+
+def run_cpu_hours(lines, f=1):
+    """the CPU-hours of the runs whose summaries are LINES (their cpu_seconds rows summed), times the
+    speed factor F of the binary that made them, %.6g"""
+    s = 0.0
+    for l in lines:
+        r = l.split('\t')
+        if fld(r, 1) == 'cpu_seconds':
+            s += num(fld(r, 2))
+    return cfmt('%.6g', s * num(f) / 3600)
+
+
+def drive_projection(T, se, u, c):
+    """pan-estimators: Table 3's torque at a stronger drive u projected from u = 0.3 (linear in u),
+    with the same noise and cost: "T se cpu_h" """
+    return cfmt('%.6g %.4g %.6g', num(T) * num(u) / 0.3, se, c)
+
+
 PE_COMMANDS = {
     'precision-totals': lambda a: precision_totals(a[0]),
     'half-percent-totals': lambda a: half_percent_totals(a[0]),
@@ -2705,6 +2732,18 @@ PE_COMMANDS = {
     'tf-torque': lambda a: tf_torque(*a[:3]),
     # pan-compare-row LAB Q PAN PAN_THEORY "ours<TAB>se" "ratio<TAB>se"
     'pan-compare-row': lambda a: [pan_compare_row(a[0], a[1], a[2], a[3], *_pairs(a[4:6]))],
+    # est-row QUANTITY ESTIMATOR SETUP VALUE SE CPU_H CHECK KEPT
+    'est-row': lambda a: [est_row(*a[:8])],
+    # rcpu SUMMARY [FACTOR] (SUMMARY - : stdin)
+    'rcpu': lambda a: [run_cpu_hours(sys.stdin.read().split('\n') if a[0] in ('-', '/dev/stdin') else open(a[0]).read().split('\n'),
+                                     a[1] if len(a) > 1 else 1)],
+    # fmt FMT ARG...: C's printf of the arguments (an argument "v<TAB>se" gives two)
+    'fmt': lambda a: [cfmt(a[0], *[x for arg in a[1:] for x in arg.split('\t')])],
+    # half-pair "v<TAB>se" -> v/2 se/2 as awk prints them
+    'half-pair': lambda a: [astr(num(parse_pair(a[0]).v) / 2) + ' ' + astr(num(parse_pair(a[0]).se) / 2)],
+    # with-variance-se X DOF -> x and its stderr as a variance from DOF + 1 blocks, x sqrt(2 / DOF), as awk prints it
+    'with-variance-se': lambda a: [a[0] + ' ' + astr(num(a[0]) * sqrt(2 / num(a[1])))],
+    'drive-projection': lambda a: [drive_projection(*a[:4])],
     'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
 }
 

@@ -198,11 +198,9 @@ pan_compare > "$OUT/pan_compare.tsv"
 # bench/speedup.tsv, $OLD, as tools/cost does); this experiment's runs are this binary's.
 # est_row QUANTITY ESTIMATOR SETUP VALUE SE CPU_H CHECK KEPT
 est_row() {
-    awk -v q="$1" -v e="$2" -v st="$3" -v v="$4" -v se="$5" -v c="$6" -v ck="$7" -v k="$8" 'BEGIN {
-        r = (se / v) ^ 2 * c; if (r < 0) r = -r
-        printf "%s\t%s\t%s\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%s\t%s\n", q, e, st, v, se, c, r, r / 1e-4, ck, k }'
+    "$ANALYSE" est-row "$@"
 }
-rcpu() { awk -F'\t' -v f=${2:-1} '$1 == "cpu_seconds" { s += $2 } END { printf "%.6g", s * f / 3600 }' "$1"; }
+rcpu() { "$ANALYSE" rcpu "$1" ${2:-1}; }
 pair() { printf '%s %s' "$(echo "$1" | cut -f1)" "$(echo "$1" | cut -f2)"; }
 {
 printf 'quantity\testimator\tsetup\tvalue\tse\tcpu_h\trel_var_cpu_h\tcpu_h_for_1pct\tcheck\tkept\n'
@@ -212,30 +210,30 @@ est_row "fig01 torque" "plain average, Omega = -0.4" "10^3, one sphere, 1500 t.u
 prev=-0.4
 for W in "${ws[@]}"; do
     est_row "fig01 torque" "stronger drive, Omega = $W" "10^3, one sphere (this experiment)" \
-        $(awk -F'\t' -v W=$W '$1 == W { print $2, $3, $7 }' "$OUT/ladder.tsv") \
-        "torque per Omega over Omega = $prev: $(get . ladder_linearity_W${W}_vs_W$prev | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" \
+        $("$ANALYSE" ladder-cols "$OUT/ladder.tsv" $W 2 3 7) \
+        "torque per Omega over Omega = $prev: $("$ANALYSE" fmt "%.4f +- %.4f" "$(get . ladder_linearity_W${W}_vs_W$prev)")" \
         "kept where linear"
     prev=$W
 done
-read -r v se < <(sget "$T01" cv_noise_total | awk -F'\t' '{ print $1 / 2, $2 / 2 }')
+read -r v se < <("$ANALYSE" half-pair "$(sget "$T01" cv_noise_total)")
 est_row "fig01 torque" "Green-Kubo (Einstein form): total torque's variance x time / 2 kBT" "10^3, seven spheres at rest, 3 components, 24 x 10 t.u. (tab01 cv runs)" \
     $v $se $(cat "$T01"/runs/cv*/summary.tsv | rcpu /dev/stdin $OLD) \
-    "friction over eq. 18: $(get . gk_rotational_friction_over_eq18 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }') (driven, Omega = -0.4: $(sget "$F01" torque_ratio_gS5.5 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'))" no
+    "friction over eq. 18: $("$ANALYSE" fmt "%.3f +- %.3f" "$(get . gk_rotational_friction_over_eq18)") (driven, Omega = -0.4: $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$F01" torque_ratio_gS5.5)"))" no
 vr=$(get . twin_rot_variance_ratio_0.25_0.5 | cut -f1)
-plain_r=$(awk -F'\t' -v W=${ws[0]} '$1 == W { print $6 }' "$OUT/ladder.tsv")   # noise x time, Omega-independent
-echo "fig01 torque	twins: driven minus undriven over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's (2 branches of 0.5 t.u., no equilibration counted); response over steady $(get . twin_rot_bias_0.25_0.5 | awk -F'\t' '{ printf "%+.3f +- %.3f", $1, $2 }'): bias unresolved at 8 %	no"
+plain_r=$("$ANALYSE" ladder-cols "$OUT/ladder.tsv" ${ws[0]} 6)   # noise x time, Omega-independent
+echo "fig01 torque	twins: driven minus undriven over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's (2 branches of 0.5 t.u., no equilibration counted); response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_rot_bias_0.25_0.5)"): bias unresolved at 8 %	no"
 # B. the drag of a fixed sphere (Figs 1-2's colloid, gamma^C_cf = 3.5) in the 10^3 box
 if [ -n "$(zrow 10 0.3)" ]; then
     est_row "fig02 drag (u at F_ext)" "plain average, body force (u from the fluid's mean velocity)" "10^3, 3000 t.u. (fig02 reduced, Ornstein-Uhlenbeck error)" \
         $(pair "$(sget "$F02" u_gC3.5)") $(rcpu "$F02/runs/gC3.5/summary.tsv" $OLD) "the paper's drive" reference
     est_row "fig02 drag (u at F_ext)" "held mean velocity u = 0.3, u = F_ext / zeta" "10^3, 12000 t.u. (this experiment)" \
         $(pair "$(get . u_at_fext_L10_u0.3)") $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
-        "body force minus held: $(get . u_bodyforce_minus_held_L10 | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" "kept (no start-up, no slow mode)"
+        "body force minus held: $("$ANALYSE" fmt "%.4f +- %.4f" "$(get . u_bodyforce_minus_held_L10)")" "kept (no start-up, no slow mode)"
     est_row "fig02 drag (u at F_ext)" "Green-Kubo (Einstein form): total force's variance x time / 2 kBT" "10^3, u = 0.3 held (this experiment)" \
-        $(awk -F'\t' '$1 == 10 && $2 == 0.3 { print $15, $15 * sqrt(2 / 49) }' "$OUT/hold.tsv") $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
-        "zeta from it $(awk -F'\t' '$1 == 10 && $2 == 0.3 { printf "%.1f", $15 }' "$OUT/hold.tsv") against the driven $(awk -F'\t' '$1 == 10 && $2 == 0.3 { printf "%.2f", $3 }' "$OUT/hold.tsv"): the held momentum changes the ensemble" no
+        $("$ANALYSE" with-variance-se "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)" 49) $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
+        "zeta from it $("$ANALYSE" fmt %.1f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)") against the driven $("$ANALYSE" fmt %.2f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 3)"): the held momentum changes the ensemble" no
     vr=$(get . twin_drag_variance_ratio_0.25_0.5 | cut -f1)
-    echo "fig02 drag (u at F_ext)	twins: sphere moving at 0.3 minus at rest over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's; response over steady $(get . twin_drag_bias_0.25_0.5 | awk -F'\t' '{ printf "%+.3f +- %.3f", $1, $2 }') (Basset's transient R / sqrt(pi nu t) is +23 % at 0.375 t.u. in a continuum)	no"
+    echo "fig02 drag (u at F_ext)	twins: sphere moving at 0.3 minus at rest over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's; response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_drag_bias_0.25_0.5)") (Basset's transient R / sqrt(pi nu t) is +23 % at 0.375 t.u. in a continuum)	no"
 fi
 # C. Table 3's torque, l = 1, 30^3: the plain average at u = 0.3 and the same noise at a stronger drive
 # (projected: the 30^3 row's noise x time, its torque scaled linearly in u, its cost per time unit)
@@ -243,10 +241,10 @@ read -r T Tse < <(sget "$T03" torque_row3 | tr '\t' ' ')
 c3=$(rcpu "$T03/runs/row3/summary.tsv" $OLD)
 est_row "tab03 torque l = 1" "plain average, u = 0.3" "30^3, 600 t.u. (tab03 reduced row 3)" $T $Tse $c3 "the paper's drive" reference
 for u in 0.6 1.2; do
-    awk -v T=$T -v se=$Tse -v u=$u -v c=$c3 'BEGIN { printf "%.6g %.4g %.6g\n", T * u / 0.3, se, c }' | {
+    "$ANALYSE" drive-projection $T $Tse $u $c3 | {
         read -r Tu seu cu
         est_row "tab03 torque l = 1" "stronger drive, u = $u (projected)" "30^3, the row's noise and cost per t.u." $Tu $seu $cu \
-            "12^3 ladder: torque per u at 1.2 over 0.6 $(sget "$T03" lr_torque_per_u_1.2_vs_0.6 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'), at 2.4 over 1.2 $(sget "$T03" lr_torque_per_u_2.4_vs_1.2 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'); drag per u 1.2 over 0.6 $(sget "$T03" lr_drag_per_u_1.2_vs_0.6 | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" \
+            "12^3 ladder: torque per u at 1.2 over 0.6 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_1.2_vs_0.6)"), at 2.4 over 1.2 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_2.4_vs_1.2)"); drag per u 1.2 over 0.6 $("$ANALYSE" fmt "%.4f +- %.4f" "$(sget "$T03" lr_drag_per_u_1.2_vs_0.6)")" \
             "$( [ $u = 0.6 ] && echo 'kept for l = 1 (bias about 1 %, README)' || echo 'no: linearity not shown at 2 %')"; }
 done
 # D. D of eq. 16: one 10^3 box with 27 colloids against the 1/L extrapolation of three boxes
@@ -255,7 +253,7 @@ est_row "eq16 D" "plain MSD, one box" "10^3, 27 colloids, 400 t.u. (eq16 reduced
 est_row "eq16 D" "1/L extrapolation of three boxes" "6, 8, 12, 12000 / 3000 / 2000 t.u. (eq16 reduced)" $(pair "$(sget "$EQ16" D_colloid_extrapolated)") \
     $(cat "$EQ16"/runs/box_L*/summary.tsv | rcpu /dev/stdin $OLD) "chi^2/dof $(sget "$EQ16" fit_chi2_dof | cut -f1 | xargs printf '%.1f') (errors scaled by its root)" "kept, with replicas per box"
 # E. the random part as a control variate (tab01's diagnostic, seven spheres at rest, every step sampled)
-echo "fig01 torque	control variate: D + c R (R the torque's zero-mean random part)	10^3, seven spheres at rest (tab01 cv runs)	-	-	-	-	-	variance factor at the best c $(sget "$T01" cv_variance_factor_best | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'), only with every step sampled (fig01 README: every 2 steps gives a smaller error per CPU second), and R is not in run.h5	no"
+echo "fig01 torque	control variate: D + c R (R the torque's zero-mean random part)	10^3, seven spheres at rest (tab01 cv runs)	-	-	-	-	-	variance factor at the best c $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T01" cv_variance_factor_best)"), only with every step sampled (fig01 README: every 2 steps gives a smaller error per CPU second), and R is not in run.h5	no"
 # F. replicas: the same variance per CPU-hour (plus one equilibration each), the wall time divided
 echo "every quantity	independent replicas, each with its own equilibration	any	-	-	-	-	-	same variance per CPU-hour (each adds its equilibration: 1-2 % at the paper tier's lengths); wall time / number of replicas	kept (wall time)"
 } > "$OUT/estimators.tsv"
