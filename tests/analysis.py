@@ -571,6 +571,18 @@ same('fmt: a pair gives two arguments', A.COMMANDS['fmt'](['%.2f +- %.2f', '1.23
 same('half-pair: v / 2 and se / 2', A.COMMANDS['half-pair'](['3\t0.5']), ['1.5 0.25'])
 same('drive_projection: the torque linear in u', A.drive_projection('0.1', '0.01', '0.6', '5'), '0.2 0.01 5')
 
+same('speed_factor: the class\'s factor, 1 without one', [A.speed_factor(tsv('sp.tsv', 'class\tf\nrot\t1.5\n'), c) for c in ('rot', 'none')], ['1.5', '1'])
+rc = A.run_cost(tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), tsv('rcs.tsv', 'quantity\tvalue\nsteps\t5000\t0\ncpu_seconds\t100\t0\n'), '2',
+                ['--set', 'equilibration=3000'])
+same('run_cost: production and equilibration CPU in the ratio of their steps (the arguments\' equilibration first), and the time', rc, '80\t120\t20')
+same('paper_band: the paper tier\'s claim row, columns by name', A.paper_band(tsv('pbands.tsv', 'quantity\ttier\tkind\tlo\thi\tpaper\nq\tpaper\tgate\t1\t2\t3\nq\tpaper\tclaim\t0\t10\t4\n'), 'q'), '0\t10\t4')
+r = A.precision_row('e\tq\t0\t10\t4\t5\t1\t 100:10:50:-:1\tnote', '').split('\t')
+same('precision_row: the verdict under the rule (5 +- 2 inside [0, 10])', r[7], 'PASS')
+close('precision_row: the deciding stderr at the paper\'s value, half its distance to the nearer edge', r[8], 2.0)
+close('precision_row: the CPU-hours, (sqrt(se^2 CPU))^2 / se_needed^2 + equilibration', r[12], float('%.4g' % ((100 / 4 + 10) / 3600)), 1e-12)
+r = A.precision_row('e\tq\t-\t-\t4\t5\t1\t 100:10:50:-:1\tnote', '0.005').split('\t')
+close('precision_row: Pan\'s 0.5 % of his value as the stderr to reach', r[8], 0.02)
+
 # ---- the command line a run.sh calls (tools/analyse)
 cli = os.path.join(HERE, '..', 'tools', 'analyse')
 if 'ANALYSIS_PY' not in os.environ:

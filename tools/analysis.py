@@ -2697,6 +2697,122 @@ def drive_projection(T, se, u, c):
     return cfmt('%.6g %.4g %.6g', num(T) * num(u) / 0.3, se, c)
 
 
+def speed_factor(path, cls):
+    """the speed factor of a cost class in bench/speedup.tsv (its last row), 1 if none"""
+    v = ''
+    try:
+        for r in rows(path):
+            if fld(r, 1) == cls:
+                v = fld(r, 2)
+    except OSError:
+        return '1'
+    return '1' if v == '' else v
+
+
+def run_cost(scene, summary, fac, args):
+    """precision.sh: a committed run's production and equilibration CPU seconds (its cpu_seconds x
+    the speed factor FAC, split in the ratio of production to equilibration steps) and its
+    production time units; equilibration and dt from its arguments, else its scene:
+    "prod_cpu<TAB>eq_cpu<TAB>time" (%.6g)"""
+    eq = dt = 0.0
+    with open(scene) as f:
+        for l in f.read().split('\n'):
+            l = re.sub(r'#.*', '', l, count=1)
+            if re.match(r'^[ \t]*equilibration[ \t]*=[ \t]*[0-9]+', l):
+                eq = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+            if re.match(r'^[ \t]*dt[ \t]*=[ \t]*[0-9.eE+-]+', l):
+                dt = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+    v = {}
+    for r in rows(summary):
+        v[fld(r, 1)] = fld(r, 2)
+    for a in args:
+        if a.startswith('equilibration='):
+            eq = num(a.split('=', 1)[1])
+        if a.startswith('dt='):
+            dt = num(a.split('=', 1)[1])
+    n = num(v.get('steps', ''))
+    c = num(v.get('cpu_seconds', '')) * num(fac)
+    p = div(n - eq, n)
+    return cfmt('%.6g\t%.6g\t%.6g', c * p, c * (1 - p), (n - eq) * dt)
+
+
+def paper_band(path, q):
+    """selection: "lo<TAB>hi<TAB>paper" of the first paper-tier claim row of Q in a bands.tsv (columns
+    by name; a table without a kind column: every row)"""
+    rs = rows(path)
+    c = {name: i + 1 for i, name in enumerate(rs[0])} if rs else {}
+    for r in rs[1:]:
+        if fld(r, 1) == q and fld(r, 2) == 'paper' and ('kind' not in c or fld(r, c['kind']) == 'claim'):
+            return fld(r, c['lo']) + '\t' + fld(r, c['hi']) + '\t' + fld(r, c['paper'])
+    return None
+
+
+def precision_row(line_, relmode):
+    """precision.sh (issue 38 item 1): for a claim with band [lo, hi], value v +- se and Pan's value,
+    the stderr that decides it under issue 37's rule (half the distance of the assumed true value to
+    the nearest band edge; or RELMODE x |value|: Pan's 0.5 %) at Pan's value and at ours, and the
+    CPU-hours of the plain time average for it: the runs' production variance per CPU second, parts
+    from separate simulations combined at their best split, (sum_k sqrt(se_k^2 CPU_k))^2 / se^2,
+    plus the equilibration once per run; the longest single simulation if the first group's runs
+    share it. LINE: experiment, quantity, lo, hi, paper, value, se, the groups
+    "prod_cpu:eq_cpu:time:rel:runs" (space-separated), note"""
+    f_ = line_.split('\t')
+    ex, q, lo, hi, paper, v, se, note = (fld(f_, i) for i in (1, 2, 3, 4, 5, 6, 7, 9))
+    g = fld(f_, 8).split()
+    S = EQ = 0.0
+    var = num(se) * num(se)
+    fixed = 0.0
+    pc, ec, rel, nr, s2 = [], [], [], [], []
+    for gi in g:
+        f = gi.split(':')
+        pc.append(f[0]); ec.append(f[1]); rel.append(f[3]); nr.append(f[4])
+        if rel[-1] != '-':
+            s2.append(pw(num(v) * num(rel[-1]), 2))
+            fixed += s2[-1]
+        else:
+            s2.append(None)
+    T = NR_ = 0.0
+    for i in range(len(g)):
+        if rel[i] == '-':
+            s2[i] = var - fixed
+        if s2[i] < 0:
+            s2[i] = 0.0
+        S += sqrt(s2[i] * num(pc[i]))
+        EQ += num(ec[i])
+        if i == 0:
+            T = num(g[0].split(':')[2])
+            NR_ = num(nr[0])
+
+    def dist(x):
+        return num(lo) - num(x) if lt(x, lo) else (num(x) - num(hi) if gt(x, hi) else
+                                                   (num(x) - num(lo) if lt(num(x) - num(lo), num(hi) - num(x)) else num(hi) - num(x)))
+
+    def hours(e):
+        if le(e, 0):
+            return 'inf'
+        return cfmt('%.4g', (S * S / (e * e) + EQ) / 3600)
+
+    def longest(e):
+        if le(e, 0):
+            return 'inf'
+        return cfmt('%.4g', (S * S / (e * e) / NR_ + EQ / NR_) / 3600)
+    V, E = num(v), num(se)
+    if relmode != '':
+        verdict = '-'
+        sp = -1 if paper == '-' else num(relmode) * abs(num(paper))
+        so = num(relmode) * abs(V)
+    else:
+        verdict = ('PASS' if ge(V - 2 * E, lo) and le(V + 2 * E, hi) else
+                   'FAIL' if lt(V + 2 * E, lo) or gt(V - 2 * E, hi) else 'UNRESOLVED')
+        sp = -1 if paper == '-' else dist(paper) / 2
+        so = dist(v) / 2
+    cnow = 0.0
+    for i in range(len(g)):
+        cnow += num(pc[i]) + num(ec[i])
+    return cfmt('%s\t%s\t%s\t%s\t%s\t%.6g\t%.4g\t%s\t%.3g\t%.3g\t%.6g\t%.3g\t%s\t%s\t%s\t%s', ex, q, lo, hi, paper, v, se, verdict,
+                sp, so, T, cnow / 3600, hours(sp), hours(so), longest(sp), note)
+
+
 PE_COMMANDS = {
     'precision-totals': lambda a: precision_totals(a[0]),
     'half-percent-totals': lambda a: half_percent_totals(a[0]),
@@ -2744,6 +2860,16 @@ PE_COMMANDS = {
     # with-variance-se X DOF -> x and its stderr as a variance from DOF + 1 blocks, x sqrt(2 / DOF), as awk prints it
     'with-variance-se': lambda a: [a[0] + ' ' + astr(num(a[0]) * sqrt(2 / num(a[1])))],
     'drive-projection': lambda a: [drive_projection(*a[:4])],
+    'speed-factor': lambda a: [speed_factor(a[0], a[1])],
+    # run-cost SCENE SUMMARY FACTOR ARG...
+    'run-cost': lambda a: [run_cost(a[0], a[1], a[2], a[3:])],
+    'paper-band': lambda a: (lambda b: [b] if b is not None else [])(paper_band(a[0], a[1])),
+    # plus A B -> a + b as awk prints a number
+    'plus': lambda a: [astr(num(a[0]) + num(a[1]))],
+    # rel-error SUMMARY Q -> se / |value| of the first row Q (nothing if none)
+    'rel-error-of': lambda a: (lambda v: [astr(div(num(v.split('\t')[1]), abs(num(v.split('\t')[0]))))] if v else [])(_lookup(a[0], a[1])),
+    # precision-row RELMODE LINE
+    'precision-row': lambda a: [precision_row(a[1], a[0])],
     'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
 }
 
