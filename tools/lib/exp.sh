@@ -2,10 +2,10 @@
 # Environment from tools/run-experiment: DPD (simulator), TIER, OUT (result dir).
 set -euo pipefail
 : "${DPD:?run through tools/run-experiment}" "${OUT:?}" "${TIER:?}"
-# the statistics (means, errors, fits, propagation) are num_* functions of one tested
-# library, tools/lib/numerics.awk, called through num_awk
+# the former statistics library, tools/lib/numerics.awk (num_awk): no experiment calls it since issue 40
 . "$DPD_ROOT/tools/lib/numerics.sh"
-# the analysis layer (tools/analysis.py, issue 40): "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
+# the analysis layer (tools/analysis.py, issue 40): every statistic, formula and derived simulation
+# argument of the experiments; "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
 ANALYSE=$DPD_ROOT/tools/analyse
 # tsv_lookup FILE Q [WHO] -> "value<TAB>stderr" of the first row named Q, exit 1 (saying so as WHO)
 # if none: selection only, in bash without a process, for the lookups an analysis makes in its loops
