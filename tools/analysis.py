@@ -1880,6 +1880,1168 @@ def equal_error(path, estar, solvers=('scheme1', 'scheme2_paper', 'scheme2_consi
     return out
 
 
+# ---------------------------------------------------------------- pan-2008 (Pan, Caswell & Karniadakis 2008)
+# Each formula is the paper's equation as the run.sh's awk evaluated it (same association, powers by
+# the C library's pow() as mawk's ^), so the committed tables keep their bytes.
+
+PI = 3.141592653589793
+
+
+def table_rows(path, suffix=''):
+    """the rows after a table's header, as summary rows (selection, no arithmetic); with SUFFIX
+    their first three columns, the name suffixed (fluid-viscosity: the fit at dt = 0.01)"""
+    rs = rows(path)[1:]
+    if not suffix:
+        return ['\t'.join(r) for r in rs]
+    return [fld(r, 1) + suffix + '\t' + fld(r, 2) + '\t' + fld(r, 3) for r in rs]
+
+
+def mean_runs(lines):
+    """the equal-weight mean of runs of equal length ("value<TAB>stderr" lines): the mean of the
+    values, its error sqrt(sum se^2) / n (independent runs; the runs' own errors, not their
+    scatter, which two or three runs would give poorly)"""
+    xs = [l.split('\t')[0] for l in lines]
+    es = [fld(l.split('\t'), 2) for l in lines]
+    return Val(mean(xs), div(quad(es), len(xs)))
+
+
+def column_mean_se(path, col):
+    """the mean of column COL over the rows after the header and its standard error, the rows as
+    independent samples (blocks of a series, replicas' blocks; mean_se)"""
+    return mean_se([fld(r, col) for r in rows(path)[1:]])
+
+
+def noise_row(name, se, t, dof):
+    """a torque's noise intensity: the variance of a mean times the production time it took,
+    v = se^2 t (torque^2 x time: what sets every projected run length), with the relative
+    standard error of a variance estimated from DOF + 1 blocks, sqrt(2 / DOF) (chi-square)"""
+    v = num(se) * num(se) * num(t)
+    return cfmt('%s\t%.4g\t%.2g', name, v, v * sqrt(div(2, num(dof))))
+
+
+def half_percent_time(se, t=None, dof=49):
+    """the production time (t given: t (se / 0.005)^2) or the factor on the time ((se / 0.005)^2)
+    that would bring a ratio's standard error SE to 0.5 % (the paper's precision), the error
+    scaling as 1 / sqrt(time); its relative error that of a variance from DOF + 1 blocks,
+    sqrt(2 / DOF)"""
+    a = num(se) / 0.005
+    v = a * a if t is None else num(t) * a * a
+    return cfmt('%.4g\t%.2g', v, v * sqrt(div(2, num(dof))))
+
+
+def per_unit_ratio(a, sa, da, b, sb, db):
+    """linear response: the response per unit drive at the second drive over the first's,
+    (b / db) / (a / da), the drives exact, the responses' relative errors in quadrature (first
+    order, independent runs); 1 where the response is linear"""
+    a, sa, b, sb, da, db = num(a), num(sa), num(b), num(sb), num(da), num(db)
+    x = div(div(b, db), div(a, da))
+    return Val(x, abs(x) * sqrt(pw(div(sa, a), 2) + pw(div(sb, b), 2)))
+
+
+def theory_ratio(v, sv, u, su, th):
+    """a force or torque over its theory th, which is linear in the velocity u: the ratio's
+    error the value's and u's relative errors in quadrature (num_rel2 of v / th)"""
+    return v_rel2(div(num(v), num(th)), v, sv, u, su)
+
+
+def time_of_steps(steps, dt='0.01'):
+    """production time = steps x dt, as awk printed it (%.6g past an integer)"""
+    return astr(num(steps) * num(dt))
+
+
+def production_time(steps, eq, dt=0.01):
+    """the summed production time of runs: sum over runs of (steps - equilibration steps) dt, in
+    the runs' order, printed as awk prints a number"""
+    s = 0.0
+    for n in steps:
+        s += (num(n) - num(eq)) * dt
+    return astr(s)
+
+
+def rotlet_torque(mu, R, w):
+    """Pan et al. 2008 eq. 18: the torque on a sphere of radius R spinning at w in a fluid of
+    viscosity mu at rest, T = -8 pi mu w R^3 (Stokes flow)"""
+    return cfmt('%.10g', -8 * PI * num(mu) * num(w) * pw(num(R), 3))
+
+
+def chain_shape_factor(t, st, mu, R, w, n):
+    """fig03: the shape factor T_s of a chain of N touching spheres spinning about its axis, its
+    torque over N times eq. 18's single-sphere torque, -8 pi mu w N R^3 (T_s = 1 for N = 1)"""
+    d = -8 * PI * num(mu) * num(w) * num(n) * pw(num(R), 3)
+    return cfmt('%.10g\t%.4g', div(num(t), d), div(num(st), d))
+
+
+def chain_positions(n, R, c):
+    """fig03: the centres of N touching spheres of radius R along x, centred on (c, c, c), as the
+    scene's list ([x,y,z],...) at %.4f: x_k = c + (k - (N - 1) / 2) 2 R"""
+    n, R, c = int(num(n)), num(R), num(c)
+    s = '('
+    for k in range(n):
+        s += '%s%s' % (',' if k else '', cfmt('[%.4f,%.4f,%.4f]', c + (k - (n - 1) / 2) * 2 * R, c, c))
+    return s + ')'
+
+
+def diff_sigmas(summary, a, b, name):
+    """A - B of two summary rows (errors in quadrature, num_diff; the last row of each name) and
+    the difference in units of its standard error"""
+    va = sa = vb = sb = ''
+    for r in rows(summary):
+        if fld(r, 1) == a:
+            va, sa = fld(r, 2), fld(r, 3)
+        if fld(r, 1) == b:
+            vb, sb = fld(r, 2), fld(r, 3)
+    o = v_diff(va, sa, vb, sb)
+    return [o.row(name), cfmt('%s_sigmas\t%.4g\t0', name, div(num(o.v), num(o.se)))]
+
+
+def drag_theory(mu, R, nf, g, L):
+    """fig02: eq. 19's superficial velocity of a fixed sphere dragged by the body force on N_f
+    fluid particles, u = N_f g / (6 pi mu R) (Stokes), Hasimoto's (1959) value in a periodic
+    cubic array, u (1 - 1.7601 phi^(1/3) + phi - 1.5593 phi^2), and the sphere's volume fraction
+    phi = 4 pi R^3 / (3 L^3): "u19 uH phi" """
+    m, r, n, g, L = num(mu), num(R), num(nf), num(g), num(L)
+    u19 = n * g / (6 * PI * m * r)
+    phi = 4 * PI * pw(r, 3) / (3 * pw(L, 3))
+    return cfmt('%.10g %.10g %.6g', u19, u19 * (1 - 1.7601 * pw(phi, 1 / 3) + phi - 1.5593 * pw(phi, 2)), phi)
+
+
+def superficial_velocity(u, su, nf, g, steps):
+    """fig02: the fluid's mean velocity u with the larger of the blocks' error and the
+    Ornstein-Uhlenbeck error of the total momentum relaxing through the sphere,
+    sqrt(2 u / (N_f g T)) over the production time T (friction zeta = N_f g / u, kT = 1):
+    "u<TAB>se<TAB>se_blocks<TAB>se_ou" """
+    T = num(time_of_steps(steps))
+    ou = sqrt(2 * num(u) / (num(nf) * num(g) * T))
+    se = su if gt(su, ou) else ou
+    return cfmt('%.10g\t%.4g\t%.4g\t%.4g', u, se, su, ou)
+
+
+def fig02_ratios(summary, u19, uh, q='u_gC3.5'):
+    """fig02: the calibrated u over eq. 19's and over Hasimoto's (num_div: the theories exact)"""
+    out = []
+    for r in rows(summary):
+        if fld(r, 1) == q:
+            out.append(v_div(fld(r, 2), fld(r, 3), u19).row('u_ratio_eq19_gC3.5'))
+            out.append(v_div(fld(r, 2), fld(r, 3), uh).row('u_ratio_hasimoto_gC3.5'))
+    return out
+
+
+def ou_over_blocks(path):
+    """fig02: per run, the Ornstein-Uhlenbeck error of u over the blocks' error; its relative
+    error that of the blocks' error from 20 blocks, 1 / sqrt(2 x 19), and half of u's relative
+    error (the Ornstein-Uhlenbeck error goes as sqrt(u)) in quadrature"""
+    out = []
+    for r in rows(path)[1:]:
+        x = div(num(fld(r, 5)), num(fld(r, 4)))
+        out.append(Val(x, x * sqrt(1 / 38 + sq(div(0.5 * num(fld(r, 3)), num(fld(r, 2)))))).row('u_se_ou_over_blocks_gC' + fld(r, 1)))
+    return out
+
+
+def torque_slope(path, omega, gs='5.5'):
+    """fig01: the slope of the torque against gamma^C_cf at gamma^S_cf = GS, a weighted (1 / se^2)
+    least-squares line (wline), the torques scaled to the paper's Omega = -0.4 by 0.4 / |Omega|
+    (Stokes flow is linear in Omega)"""
+    w = num(omega)
+    f = num(cfmt('%.10g', 0.4 / (-w if w < 0 else w)))
+    xs, ys, ss = [], [], []
+    for r in rows(path)[1:]:
+        if eq(fld(r, 2), num(gs)):
+            xs.append(fld(r, 1)); ys.append(num(fld(r, 3)) * f); ss.append(num(fld(r, 4)) * f)
+    o = wline(xs, ys, ss)
+    return [cfmt('torque_slope_gC\t%.10g\t%.4g', o.slope, o.slope_se)]
+
+
+def couette_torque(mu, R, c2, w):
+    """tab01, Pan et al. 2008 eq. 21: the torque on a sphere spinning at Omega in simple shear of
+    vorticity/2 = curl/2, T = 8 pi mu R^3 (curl/2 - Omega)"""
+    return cfmt('%.10g', 8 * PI * num(mu) * pw(num(R), 3) * (num(c2) - num(w)))
+
+
+def cv_pairs(paths):
+    """tab01's control variate: per run summary, sphere and component, the run means of the torque
+    without its random part (D, torque_on_sK_C) and of the random part (R, torque_random_on_sK_C):
+    "D<TAB>R" lines, sorted as text (C locale)"""
+    out = []
+    for p in paths:
+        d, r = {}, {}
+        for x in rows(p):
+            q = fld(x, 1)
+            if re.match(r'^torque_on_s[0-9]_[xyz]$', q):
+                d[q[10:]] = fld(x, 2)
+            if re.match(r'^torque_random_on_s[0-9]_[xyz]$', q):
+                r[q[17:]] = fld(x, 2)
+        out.extend(d[k] + '\t' + r.get(k, '') for k in d)
+    return sorted(out, key=lambda l: l.encode())
+
+
+def control_variate(path, t='10'):
+    """tab01: the control variate R (zero mean) of the torque D from n "D<TAB>R" pairs of run
+    means: sample variances and covariance (one pass, n - 1), the intensities (variance x the
+    runs' time t) of D, R and D + R, the correlation rho, the best coefficient c = -cov / var R
+    and its variance factor 1 - rho^2 (Rubinstein & Marcus 1985); stderrs: a variance's
+    sqrt(2 / (n - 1)), rho's (1 - rho^2) / sqrt(n - 3) (Fisher)"""
+    t = num(t)
+    n = 0
+    d = r = dd = rr = dr = 0.0
+    for x in rows(path):
+        a, b = num(fld(x, 1)), num(fld(x, 2))
+        n += 1; d += a; r += b; dd += a * a; rr += b * b; dr += a * b
+    md = d / n; mr = r / n
+    vd = (dd - n * md * md) / (n - 1); vr = (rr - n * mr * mr) / (n - 1)
+    c = (dr - n * md * mr) / (n - 1); vt = vd + vr + 2 * c
+    rho = c / sqrt(vd * vr); f = sqrt(2 / (n - 1))
+    q = lambda name, v, se: cfmt('%s\t%.6g\t%.3g', name, v, se)
+    return [q('cv_samples', n, 0),
+            q('cv_torque_mean', md, sqrt(vd / n)), q('cv_random_mean', mr, sqrt(vr / n)),
+            q('cv_noise_D', vd * t, vd * t * f), q('cv_noise_R', vr * t, vr * t * f), q('cv_noise_total', vt * t, vt * t * f),
+            q('cv_rho', rho, (1 - rho * rho) / sqrt(n - 3)), q('cv_c_best', div(-c, vr), sqrt((1 - rho * rho) * vd / vr / (n - 3))),
+            q('cv_variance_factor_best', 1 - rho * rho, 2 * abs(rho) * (1 - rho * rho) / sqrt(n - 3))]
+
+
+def bin_window(z, half):
+    """the range z - half : z + half (%g), a block_mean's bins"""
+    return cfmt('%g:%g', num(z) - num(half), num(z) + num(half))
+
+
+def linear_scale(v, sv, g, g0):
+    """a response measured at drive g0 scaled to drive g (linear response): (v g) / g0, its
+    error likewise"""
+    o = v_scale(v, sv, g)
+    return v_div(o.v, o.se, g0)
+
+
+def wall_sphere_theory(uh, mu, R, h):
+    """tab02, Pan et al. 2008 eq. 22: drag and torque on a sphere at distance h from a wall in a
+    shear flow of velocity u_h at its centre (Goldman, Cox & Brenner 1967, as the paper fits
+    them): F = 6 pi mu u R (1 - q^2 / 9) / (1 - 0.6526 q + 0.3160 q^3 - 0.242 q^4),
+    T = 8/3 pi mu u R^3 / h (1 + 0.0758 q + 0.049 q^2), q = R / h: "F T" """
+    u, m, R, h = num(uh), num(mu), num(R), num(h)
+    q = R / h
+    F = 6 * PI * m * u * R * (1 - pw(q, 2) / 9) / (1 - 0.6526 * q + 0.3160 * pw(q, 3) - 0.242 * pw(q, 4))
+    T = 8 / 3 * PI * m * u * pw(R, 3) / h * (1 + 0.0758 * q + 0.049 * pw(q, 2))
+    return cfmt('%.10g %.10g', F, T)
+
+
+def tab02_row(r, uh, suh, F, sF, T, sT, Fth, Tth, pF, pT):
+    """tab02: a row of the rendered Table 2 (formatting; the paper's Re per row)"""
+    re_ = '0.0491' if eq(r, 1) else '0.0993' if eq(r, 2) else '0.201'
+    return cfmt('%s\t%s\t%.4f +- %.4f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s',
+                r, re_, uh, suh, pF, F, sF, Fth, r, pT, T, sT, Tth, r)
+
+
+def no_slip_poiseuille(g, z, mu):
+    """tab02: the no-slip Poiseuille velocity at height z of a channel with walls at z = 1 and 9
+    (rho = 3): u = 3 g (z - 1) (9 - z) / (2 mu)"""
+    g, z, m = num(g), num(z), num(mu)
+    return cfmt('%.10g', g * 3 * (z - 1) * (9 - z) / (2 * m))
+
+
+def two_sphere_theory(l, u, mu, R):
+    """tab03, Pan et al. 2008 eq. 23: drag and torque on each of two spheres a distance l apart,
+    flow u normal to their line of centres (the method of reflections to q^5, q = R / l):
+    F = 6 pi mu R u (1 - 3q/4 + 9q^2/16 - 59q^3/64 + 465q^4/256 - 15813q^5/7168),
+    T = 8 pi mu R^3 u / l (3q/4 - 9q^2/16 + 27q^3/64 - 273q^4/256 + 1683q^5/1024): "F T" """
+    l, u, m, R = num(l), num(u), num(mu), num(R)
+    q = R / l
+    F = 6 * PI * m * R * u * (1 - 3 * q / 4 + 9 * pw(q, 2) / 16 - 59 * pw(q, 3) / 64 + 465 * pw(q, 4) / 256 - 15813 * pw(q, 5) / 7168)
+    T = 8 * PI * m * pw(R, 3) * u / l * (3 * q / 4 - 9 * pw(q, 2) / 16 + 27 * pw(q, 3) / 64 - 273 * pw(q, 4) / 256 + 1683 * pw(q, 5) / 1024)
+    return cfmt('%.10g %.10g', F, T)
+
+
+def two_sphere_positions(L, l):
+    """tab03: the box centre c = L / 2 and the spheres' y = c -+ l / 2 (%.4f each): "c ya yb" """
+    c = cfmt('%.4f', num(L) / 2)
+    return '%s %s %s' % (c, cfmt('%.4f', num(c) - num(l) / 2), cfmt('%.4f', num(c) + num(l) / 2))
+
+
+def tab03_row(r, l, u, F, sF, T, sT, Fth, Tth, pF, pT):
+    """tab03: a row of the rendered Table 3 (formatting)"""
+    return cfmt('%s\t%.2f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s',
+                l, u, pF, F, sF, Fth, r, pT, T, sT, Tth, r)
+
+
+def linear_decision(v, se):
+    """tab03's rule for the projection's drive (fixed before the ladder ran): 1 if the torque
+    per unit u is linear, |x - 1| <= 0.10 + 2 se, and resolved, 2 se <= 0.20; else 0"""
+    d = abs(num(v) - 1)
+    return '1' if le(d, 0.10 + 2 * num(se)) and le(2 * num(se), 0.20) else '0'
+
+
+def torque_projection(r, u, u0, noise, snoise, tth, cpu, steps):
+    """tab03: the time for a torque stderr of 10 % of eq. 23's torque at drive u,
+    t = noise / (0.1 T(u))^2 with T(u) = T(u0) u / u0 (linear), and its CPU-hours at the row's
+    cost per time unit (cpu / (steps dt)); the hours left after the 600 time units run at u0
+    (worth 600 (u0 / u)^2 at u); the hours at u0 itself; stderrs the noise's"""
+    n, sn, th, c_, st = num(noise), num(snoise), num(tth), num(cpu), num(steps)
+    T = th * num(u) / num(u0)
+    t = n / pw(0.1 * T, 2)
+    c = c_ / (st * 0.01)
+    f = div(sn, n)
+    h = t * c / 3600
+    rem = (t - 600 * pw(num(u0) / num(u), 2)) * c / 3600
+    t3 = n / pw(0.1 * th, 2)
+    return ['projection_u_row%s\t%s\t0' % (r, u),
+            cfmt('projection_time_row%s\t%.4g\t%.2g', r, t, t * f),
+            cfmt('projection_cpu_hours_row%s\t%.4g\t%.2g', r, h, h * f),
+            cfmt('projection_cpu_hours_remaining_row%s\t%.4g\t%.2g', r, rem, rem * f),
+            cfmt('projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g', r, t3 * c / 3600, t3 * c / 3600 * f)]
+
+
+def sphere_blocks(lines, nb):
+    """two fixed spheres a and b: per sample the drag per sphere (F_a + F_b) / 2 and the torque
+    (T_a - T_b) / 2 ("Fa Fb Ta Tb" lines), then their means over NB contiguous blocks, the first
+    n mod NB samples skipped (as src/core/blockavg.c): "block drag torque" rows (the two
+    spheres' noises averaged sample by sample, so their correlation is in the blocks' scatter)"""
+    nb = int(num(nb))
+    F, T = [], []
+    for l in lines:
+        a = l.split('\t')
+        F.append((float(a[0]) + float(a[1])) / 2)
+        T.append((float(a[2]) - float(a[3])) / 2)
+    n = len(F)
+    ln = n // nb
+    skip = n - ln * nb
+    out = ['block\tdrag\ttorque']
+    for b in range(nb):
+        f = F[skip + b * ln: skip + (b + 1) * ln]
+        t = T[skip + b * ln: skip + (b + 1) * ln]
+        out.append(cfmt('%d\t%.10g\t%.10g', b, _fmean(f), _fmean(t)))
+    return out
+
+
+def window_means(xs, w):
+    """the means of W consecutive samples from the first, a last partial window dropped (pan-estimators:
+    the twins' series kept at the resolution their analysis needs, W = 5 steps)"""
+    return [cfmt('%.10g', _fmean(xs[b * w:(b + 1) * w])) for b in range(len(xs) // w)]
+
+
+def _fmean(xs):
+    """mean (num_mean) of numbers, summed in order: nan if any is NaN or there are none"""
+    if not xs:
+        return 'nan'
+    s = 0.0
+    for x in xs:
+        if math.isnan(x):
+            return 'nan'
+        s += x
+    return s / len(xs)
+
+
+def colloid_count(L, density='0.027'):
+    """eq16: the colloids of a box of side L at the number density of the 10^3 box (rounded)"""
+    return cfmt('%d', num(density) * pw(num(L), 3) + 0.5)
+
+
+def stokes_radius(D, sD, mu):
+    """Pan et al. 2008 eq. 16 with c = 6 (Stokes-Einstein, kT = 1): R = 1 / (6 pi mu D), the
+    error from D's alone (mu the paper's, exact)"""
+    return v_rel1(div(1, 6 * PI * num(mu) * num(D)), D, sD)
+
+
+def box_corrected(D, sD, mu, L):
+    """eq16: D corrected for the periodic box, D + 2.837297 kT / (6 pi mu L) (Yeh & Hummer 2004,
+    cubic box; the correction exact), and eq. 16's R from it"""
+    c = 2.837297 / (6 * PI * num(mu) * num(L))
+    d = num(D) + c
+    return [cfmt('D_colloid_box_corrected\t%.10g\t%.4g', d, sD), stokes_radius(d, sD, mu).row('R_box_corrected')]
+
+
+def se_ratio_row(q, pair, g, n):
+    """eq16: the replicas' error of D over the colloid groups' pooled error G, and its relative
+    error that of a standard deviation from N replicas, 1 / sqrt(2 (N - 1))"""
+    s = num(parse_pair(pair).se)
+    x = div(s, num(g))
+    return cfmt('%s\t%.4g\t%.2g', q, x, div(x, sqrt(2 * (num(n) - 1))))
+
+
+def finite_size_fit(path):
+    """eq16: D(L) = D_inf + slope / L, a weighted least-squares line in 1/L (wline) over the rows
+    of d-of-L.tsv with a usable error; the errors scaled by sqrt(chi^2 / dof) when that exceeds 1
+    (the scatter exceeding the errors); r2 the unweighted coefficient of determination: the table
+    fit-d-of-L.tsv (None: fewer than 3 usable rows)"""
+    xs, ys, ss = [], [], []
+    for r in rows(path)[1:]:
+        if usable(fld(r, 4), fld(r, 5)):
+            xs.append(fld(r, 2)); ys.append(fld(r, 4)); ss.append(fld(r, 5))
+    n = len(xs)
+    if n < 3:
+        return None
+    o = wline(xs, ys, ss)
+    b, a = num(o.slope), num(o.icpt)
+    chi2 = ssr = ym = sst = 0.0
+    for x, y, s in zip(xs, ys, ss):
+        rr = num(y) - (a + b * num(x))
+        chi2 += sq(div(rr, num(s))); ssr += sq(rr); ym += num(y) / n
+    for y in ys:
+        sst += sq(num(y) - ym)
+    c = chi2 / (n - 2)
+    f = sqrt(c if c > 1 else 1)
+    return ['quantity\tvalue\tstderr',
+            cfmt('slope\t%.10g\t%.4g', b, f * num(o.slope_se)),
+            cfmt('value_at_centre\t%.10g\t%.4g', a, f * num(o.icpt_se)),
+            cfmt('r2\t%.10g\t0', 1 - ssr / sst if sst > 0 else 1), cfmt('chi2_dof\t%.10g\t0', c), cfmt('points\t%d\t0', n)]
+
+
+def yeh_hummer_rows(eta, slope, dinf, mu):
+    """eq16: Yeh & Hummer's (2004) coefficient of the finite-size term, c = 2.837297 kT /
+    (6 pi eta) with the measured eta (its relative error), the fitted slope's magnitude over it,
+    eq. 16's R from the extrapolated D with the paper's mu (D's error) and with the measured eta
+    (both errors in quadrature), and eta itself"""
+    E, S, DI = parse_pair(eta), parse_pair(slope), parse_pair(dinf)
+    m = num(mu)
+    cy = v_rel1(2.837297 / (6 * PI * num(E.v)), E.v, E.se)
+    return [cy.row('yeh_hummer_coefficient'),
+            v_ratio(-num(S.v), S.se, cy.v, cy.se).row('finite_size_slope_over_yeh_hummer'),
+            stokes_radius(DI.v, DI.se, m).row('R_extrapolated'),
+            v_rel2(div(1, 6 * PI * num(E.v) * num(DI.v)), DI.v, DI.se, E.v, E.se).row('R_extrapolated_measured_eta'),
+            Val(E.v, E.se).row('measured_eta')]
+
+
+def yeh_hummer_corrections(summary, cyh, boxes):
+    """eq16: the difference D(8) - D(6) that Yeh & Hummer's c expects, c (1/6 - 1/8), and each
+    box's D corrected by c / L (errors of D and c in quadrature: c comes from the fluid's
+    viscosity, independent of the boxes' runs)"""
+    C = parse_pair(cyh)
+    out = [v_scale(C.v, C.se, 1 / 6 - 1 / 8).row('yeh_hummer_D_L8_minus_L6')]
+    for L in boxes:
+        d = parse_pair(_lookup(summary, 'D_colloid_L' + L))
+        out.append(v_lin2(1, d.v, d.se, 1 / num(L), C.v, C.se).row('D_colloid_L%s_yeh_hummer_corrected' % L))
+    return out
+
+
+def _pan_cmd_fit(a):
+    t = finite_size_fit(a[0])
+    if t is None:
+        sys.stderr.write('eq16: fewer than 3 usable rows in %s\n' % a[0])
+        return 1
+    return t
+
+
+def _stdin_lines():
+    return [l for l in sys.stdin.read().split('\n') if l != '']
+
+
+PAN_COMMANDS = {
+    # table-rows FILE [SUFFIX]: the rows after the header (SUFFIX: the name suffixed, 3 columns)
+    'table-rows': lambda a: table_rows(a[0], a[1] if len(a) > 1 else ''),
+    # mean-runs < "v<TAB>se" lines -> the equal-weight mean of runs
+    'mean-runs': lambda a: [mean_runs(_stdin_lines()).pair()],
+    # mean-se < values (first column) -> mean and standard error of independent values
+    'mean-se': lambda a: [mean_se([l.split('\t')[0] for l in _stdin_lines()]).pair()],
+    # column-mean FILE COL -> mean and standard error of a column after the header
+    'column-mean': lambda a: [column_mean_se(a[0], int(a[1])).pair()],
+    # div "v<TAB>se" C [NAME] -> (v +- se) / c, as a pair or a row NAME
+    'div': lambda a: [(lambda o: o.row(a[2]) if len(a) > 2 else o.pair())(v_div(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1]))],
+    # noise-row NAME SE TIME DOF
+    'noise-row': lambda a: [noise_row(*a[:4])],
+    # half-percent-time SE [TIME] DOF (TIME "-": the factor on the time)
+    'half-percent-time': lambda a: [half_percent_time(a[0], None if a[1] == '-' else a[1], a[2])],
+    # per-unit-ratio "a<TAB>se" DRIVE_A "b<TAB>se" DRIVE_B [NAME]
+    'per-unit-ratio': lambda a: [(lambda o: o.row(a[4]) if len(a) > 4 else o.pair())(
+        per_unit_ratio(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], parse_pair(a[2]).v, parse_pair(a[2]).se, a[3]))],
+    # theory-ratio NAME "v<TAB>se" "u<TAB>se" THEORY
+    # per-drive-ratio "Ta<TAB>se" "curl2a<TAB>se" OMEGA_A "Tb<TAB>se" "curl2b<TAB>se" OMEGA_B NAME: tab01's torque per
+    # unit drive curl/2 - Omega (the measured curl/2, its error neglected: 0.1-0.2 %)
+    'per-drive-ratio': lambda a: [per_unit_ratio(parse_pair(a[0]).v, parse_pair(a[0]).se, num(parse_pair(a[1]).v) - num(a[2]),
+                                                 parse_pair(a[3]).v, parse_pair(a[3]).se, num(parse_pair(a[4]).v) - num(a[5])).row(a[6])],
+    'theory-ratio': lambda a: [theory_ratio(parse_pair(a[1]).v, parse_pair(a[1]).se, parse_pair(a[2]).v, parse_pair(a[2]).se, a[3]).row(a[0])],
+    'time-of-steps': lambda a: [time_of_steps(a[0])],
+    # production-time EQ_STEPS < steps lines (first column)
+    'production-time': lambda a: [production_time([l.split('\t')[0] for l in _stdin_lines()], a[0])],
+    'rotlet-torque': lambda a: [rotlet_torque(*a[:3])],
+    'chain-shape-factor': lambda a: [chain_shape_factor(parse_pair(a[0]).v, parse_pair(a[0]).se, *a[1:5])],
+    'chain-positions': lambda a: [chain_positions(*a[:3])],
+    'diff-sigmas': lambda a: diff_sigmas(*a[:4]),
+    'drag-theory': lambda a: [drag_theory(*a[:5])],
+    'superficial-velocity': lambda a: [superficial_velocity(parse_pair(a[0]).v, parse_pair(a[0]).se, *a[1:4])],
+    'fig02-ratios': lambda a: fig02_ratios(a[0], a[1], a[2]),
+    'ou-over-blocks': lambda a: ou_over_blocks(a[0]),
+    'torque-slope': lambda a: torque_slope(a[0], a[1]),
+    'couette-torque': lambda a: [couette_torque(*a[:4])],
+    'cv-pairs': lambda a: cv_pairs(a),
+    'control-variate': lambda a: control_variate(a[0]),
+    'bin-window': lambda a: [bin_window(a[0], a[1])],
+    'linear-scale': lambda a: [linear_scale(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], a[2]).pair()],
+    'wall-sphere-theory': lambda a: [wall_sphere_theory(*a[:4])],
+    # tab02-row R "uh" "F" "T" FTH TTH PAPER_F PAPER_T (pairs "v<TAB>se")
+    'tab02-row': lambda a: [tab02_row(a[0], *_pairs(a[1:4]), *a[4:8])],
+    'no-slip-poiseuille': lambda a: [no_slip_poiseuille(*a[:3])],
+    'two-sphere-theory': lambda a: [two_sphere_theory(*a[:4])],
+    # fluid-count L -> 3 L^3 (%d): the fluid particles of a box of side L at density 3
+    'fluid-count': lambda a: [cfmt('%d', 3 * pw(num(a[0]), 3))],
+    # box-centre L DIGITS -> L / 2 to DIGITS decimals
+    'box-centre': lambda a: [cfmt('%.*f', a[1], num(a[0]) / 2)],
+    # window-means W < samples -> the mean of each W consecutive samples (%.10g), a last partial window dropped
+    'window-means': lambda a: window_means([float(l) for l in _stdin_lines()], int(num(a[0]))),
+    'two-sphere-positions': lambda a: [two_sphere_positions(a[0], a[1])],
+    # tab03-row R L "u" "F" "T" FTH TTH PAPER_F PAPER_T
+    'tab03-row': lambda a: [tab03_row(a[0], a[1], parse_pair(a[2]).v, parse_pair(a[3]).v, parse_pair(a[3]).se,
+                                      parse_pair(a[4]).v, parse_pair(a[4]).se, *a[5:9])],
+    'linear-decision': lambda a: [linear_decision(parse_pair(a[0]).v, parse_pair(a[0]).se)],
+    # torque-projection R U U0 "noise" THEORY "cpu" "steps"
+    'torque-projection': lambda a: torque_projection(a[0], a[1], a[2], parse_pair(a[3]).v, parse_pair(a[3]).se, a[4],
+                                                     parse_pair(a[5]).v, parse_pair(a[6]).v),
+    # sum-first FMT < lines: FMT of the sum of their first column, in order
+    'sum-first': lambda a: [cfmt(a[0], _sum_first(_stdin_lines()))],
+    # sphere-blocks BLOCKS < "Fa Fb Ta Tb" lines
+    'sphere-blocks': lambda a: sphere_blocks(_stdin_lines(), a[0]),
+    'colloid-count': lambda a: [colloid_count(a[0])],
+    # stokes-radius NAME "D<TAB>se" MU
+    'stokes-radius': lambda a: [stokes_radius(parse_pair(a[1]).v, parse_pair(a[1]).se, a[2]).row(a[0])],
+    'box-corrected': lambda a: box_corrected(parse_pair(a[0]).v, parse_pair(a[0]).se, a[1], a[2]),
+    'se-ratio-row': lambda a: [se_ratio_row(*a[:4])],
+    # inverse X -> 1 / x (%.10g)
+    'inverse': lambda a: [cfmt('%.10g', div(1, num(a[0])))],
+    'finite-size-fit': _pan_cmd_fit,
+    'yeh-hummer-rows': lambda a: yeh_hummer_rows(*a[:4]),
+    # yeh-hummer-corrections SUMMARY "c<TAB>se" "L..."
+    'yeh-hummer-corrections': lambda a: yeh_hummer_corrections(a[0], a[1], a[2].split()),
+}
+
+
+def _pairs(ps):
+    """the value and error of each "v<TAB>se", in one list"""
+    out = []
+    for p in ps:
+        o = parse_pair(p)
+        out += [o.v, o.se]
+    return out
+
+
+def _sum_first(lines):
+    s = 0.0
+    for l in lines:
+        s += num(l.split('\t')[0])
+    return s
+
+
+# ---------------------------------------------------------------- methods/pan-estimators
+
+def precision_totals(path):
+    """pan-estimators: the CPU-hours every claim needs for its deciding stderr, summed over the
+    claims (precision.tsv's columns 13 and 14: at the paper's values and at ours; inf left out)"""
+    p = o = 0.0
+    for r in rows(path)[1:]:
+        if fld(r, 13) != 'inf':
+            p += num(fld(r, 13))
+        if fld(r, 14) != 'inf':
+            o += num(fld(r, 14))
+    return [cfmt('precision_cpu_hours_at_paper_values\t%.4g\t0', p), cfmt('precision_cpu_hours_at_our_values\t%.4g\t0', o)]
+
+
+def half_percent_totals(path):
+    """pan-estimators: the CPU-hours for a stderr of 0.5 % of every number Pan prints (column 13),
+    summed per source (the experiment's name up to its first '-', in the order first met) and in all"""
+    order, h, tot = [], {}, 0.0
+    for r in rows(path)[1:]:
+        k = re.sub(r'-.*', '', re.sub(r'.*/', '', fld(r, 1), count=1), count=1)
+        if k not in h:
+            h[k] = 0.0
+            order.append(k)
+        h[k] += num(fld(r, 13))
+        tot += num(fld(r, 13))
+    return [cfmt('half_percent_cpu_hours_%s\t%.4g\t0', k, h[k]) for k in order] + [cfmt('half_percent_cpu_hours_all\t%.4g\t0', tot)]
+
+
+def ladder_row(w, t, st, prod, cpu, mu, R):
+    """pan-estimators' rotation ladder: at spin Omega, the torque over eq. 18 (-8 pi mu Omega R^3),
+    the noise (stderr^2 x production time) and the figure of merit (se / T)^2 x CPU-hours: a
+    ladder.tsv row"""
+    T, sT, m, r = num(t), num(st), num(mu), num(R)
+    t18 = -8 * PI * m * num(w) * r * r * r
+    return cfmt('%s\t%s\t%s\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g', w, t, st, T / t18, sT / t18, sT * sT * num(prod), cpu, sq(sT / T) * num(cpu))
+
+
+def _row_where(path, conds):
+    """the first row after the header whose columns equal the given values (mawk's comparison)"""
+    for r in rows(path)[1:]:
+        if all(eq(fld(r, c), v) for c, v in conds):
+            return r
+    return None
+
+
+def ladder_rows(path, w):
+    """pan-estimators: a drive's torque ratio to eq. 18 and its noise, whose stderr is that of a
+    variance from 50 blocks, sqrt(2 / 49)"""
+    r = _row_where(path, [(1, w)])
+    return ['ladder_torque_ratio_W%s\t%s\t%s' % (w, fld(r, 4), fld(r, 5)),
+            'ladder_noise_W%s\t%s\t%s' % (w, fld(r, 6), astr(num(fld(r, 6)) * sqrt(2 / 49)))]
+
+
+def hold_row(L, u, drag, sdrag, force, sforce, prod, cpu, mu, R, fext):
+    """pan-estimators' held mean velocity: the drag coefficient zeta = drag / u, over Stokes
+    6 pi mu R and over Hasimoto's simple cubic array K(phi) = 1 / (1 - 1.7601 phi^(1/3) + phi
+    - 1.5593 phi^2) (Sangani & Acrivos 1982), phi = (4/3) pi R^3 / L^3; u at fig02's F_ext from
+    zeta, Hasimoto's u there; the noise of the drag and of the total force (variance x time) and
+    the Einstein form of the total force's fluctuations, var x T / (2 kT): a hold.tsv row"""
+    m, r, Lf, uf, Fe = num(mu), num(R), num(L), num(u), num(fext)
+    z, zs = num(drag) / uf, num(sdrag) / uf
+    S = 6 * PI * m * r
+    phi = 4 / 3 * PI * r * r * r / (Lf * Lf * Lf)
+    K = 1 / (1 - 1.7601 * pw(phi, 1 / 3) + phi - 1.5593 * phi * phi)
+    sd, sf, T = num(sdrag), num(sforce), num(prod)
+    return cfmt('%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g',
+                L, u, z, zs, z / S, zs / S, K, z / S / K, zs / S / K, Fe / z, Fe / z * zs / z, Fe / (S * K),
+                sd * sd * T, sf * sf * T, sf * sf * T / 2, cpu)
+
+
+def hold_rows(path, L, u):
+    """pan-estimators: the summary rows of a held-u run (K over Hasimoto's, u at F_ext, zeta)"""
+    r = _row_where(path, [(1, L), (2, u)])
+    return ['K_over_hasimoto_L%s_u%s\t%s\t%s' % (L, u, fld(r, 8), fld(r, 9)),
+            'u_at_fext_L%s_u%s\t%s\t%s' % (L, u, fld(r, 10), fld(r, 11)),
+            'zeta_L%s_u%s\t%s\t%s' % (L, u, fld(r, 3), fld(r, 4))]
+
+
+def hold_ratio(path, L1, u1, L2, u2, name, hname=None):
+    """pan-estimators: zeta of one held-u run over another's (relative errors in quadrature), and
+    Hasimoto's K of the two boxes over each other (exact)"""
+    a, b = _row_where(path, [(1, L1), (2, u1)]), _row_where(path, [(1, L2), (2, u2)])
+    out = [v_ratio(fld(a, 3), fld(a, 4), fld(b, 3), fld(b, 4)).row(name)]
+    if hname:
+        out.append(cfmt('%s\t%.10g\t0', hname, num(fld(a, 7)) / num(fld(b, 7))))
+    return out
+
+
+def prod_time(steps, args, scene):
+    """the production time units (dt = 0.01) of a run: its steps less the equilibration of its
+    arguments (a line equilibration=N of .args), else of its scene (the last `equilibration =`
+    setting outside comments), else 0"""
+    eq = 0.0
+    with open(scene) as f:
+        for l in f.read().split('\n'):
+            l = re.sub(r'#.*', '', l, count=1)
+            if re.match(r'^[ \t]*equilibration[ \t]*=', l):
+                eq = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+    with open(args) as f:
+        for l in f.read().split('\n'):
+            if l.startswith('equilibration='):
+                eq = num(l.split('=', 1)[1])
+    return cfmt('%.6g', (num(steps) - eq) * 0.01)
+
+
+def gk_rotational_friction(noise, snoise, mu, R):
+    """pan-estimators: the rotational friction by the Einstein form of Green-Kubo, the total
+    torque's variance x time / (2 kT), over eq. 18's 8 pi mu R^3"""
+    z = 8 * PI * num(mu) * num(R) * num(R) * num(R)
+    return v_div(num(noise) / 2, num(snoise) / 2, z)
+
+
+def twins(kind, files, steady, plain, out):
+    """pan-estimators' twins (correlated sampling): per seed a base run, a driven one and a tiny-drive
+    one branched from the same state, their series as means over windows of 5 steps (W = 0.05 time
+    units; FILES: base, drive, tiny per seed). Per bin of 5 windows: the response (driven minus base,
+    its stderr from the seeds' scatter), over the steady value STEADY, and the rms of the tiny twin's
+    difference and of the driven twin's difference about the response, each over sqrt(2) x the rms
+    of one run's window means over the second half (1: independent, 0: identical) - written to OUT;
+    the Lyapunov rate, the slope of log(tiny decorrelation) against time where it lies in
+    (0.005, 0.3) (line); the decorrelation time, the first bin start where it reaches 0.5 (stderr:
+    the bin, 0.25); per window [t1, t2] after the branch, the twin estimator's (the mean difference
+    there, over the seeds) bias against STEADY and its variance x 2 t2 (a driven and a base run)
+    over the plain average's variance x time PLAIN, with a variance's relative error
+    sqrt(2 / (n - 1)): the summary rows"""
+    W = 0.05
+    ns = len(files) // 3
+    x = {}
+    nw = 0
+    for si in range(ns):
+        for k in range(3):
+            with open(files[3 * si + k]) as f:
+                vals = f.read().split('\n')
+            if vals and vals[-1] == '':
+                vals.pop()
+            x[si, k] = vals
+            nw = len(vals)
+
+    def xv(si, k, w):
+        v = x[si, k]
+        return num(v[w - 1]) if w - 1 < len(v) else 0.0
+    v = [x[si, 0][w - 1] if w - 1 < len(x[si, 0]) else '' for si in range(ns) for w in range(1, nw + 1) if 2 * w > nw]
+    o = mean_se(v)
+    ind = sqrt(2) * (num(o.se) * sqrt(len(v)))
+    table = ['t\tresponse\tresponse_se\tresponse_over_steady\ttiny_decorrelation\tfull_decorrelation']
+    nb = nw // 5
+    tdec = 'nan'
+    lx, ly = [], []
+    for b in range(1, nb + 1):
+        e2 = r2 = 0.0
+        rr = []
+        for si in range(ns):
+            rs = 0.0
+            for w in range(5 * (b - 1) + 1, 5 * b + 1):
+                e2 += sq(xv(si, 2, w) - xv(si, 0, w))
+                rs += xv(si, 1, w) - xv(si, 0, w)
+            rr.append(rs / 5)
+        o = mean_se(rr)
+        resp, rse = o.v, o.se
+        for si in range(ns):
+            for w in range(5 * (b - 1) + 1, 5 * b + 1):
+                r2 += sq(xv(si, 1, w) - xv(si, 0, w) - num(resp))
+        c = div(sqrt(e2 / (5 * ns)), ind)
+        cf = div(sqrt(r2 / (5 * ns)), ind)
+        t = (b - 0.5) * 5 * W
+        if tdec == 'nan' and ge(c, 0.5):
+            tdec = (b - 1) * 5 * W
+        if gt(c, 0.005) and lt(c, 0.3):
+            lx.append(t)
+            ly.append(log(c))
+        table.append(cfmt('%.3f\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g', t, resp, rse, 'nan' if steady == '' else div(num(resp), num(steady)), c, cf))
+    with open(out, 'w') as f:
+        f.write(''.join(l + '\n' for l in table))
+    ln = line(lx, ly)
+    rows_ = ['twin_%s_lyapunov_rate\t%s\t%s' % (kind, fmt_nan('%.4g', ln.slope), fmt_nan('%.2g', ln.slope_se)),
+             cfmt('twin_%s_decorrelation_time\t%s\t%.2g', kind, tdec, 5 * W)]
+    for t1, t2 in (('0.25', '0.5'), ('0.5', '1'), ('1', '2'), ('2', '4')):
+        y = []
+        for si in range(ns):
+            a = 0.0
+            k = 0
+            for w in range(1, nw + 1):
+                if (w - 1) * W >= num(t1) and w * W <= num(t2) + 1e-9:
+                    a += xv(si, 1, w) - xv(si, 0, w)
+                    k += 1
+            y.append(div(a, k))
+        o = mean_se(y)
+        S, P = steady, plain
+        bias = 'nan' if S == '' else num(o.v) / num(S) - 1
+        bse = 'nan' if S == '' else num(o.se) / abs(num(S))
+        vr = 'nan' if P == '' else num(o.se) * num(o.se) * ns * 2 * num(t2) / num(P)
+        vrs = 'nan' if P == '' else num(o.se) * num(o.se) * ns * 2 * num(t2) / num(P) * sqrt(2 / (ns - 1))
+        rows_.append('twin_%s_bias_%s_%s\t%s\t%s' % (kind, t1, t2, fmt_nan('%.4g', bias), fmt_nan('%.2g', bse)))
+        rows_.append('twin_%s_variance_ratio_%s_%s\t%s\t%s' % (kind, t1, t2, fmt_nan('%.4g', vr), fmt_nan('%.2g', vrs)))
+    return rows_
+
+
+def pair_periodic_factor(L, R):
+    """the leading periodic-array correction of the drag on each of two spheres per cubic cell of side
+    L: 1 / (1 - 2 x 2.837297 R / L) (the partner's images and the sphere's own each give the backflow
+    -2.837297 F / (6 pi mu L) at the sphere: the Hasimoto / Yeh-Hummer constant), %.10g"""
+    return cfmt('%.10g', 1 / (1 - 2 * 2.837297 * num(R) / num(L)))
+
+
+def pair_box_row(L, l, u, drag, sdrag, F, P, pF):
+    """pan-estimators: a pair's drag per sphere over eq. 23's F, over the periodic prediction P as
+    well, and Pan's value pF over F: a pair_boxes.tsv row"""
+    d, sd_, F_, P_ = num(drag), num(sdrag), num(F), num(P)
+    return cfmt('%s\t%s\t%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g', L, l, u, drag, sdrag, d / F_, sd_ / F_, P_,
+                d / F_ / P_, sd_ / F_ / P_, num(pF) / F_)
+
+
+def cols_where(path, conds, cols):
+    """selection: the given columns of the first row after the header whose columns equal the given
+    values ("C=V" each, mawk's comparison), tab-separated; None if there is none"""
+    r = _row_where(path, [(int(c.split('=', 1)[0]), c.split('=', 1)[1]) for c in conds])
+    return None if r is None else '\t'.join(fld(r, int(c)) for c in cols)
+
+
+def torque_over_drag(files):
+    """pan-estimators: the torque over the drag of a pair of spheres from the per-block tables of one
+    or more runs: each run's block means (mean_se of the columns drag and torque, as printed), the
+    runs' inverse-variance weighted means (wmean_se), their ratio (first order):
+    "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se" """
+    F = [column_mean_se(f, 2).pair() for f in files]
+    T = [column_mean_se(f, 3).pair() for f in files]
+    oF = wmean_se([x.split('\t')[0] for x in F], [x.split('\t')[1] for x in F])
+    oT = wmean_se([x.split('\t')[0] for x in T], [x.split('\t')[1] for x in T])
+    return '\t'.join([v_ratio(oT.v, oT.se, oF.v, oF.se).pair(), oF.pair(), oT.pair()])
+
+
+def tf_ratios(tf8, tf12, p8, p12):
+    """pan-estimators: T/F and the drag of the 8^3 box over the 12^3 box's (first order), and the
+    periodic prediction's ratio of the drags"""
+    a, b = tf8.split('\t'), tf12.split('\t')
+    return [v_ratio(a[0], a[1], b[0], b[1]).row('tf_L8_over_L12'), v_ratio(a[2], a[3], b[2], b[3]).row('drag_L8_over_L12'),
+            cfmt('drag_periodic_L8_over_L12\t%.10g\t0', num(p8) / num(p12))]
+
+
+def tf_torque(tf12, drag, t23):
+    """pan-estimators: Table 3's row-3 torque as (T/F of the 12^3 box) x the 30^3 drag (relative
+    errors in quadrature), and over eq. 23's torque"""
+    a, d = tf12.split('\t'), parse_pair(drag)
+    o = v_product(a[0], a[1], d.v, d.se)
+    return [o.row('tab03_row3_torque_via_tf'), v_div(o.v, o.se, t23).row('tab03_row3_torque_ratio_via_tf')]
+
+
+def pan_compare_row(lab, q, p, pt, v, se, r, rse):
+    """pan-estimators: one of Pan's simulated numbers p beside ours (v +- se): their ratio, the
+    difference in our stderrs, Pan's over his theory pt ("-": none) and ours over ours (r +- rse)"""
+    V, S, P = num(v), num(se), num(p)
+    return cfmt('%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.3g\t%s\t%s\t%s', lab, q, p, v, se, div(V, P), div(S, P), div(V - P, S),
+                '-' if pt == '-' else cfmt('%.10g', div(P, num(pt))), r, rse)
+
+
+def est_row(q, e, st, v, se, c, ck, k):
+    """pan-estimators' figure of merit of an estimator: the relative variance x CPU-hours,
+    r = (se / value)^2 x CPU_h, and r / 1e-4, the CPU-hours a relative stderr of 1 % needs: an
+    estimators.tsv row"""
+    r = pw(div(num(se), num(v)), 2) * num(c)
+    if r < 0:
+        r = -r
+    return cfmt('%s\t%s\t%s\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%s\t%s', q, e, st, v, se, c, r, r / 1e-4, ck, k)
+
+
+def run_cpu_hours(lines, f=1):
+    """the CPU-hours of the runs whose summaries are LINES (their cpu_seconds rows summed), times the
+    speed factor F of the binary that made them, %.6g"""
+    s = 0.0
+    for l in lines:
+        r = l.split('\t')
+        if fld(r, 1) == 'cpu_seconds':
+            s += num(fld(r, 2))
+    return cfmt('%.6g', s * num(f) / 3600)
+
+
+def drive_projection(T, se, u, c):
+    """pan-estimators: Table 3's torque at a stronger drive u projected from u = 0.3 (linear in u),
+    with the same noise and cost: "T se cpu_h" """
+    return cfmt('%.6g %.4g %.6g', num(T) * num(u) / 0.3, se, c)
+
+
+def speed_factor(path, cls):
+    """the speed factor of a cost class in bench/speedup.tsv (its last row), 1 if none"""
+    v = ''
+    try:
+        for r in rows(path):
+            if fld(r, 1) == cls:
+                v = fld(r, 2)
+    except OSError:
+        return '1'
+    return '1' if v == '' else v
+
+
+def run_cost(scene, summary, fac, args):
+    """precision.sh: a committed run's production and equilibration CPU seconds (its cpu_seconds x
+    the speed factor FAC, split in the ratio of production to equilibration steps) and its
+    production time units; equilibration and dt from its arguments, else its scene:
+    "prod_cpu<TAB>eq_cpu<TAB>time" (%.6g)"""
+    eq = dt = 0.0
+    with open(scene) as f:
+        for l in f.read().split('\n'):
+            l = re.sub(r'#.*', '', l, count=1)
+            if re.match(r'^[ \t]*equilibration[ \t]*=[ \t]*[0-9]+', l):
+                eq = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+            if re.match(r'^[ \t]*dt[ \t]*=[ \t]*[0-9.eE+-]+', l):
+                dt = num(re.sub(r'.*=[ \t]*', '', l, count=1))
+    v = {}
+    for r in rows(summary):
+        v[fld(r, 1)] = fld(r, 2)
+    for a in args:
+        if a.startswith('equilibration='):
+            eq = num(a.split('=', 1)[1])
+        if a.startswith('dt='):
+            dt = num(a.split('=', 1)[1])
+    n = num(v.get('steps', ''))
+    c = num(v.get('cpu_seconds', '')) * num(fac)
+    p = div(n - eq, n)
+    return cfmt('%.6g\t%.6g\t%.6g', c * p, c * (1 - p), (n - eq) * dt)
+
+
+def paper_band(path, q):
+    """selection: "lo<TAB>hi<TAB>paper" of the first paper-tier claim row of Q in a bands.tsv (columns
+    by name; a table without a kind column: every row)"""
+    rs = rows(path)
+    c = {name: i + 1 for i, name in enumerate(rs[0])} if rs else {}
+    for r in rs[1:]:
+        if fld(r, 1) == q and fld(r, 2) == 'paper' and ('kind' not in c or fld(r, c['kind']) == 'claim'):
+            return fld(r, c['lo']) + '\t' + fld(r, c['hi']) + '\t' + fld(r, c['paper'])
+    return None
+
+
+def precision_row(line_, relmode):
+    """precision.sh (issue 38 item 1): for a claim with band [lo, hi], value v +- se and Pan's value,
+    the stderr that decides it under issue 37's rule (half the distance of the assumed true value to
+    the nearest band edge; or RELMODE x |value|: Pan's 0.5 %) at Pan's value and at ours, and the
+    CPU-hours of the plain time average for it: the runs' production variance per CPU second, parts
+    from separate simulations combined at their best split, (sum_k sqrt(se_k^2 CPU_k))^2 / se^2,
+    plus the equilibration once per run; the longest single simulation if the first group's runs
+    share it. LINE: experiment, quantity, lo, hi, paper, value, se, the groups
+    "prod_cpu:eq_cpu:time:rel:runs" (space-separated), note"""
+    f_ = line_.split('\t')
+    ex, q, lo, hi, paper, v, se, note = (fld(f_, i) for i in (1, 2, 3, 4, 5, 6, 7, 9))
+    g = fld(f_, 8).split()
+    S = EQ = 0.0
+    var = num(se) * num(se)
+    fixed = 0.0
+    pc, ec, rel, nr, s2 = [], [], [], [], []
+    for gi in g:
+        f = gi.split(':')
+        pc.append(f[0]); ec.append(f[1]); rel.append(f[3]); nr.append(f[4])
+        if rel[-1] != '-':
+            s2.append(pw(num(v) * num(rel[-1]), 2))
+            fixed += s2[-1]
+        else:
+            s2.append(None)
+    T = NR_ = 0.0
+    for i in range(len(g)):
+        if rel[i] == '-':
+            s2[i] = var - fixed
+        if s2[i] < 0:
+            s2[i] = 0.0
+        S += sqrt(s2[i] * num(pc[i]))
+        EQ += num(ec[i])
+        if i == 0:
+            T = num(g[0].split(':')[2])
+            NR_ = num(nr[0])
+
+    def dist(x):
+        return num(lo) - num(x) if lt(x, lo) else (num(x) - num(hi) if gt(x, hi) else
+                                                   (num(x) - num(lo) if lt(num(x) - num(lo), num(hi) - num(x)) else num(hi) - num(x)))
+
+    def hours(e):
+        if le(e, 0):
+            return 'inf'
+        return cfmt('%.4g', (S * S / (e * e) + EQ) / 3600)
+
+    def longest(e):
+        if le(e, 0):
+            return 'inf'
+        return cfmt('%.4g', (S * S / (e * e) / NR_ + EQ / NR_) / 3600)
+    V, E = num(v), num(se)
+    if relmode != '':
+        verdict = '-'
+        sp = -1 if paper == '-' else num(relmode) * abs(num(paper))
+        so = num(relmode) * abs(V)
+    else:
+        verdict = ('PASS' if ge(V - 2 * E, lo) and le(V + 2 * E, hi) else
+                   'FAIL' if lt(V + 2 * E, lo) or gt(V - 2 * E, hi) else 'UNRESOLVED')
+        sp = -1 if paper == '-' else dist(paper) / 2
+        so = dist(v) / 2
+    cnow = 0.0
+    for i in range(len(g)):
+        cnow += num(pc[i]) + num(ec[i])
+    return cfmt('%s\t%s\t%s\t%s\t%s\t%.6g\t%.4g\t%s\t%.3g\t%.3g\t%.6g\t%.3g\t%s\t%s\t%s\t%s', ex, q, lo, hi, paper, v, se, verdict,
+                sp, so, T, cnow / 3600, hours(sp), hours(so), longest(sp), note)
+
+
+PE_COMMANDS = {
+    'precision-totals': lambda a: precision_totals(a[0]),
+    'half-percent-totals': lambda a: half_percent_totals(a[0]),
+    # ladder-row OMEGA "T<TAB>se" PROD_TIME CPU_H MU R
+    'ladder-row': lambda a: [ladder_row(a[0], *_pairs(a[1:2]), a[2], a[3], a[4], a[5])],
+    'ladder-rows': lambda a: ladder_rows(a[0], a[1]),
+    # hold-row L U "drag<TAB>se" "force<TAB>se" PROD_TIME CPU_H MU R F_EXT
+    'hold-row': lambda a: [hold_row(a[0], a[1], *_pairs(a[2:4]), *a[4:9])],
+    'hold-rows': lambda a: hold_rows(a[0], a[1], a[2]),
+    # hold-ratio HOLD L1 U1 L2 U2 NAME [HASIMOTO_NAME]
+    'hold-ratio': lambda a: hold_ratio(*a[:6], a[6] if len(a) > 6 else None),
+    # hold-cols HOLD L U COL...: those columns of the run's row, tab-separated (nothing if there is none)
+    'hold-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[3:])] if r else [])(_row_where(a[0], [(1, a[1]), (2, a[2])])),
+    # prod-time STEPS ARGS SCENE
+    'prod-time': lambda a: [prod_time(a[0], a[1], a[2])],
+    # twins KIND STEADY PLAIN OUT FILE...: the twins' table OUT and summary rows
+    'twins': lambda a: twins(a[0], a[4:], a[1], a[2], a[3]),
+    # ladder-cols LADDER OMEGA COL...: those columns of the drive's row
+    'ladder-cols': lambda a: (lambda r: ['\t'.join(fld(r, int(c)) for c in a[2:])] if r else [])(_row_where(a[0], [(1, a[1])])),
+    # ladder-steady LADDER OMEGA: the drive's torque scaled to Omega = -0.4 (linear), %.10g
+    'ladder-steady': lambda a: [cfmt('%.10g', num(fld(_row_where(a[0], [(1, a[1])]), 2)) * -0.4 / num(a[1]))],
+    'pair-periodic-factor': lambda a: [pair_periodic_factor(a[0], a[1])],
+    # pair-box-row L l u "drag<TAB>se" F P PAN_F
+    'pair-box-row': lambda a: [pair_box_row(a[0], a[1], a[2], *_pairs(a[3:4]), a[4], a[5], a[6])],
+    # cols-where FILE C=V[,C=V...] COL...: selection of a row's columns (nothing if no row matches)
+    'cols-where': lambda a: (lambda t: [t] if t is not None else [])(cols_where(a[0], a[1].split(','), a[2:])),
+    # pair30-rows PAIR_BOXES: the 30^3 rows' drag over the periodic prediction as summary rows
+    'pair30-rows': lambda a: ['pair30_drag_over_periodic_l%s\t%s\t%s' % (fld(r, 2), fld(r, 9), fld(r, 10)) for r in rows(a[0])[1:] if eq(fld(r, 1), 30)],
+    # periodic-ratio-row P12 P30: the periodic predictions' ratio as awk printed it (%.6g), then %.10g
+    'periodic-ratio-row': lambda a: [cfmt('pair_periodic_L12_over_L30\t%.10g\t0', num(astr(num(a[0]) / num(a[1]))))],
+    'torque-over-drag': lambda a: [torque_over_drag(a)],
+    'tf-ratios': lambda a: tf_ratios(*a[:4]),
+    'tf-torque': lambda a: tf_torque(*a[:3]),
+    # pan-compare-row LAB Q PAN PAN_THEORY "ours<TAB>se" "ratio<TAB>se"
+    'pan-compare-row': lambda a: [pan_compare_row(a[0], a[1], a[2], a[3], *_pairs(a[4:6]))],
+    # est-row QUANTITY ESTIMATOR SETUP VALUE SE CPU_H CHECK KEPT
+    'est-row': lambda a: [est_row(*a[:8])],
+    # rcpu SUMMARY [FACTOR] (SUMMARY - : stdin)
+    'rcpu': lambda a: [run_cpu_hours(sys.stdin.read().split('\n') if a[0] in ('-', '/dev/stdin') else open(a[0]).read().split('\n'),
+                                     a[1] if len(a) > 1 else 1)],
+    # fmt FMT ARG...: C's printf of the arguments (an argument "v<TAB>se" gives two)
+    'fmt': lambda a: [cfmt(a[0], *[x for arg in a[1:] for x in arg.split('\t')])],
+    # half-pair "v<TAB>se" -> v/2 se/2 as awk prints them
+    'half-pair': lambda a: [astr(num(parse_pair(a[0]).v) / 2) + ' ' + astr(num(parse_pair(a[0]).se) / 2)],
+    # with-variance-se X DOF -> x and its stderr as a variance from DOF + 1 blocks, x sqrt(2 / DOF), as awk prints it
+    'with-variance-se': lambda a: [a[0] + ' ' + astr(num(a[0]) * sqrt(2 / num(a[1])))],
+    'drive-projection': lambda a: [drive_projection(*a[:4])],
+    'speed-factor': lambda a: [speed_factor(a[0], a[1])],
+    # run-cost SCENE SUMMARY FACTOR ARG...
+    'run-cost': lambda a: [run_cost(a[0], a[1], a[2], a[3:])],
+    'paper-band': lambda a: (lambda b: [b] if b is not None else [])(paper_band(a[0], a[1])),
+    # plus A B -> a + b as awk prints a number
+    'plus': lambda a: [astr(num(a[0]) + num(a[1]))],
+    # rel-error SUMMARY Q -> se / |value| of the first row Q (nothing if none)
+    'rel-error-of': lambda a: (lambda v: [astr(div(num(v.split('\t')[1]), abs(num(v.split('\t')[0]))))] if v else [])(_lookup(a[0], a[1])),
+    # precision-row RELMODE LINE
+    'precision-row': lambda a: [precision_row(a[1], a[0])],
+    'gk-rotational-friction': lambda a: [gk_rotational_friction(*_pairs(a[0:1]), a[1], a[2]).row('gk_rotational_friction_over_eq18')],
+}
+
+
+# ---------------------------------------------------------------- exp.sh's shared helpers
+# The statistics that tools/lib/exp.sh's helpers (emit_mean, emit_pct, block_slope, ...) computed
+# with numerics.awk, for every experiment that calls them.
+
+def block_stat(path, lo, hi, kind):
+    """exp.sh's block_slope and block_mean: per block of a profile_blocks.tsv (rows block, ...,
+    pos, ..., v_x; the header and nan rows left out; blocks in the order of their first row), the
+    straight-line slope of v_x against pos over LO <= pos <= HI (KIND slope: line) or the mean of
+    v_x over LO < pos < HI (KIND mean); then the blocks' mean and standard error as independent
+    samples (mean_se); nan for fewer than 2 blocks. The bins of one profile share the flow's
+    fluctuations: the blocks' scatter, not the bins', is the error"""
+    order, pts = [], {}
+    for n, r in enumerate(rows(path)):
+        if n == 0 or fld(r, 5) == 'nan':
+            continue
+        p = fld(r, 3)
+        inside = (ge(p, lo) and le(p, hi)) if kind == 'slope' else (gt(p, lo) and lt(p, hi))
+        if inside:
+            k = fld(r, 1)
+            if k not in pts:
+                pts[k] = ([], [])
+                order.append(k)
+            pts[k][0].append(p)
+            pts[k][1].append(fld(r, 5))
+    if kind == 'slope':
+        s = [line(*pts[k]).slope for k in order]
+    else:
+        s = [mean(pts[k][1]) for k in order]
+    if len(order) < 2:
+        return Val()
+    return mean_se(s)
+
+
+def max_rel_dev(path, lo, hi):
+    """exp.sh's max_rel_dev: the largest relative deviation |x - mean| / mean of a profile's
+    density over the bins with LO <= pos <= HI (the first if tied), its error that bin's
+    stderr / mean (the mean's own error neglected; num_max_rel_dev)"""
+    d, e = [], []
+    for r in rows(path):
+        if fld(r, 1).startswith('#') or fld(r, 1) == 'pos':
+            continue
+        if ge(fld(r, 1), lo) and le(fld(r, 1), hi):
+            d.append(fld(r, 2)); e.append(fld(r, 3))
+    m = mean(d)
+    best = be = 0.0
+    for x, s in zip(d, e):
+        dv = abs((num(x) - num(m)) / num(m))
+        if dv > best:
+            best, be = dv, num(s) / num(m)
+    return Val(best, be)
+
+
+def wall_stress(forces, lx):
+    """exp.sh's couette_viscosity: the shear stress of the m = 0 Couette channel from the x forces
+    on its walls (bottom_inner, bottom_outer, top_inner, top_outer: "F<TAB>se" each),
+    (F_bottom - F_top) / (2 LX), the errors added linearly (at m = 0 the walls' forces are
+    opposite step by step and a wall's two layers move together; at m > 0 an upper bound)"""
+    xs = [(1 if i < 2 else -1) * num(parse_pair(f).v) for i, f in enumerate(forces)]
+    o = sum_linear(xs, [parse_pair(f).se for f in forces])
+    return cfmt('%.10g %.4g', o.v / (2 * num(lx)), o.se / (2 * num(lx)))
+
+
+def pct_from(a, b):
+    """100 (a / b - 1), a's deviation from b in per cent, first-order error of independent a, b
+    (exp.sh's emit_pct; b may be exact)"""
+    x, y = _pair_or_number(a), _pair_or_number(b)
+    r = v_ratio(x.v, x.se, y.v, y.se)
+    if isnan_text(r.v):
+        return Val()
+    return v_scale(num(r.v) - 1, r.se, 100)
+
+
+def lattice_tag(kp, kq, digits):
+    """mai-duy-2019's suspensions (exp.sh's lattice_pair): the paper's KP^3 colloids of 6 particles
+    among 13500 solvent particles in 15^3 run as KQ^3 colloids in a box of side 15 KQ / KP: the tag
+    "phi" + phi = 6 KP^3 / (13500 + 6 KP^3) to DIGITS decimals, and the side (%.10g): "tag L" """
+    k = num(kp)
+    phi = 6 * pw(k, 3) / (13500 + 6 * pw(k, 3))
+    return cfmt('phi%.*f %.10g', digits, phi, 15 * num(kq) / k)
+
+
+# ---------------------------------------------------------------- simulation arguments
+# What a run.sh's declared simulations compute from its tier's settings (issue 40 item 5: no
+# arithmetic in a shell string); each prints the argument as the awk it replaces did.
+
+def steps_for(t, dt):
+    """the steps of length DT that make the time T, rounded to the nearest: int(t / dt + 0.5)"""
+    return cfmt('%d', num(t) / num(dt) + 0.5)
+
+
+def sample_every(interval, dt):
+    """the sampling stride in steps for a sampling INTERVAL in time at step DT: the nearest
+    integer to interval / dt, at least 1"""
+    e = int(num(interval) / num(dt) + 0.5)
+    return cfmt('%d', 1 if e < 1 else e)
+
+
+def tcaf_axis_nmax(k, cap=31):
+    """mai-duy-2019 fig04's high-k TCAF runs: the largest wave-vector index per axis, two past
+    kq (4 pi / 3)^(1/3) (the index of the colloid lattice's equal-volume sphere, kq colloids per
+    axis), at most CAP"""
+    n = int(num(k) * pw(4 * 3.14159265358979 / 3, 1 / 3)) + 2
+    return astr(min(n, cap))
+
+
+def geometric_mid(a, b, fmt):
+    """a bisection's next trial in a bracket spanning decades: the geometric middle sqrt(a b),
+    printed with FMT (the stability map's dt)"""
+    return cfmt(fmt, sqrt(num(a) * num(b)))
+
+
+def octahedron_inertia(m, d):
+    """the moment of inertia of a rigid octahedron of total mass M whose six sites sit at D from
+    its centre: I = (2/3) M d^2 (%.10g)"""
+    return cfmt('%.10g', 2 * num(m) * num(d) * num(d) / 3)
+
+
+def sigmas(a, sa, b, sb):
+    """(a - b) / sqrt(sa^2 + sb^2): a difference in units of its standard error (independent a and
+    b; b may be an exact number, sb = 0); nan without an error"""
+    if _nan4(a, sa, b, sb):
+        return 'nan'
+    d = sqrt(sq(sa) + sq(sb))
+    return 'nan' if d == 0 else (num(a) - num(b)) / d
+
+
+def _pairs_or_numbers(xs):
+    out = []
+    for x in xs:
+        o = _pair_or_number(x)
+        out += [o.v, o.se]
+    return out
+
+
+def _pair_or_number(x):
+    """ "value<TAB>stderr" (as get gives it), or a number (exact: stderr 0)"""
+    o = parse_pair(x)
+    return Val(o.v, o.se if '\t' in x else '0')
+
+
+HELPER_COMMANDS = {
+    # block-stat PROFILE_BLOCKS LO HI slope|mean -> "value<TAB>se"
+    'block-stat': lambda a: [block_stat(a[0], a[1], a[2], a[3]).pair()],
+    'max-rel-dev': lambda a: [max_rel_dev(a[0], a[1], a[2]).pair()],
+    # wall-stress LX F_BOTTOM_INNER F_BOTTOM_OUTER F_TOP_INNER F_TOP_OUTER -> "tau tau_se"
+    'wall-stress': lambda a: [wall_stress(a[1:5], a[0])],
+    # pct A B, minus A B (A, B "v<TAB>se" or a number) -> "value<TAB>se"
+    'pct': lambda a: [pct_from(a[0], a[1]).pair()],
+    'minus': lambda a: [(lambda x, y: v_diff(x.v, x.se, y.v, y.se))(_pair_or_number(a[0]), _pair_or_number(a[1])).pair()],
+    # mean-se-row NAME V...: the mean of independent runs' values, its standard error (0 for one run)
+    'mean-se-row': lambda a: [(lambda o: o.row(a[0]))(mean_se(a[1:]) if len(a) != 2 else Val(mean(a[1:]), 0))],
+    'lattice-tag': lambda a: [lattice_tag(a[0], a[1], a[2])],
+}
+
+
+ARGS_COMMANDS = {
+    # sigmas NAME A B: (a - b) / sqrt(sa^2 + sb^2) as a row (%.4g, stderr 0); A, B "v<TAB>se" or a number
+    'sigmas': lambda a: [cfmt('%s\t%.4g\t0', a[0], sigmas(*_pairs_or_numbers(a[1:3])))],
+    'steps-for': lambda a: [steps_for(a[0], a[1])],
+    'sample-every': lambda a: [sample_every(a[0], a[1])],
+    'tcaf-axis-nmax': lambda a: [tcaf_axis_nmax(a[0])],
+    'geometric-mid': lambda a: [geometric_mid(a[0], a[1], a[2])],
+    'octahedron-inertia': lambda a: [octahedron_inertia(a[0], a[1])],
+    # sum-fmt FMT A B -> FMT of a + b (a position offset by a small distance, %.15f)
+    'sum-fmt': lambda a: [cfmt(a[0], num(a[1]) + num(a[2]))],
+}
+
+
 # ---------------------------------------------------------------- the command line
 
 def _guarded(pair):
@@ -2055,6 +3217,11 @@ COMMANDS = {
     # times6 A B -> a b (%.6g)
     'times6': lambda a: [cfmt('%.6g', num(a[0]) * num(a[1]))],
 }
+
+COMMANDS.update(PAN_COMMANDS)
+COMMANDS.update(ARGS_COMMANDS)
+COMMANDS.update(HELPER_COMMANDS)
+COMMANDS.update(PE_COMMANDS)
 
 
 def _stderr_second(pair):

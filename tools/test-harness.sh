@@ -181,8 +181,6 @@ Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}
 
 Formats: {{x/y:eta:%.1f}}; {{x/y:ratio:%.3f}}; {{x/y@quick:eta:%.0f}}; hours {{cpu-h:x/y}}; total {{cpu:x/y+x/out}} s, {{cpu-h:x/y@paper+x/paperonly}} h.
 
-Derived: {{pct:x/y:eta/29.08}}; {{ratio:x/y:eta/ratio}}; {{diff:x/y:eta-ratio}}; {{ratio:x/y:ratio/2}}; {{sigmas:x/out:q-x/y@quick#eta}}; {{sigmas:x/y:eta-29.08}}; {{pct:x/y@quick:eta/29.08}}; {{diff:x/y:x/paperonly#q_tol1e-10-x/paperonly#q}}.
-
 Cells: {{tsv:data/t.tsv:0.4940:eta_r}}; {{tsv:results/x/y/paper/cells.tsv:n2=2:eta+-eta_se}}; {{tsv:results/x/y/paper/cells.tsv:0.418879:eta}}; {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=2:eta_se}}.
 
 Bench: {{bench:rot.tsv:cost ratio:value}}; {{bench:none.tsv:cost ratio:value}}; {{bench:rot.tsv:no such row:value}}.
@@ -360,16 +358,6 @@ if [ -f "$G" ]; then
     in_file "paper-filter: inline value pinned to the quick tier, marked" "$G" '; pinned quick 29.32 +- 0.25 (quick tier); '
     in_file "paper-filter: inline CPU pinned to the quick tier" "$G" '; pinned CPU 2 (quick tier) s\.$'
     in_file "paper-filter: tsv cell by first column" "$G" '^Cells: 5.17; '
-    # 30.9 +- 0.3 against 29.08: +6.26 % +- 1.03 %; 30.9/3.71 = 8.33 +- 0.081; 30.9 - 3.71 = 27.19 +- 0.3; (30.9 - 29.08)/0.3 = 6.07; quick 29.317: +0.81 %
-    in_file "paper-filter: pct of a quantity against a number, error propagated" "$G" '^Derived: +6.3 +- 1 %; '
-    in_file "paper-filter: ratio of two quantities" "$G" '; 8.33 +- 0.081; '
-    in_file "paper-filter: difference of two quantities" "$G" '; +27.19 +- 0.3; '
-    in_file "paper-filter: a derived value of zero error is printed without one" "$G" '; 1.85; '
-    # x/out q = 5.5 +- 0.1 against x/y quick eta 29.317 +- 0.25: -88.5; x/paperonly 0.25 +- 0.05 - 0.5
-    in_file "paper-filter: standard errors against another experiment's quantity, tier marked" "$G" '; -88.5 (quick tier); '
-    in_file "paper-filter: a name holding the operator is split where both sides resolve" "$G" '; -0.25 +- 0.05\.$'
-    in_file "paper-filter: standard errors between a quantity and a number" "$G" '; 6.1; '
-    in_file "paper-filter: derived from a pinned tier, marked" "$G" '; +0.81 +- 0.86 % (quick tier); '
     in_file "paper-filter: tsv cell by NAME=VALUE with its se, comment skipped" "$G" '; 33.15 +- 1.5; '
     in_file "paper-filter: tsv cell from a paper-tier result is not marked" "$G" '; 37.62; '
     in_file "paper-filter: tsv cell by two NAME=VALUE keys" "$G" '; 1.49\.$'
@@ -473,6 +461,26 @@ if command -v pandoc >/dev/null; then
     has "paper-filter: counts the three" '^paper-filter: 3 placeholder(s) could not be filled'
 fi
 
+# the derived values of the former text (issue 40): {{pct:}}, {{ratio:}}, {{diff:}}, {{sigmas:}} are
+# arithmetic in the text like {{calc:}}: refused each, named, by render-paper (in a draft too) and by the filter
+printf '%s\n' '# A' '' 'a {{pct:x/y:eta/29.08}}' '' 'b {{ratio:x/y:eta/ratio}} and {{diff:x/y:eta-ratio}}' '' '## other/x: not' '' \
+    'c {{sigmas:x/y:eta-29.08}}' > "$root/derivedout.md"
+T "render-paper: derived values fail" 1 "$tools/render-paper" -i "$root/derivedout.md" -o "$root/build/derivedout.md"
+has "render-paper: names the pct" 'derivedout.md:3: a {{pct:'
+has "render-paper: names the line of the ratio and the diff" 'derivedout.md:5: b {{ratio:'
+has "render-paper: names the sigmas" 'derivedout.md:9: c {{sigmas:'
+has "render-paper: says what to write instead of a derived value" 'let the analysis write the quantity'
+if [ -e "$root/build/derivedout.md" ]; then bad "render-paper: wrote output despite derived values" "$root/build/derivedout.md"; else ok "render-paper: writes nothing on derived values"; fi
+T "render-paper: derived values fail in a draft (MKPAPER_ALLOW_MISSING=1)" 1 env MKPAPER_ALLOW_MISSING=1 "$tools/render-paper" -i "$root/derivedout.md" -o "$root/build/derivedout.md"
+if command -v pandoc >/dev/null; then
+    T "paper-filter: derived values fail in the filter alone" 1 env DPD_ROOT="$root" pandoc "$root/derivedout.md" --lua-filter "$tools/lib/paper-filter.lua" -t markdown -o "$root/build/derivedout.filter.md"
+    has "paper-filter: pct refused" '{{pct:x/y:eta/29.08}}: no expressions in the text'
+    has "paper-filter: ratio refused" '{{ratio:x/y:eta/ratio}}: no expressions in the text'
+    has "paper-filter: diff refused" '{{diff:x/y:eta-ratio}}: no expressions in the text'
+    has "paper-filter: sigmas refused" '{{sigmas:x/y:eta-29.08}}: no expressions in the text'
+    has "paper-filter: counts the four" '^paper-filter: 4 placeholder(s) could not be filled'
+fi
+
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
 rm -f "$G"
@@ -498,7 +506,6 @@ has "paper-filter: names figure placeholder" 'figure: x/nores/a.svg'
 printf '%s\n' 'a {{x/y@reduced:eta}} b {{cpu:x/y@reduced}} c {{x/y:nonesuch}}' \
     'd {{tsv:results/x/y/paper/cells.tsv:n2=9:eta}} e {{tsv:results/x/y/paper/cells.tsv:1:nocol}}' \
     'f {{tsv:results/x/incomplete/quick/cells.tsv:0.7:eta}} g {{tsv:data/none.tsv:1:a}} h {{tsv:data/t.tsv:0.4940}}' \
-    'i {{pct:x/y:eta/nonesuch}} j {{ratio:x/y:eta}} k {{sigmas:x/y:ratio-3.71}}' \
     'l {{tsv:results/x/y/paper/cells.tsv:k=0.592384&n2=1:eta}}' '' '## pan-2008/bad: more' '' \
     'q {{bench:../x.tsv:a:b}}' > "$root/bad.md"
 T "paper-filter: missing inline values and cells fail" 1 "$M" -i "$root/bad.md" -o "$root/build/bad.gen.md"
@@ -510,12 +517,9 @@ has "paper-filter: names a missing tsv column" 'cells.tsv: no column nocol'
 has "paper-filter: a cell of an INCOMPLETE result is refused" 'results/x/incomplete/quick is not a valid result'
 has "paper-filter: names a missing tsv file" 'no file data/none.tsv'
 has "paper-filter: a cell without a column is malformed" 'expected tsv:PATH:ROW:COL'
-has "paper-filter: names a derived value with a missing operand" '{{pct:x/y:eta/nonesuch}}: no quantity nonesuch'
-has "paper-filter: a derived value without an operator is malformed" 'expected ratio:PAPER/EXP:A/B'
-has "paper-filter: standard errors of zero error refused" '{{sigmas:x/y:ratio-3.71}}: cannot compute'
 has "paper-filter: a row must match every NAME=VALUE key" 'cells.tsv: no row k=0.592384&n2=1'
 has "paper-filter: bench file outside bench/ refused" '{{bench:../x.tsv:a:b}}: expected bench:FILE:ROW:COL'
-has "paper-filter: counts every failed placeholder" '13 placeholder(s) could not be filled'
+has "paper-filter: counts every failed placeholder" '10 placeholder(s) could not be filled'
 lacks "paper-filter: no quick-tier count without such placeholders" 'await the quick tier'
 
 # the quick tier, never committed: x/paperonly has a paper tier and no quick tier; what names
@@ -524,9 +528,9 @@ QM='\[---\]{\.quick-pending title="quick tier: run make figures"}'
 cat > "$root/quick.md" <<'EOF2'
 ## pan-2008/quick: one section
 
-a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}} c {{diff:x/paperonly@quick:q-q_tol1e-10}} d {{sigmas:x/paperonly:q_tol1e-10-x/paperonly@quick#q}}.
+a {{x/paperonly@quick:q}} b {{cpu:x/paperonly@quick}}.
 e {{tsv:results/x/paperonly/quick/cells.tsv:1:eta}}.
-h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
+i {{x/paperonly:q}}.
 
 <!-- figure: x/paperonly/plot-quick.png | q against nothing -->
 
@@ -534,11 +538,11 @@ h {{pct:x/y:eta/x/paperonly@quick#q}} i {{x/paperonly:q}}.
 EOF2
 QG="$root/build/quick.gen.md"
 T "paper-filter: placeholders of a quick tier not computed here are no error" 0 "$M" -i "$root/quick.md" -o "$QG"
-has "paper-filter: one line counts them" '^paper-filter: 8 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
+has "paper-filter: one line counts them" '^paper-filter: 5 placeholder(s) await the quick tier of 1 experiment(s), which is not committed'
 if [ "$(grep -c 'await the quick tier' "$root/out")" = 1 ]; then ok "paper-filter: the count is a single line"; else bad "paper-filter: count lines" "$root/out"; fi
-in_file "paper-filter: quick value, CPU, diff, sigmas marked" "$QG" "^a $QM b $QM c $QM d $QM\\.\$"
+in_file "paper-filter: quick value and CPU marked" "$QG" "^a $QM b $QM\\.\$"
 in_file "paper-filter: quick tsv cell marked" "$QG" "^e $QM\\.\$"
-in_file "paper-filter: a derived value with a quick operand of another experiment marked; committed value filled" "$QG" "^h $QM i 0.5 +- 0\\.\$"
+in_file "paper-filter: a committed value beside them filled" "$QG" "^i 0.5 +- 0\\.\$"
 in_file "paper-filter: quick figure marked with its path and caption" "$QG" "^\\*Figure\\* \`figures/x/paperonly/plot-quick.png\` (q against nothing) $QM\$"
 in_file "paper-filter: quick tsv table marked" "$QG" "^\\*Table\\* \`results/x/paperonly/quick/table.tsv\` $QM\$"
 # the notice: once per section that holds a mark (from its heading to the next), right after its heading
@@ -554,12 +558,12 @@ else bad "paper-filter: notices per section" "$(cat "$root/qsec.notices") in $ro
 if awk '/^# A/ { getline; getline; ok = /^::: quick-notice/ } END { exit !ok }' "$root/build/qsec.gen.md"; then ok "paper-filter: the notice follows its heading"
 else bad "paper-filter: the notice's place" "$root/build/qsec.gen.md"; fi
 T "paper-filter: MKPAPER_ALLOW_MISSING=1 marks them the same" 0 env MKPAPER_ALLOW_MISSING=1 "$M" -i "$root/quick.md" -o "$QG"
-has "paper-filter: draft counts them" '^paper-filter: 8 placeholder(s) await the quick tier'
+has "paper-filter: draft counts them" '^paper-filter: 5 placeholder(s) await the quick tier'
 if grep -q 'missing' "$QG"; then bad "paper-filter: draft calls a quick placeholder missing" "$QG"; else ok "paper-filter: draft does not call them missing"; fi
 # still errors: committed tiers, a quick tier that exists, an unknown experiment
 printf '%s\n' '## pan-2008/qbad: errors' '' 'a {{x/nonesuch@quick:q}} b {{cpu:x/nonesuch@quick}} c {{x/y@quick:nonesuch}} d {{x/incomplete@quick:q}}' \
     'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}}' \
-    'i {{diff:x/paperonly@quick:q-x/nonesuch#q}} j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
+    'j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
     'k {{tsv:results/x/paperonly/paper/none.tsv:1:a}} l {{verdict:x/nores}}' \
     '<!-- figure: x/paperonly/other-paper.png -->' '<!-- figure: x/y/fig-quick.png -->' '<!-- figure: x/nores/fig-reduced.png -->' \
     '<!-- tsv: results/x/y/quick/none.tsv -->' '<!-- tsv: results/x/paperonly/paper/none.tsv -->' '<!-- tsv: results/x/nonesuch/quick/t.tsv -->' \
@@ -571,7 +575,6 @@ has "paper-filter: a quantity absent from an existing quick tier fails" '{{x/y@q
 has "paper-filter: an INCOMPLETE quick tier fails" '{{x/incomplete@quick:q}}: no such quantity'
 has "paper-filter: a missing reduced tier fails" '{{x/paperonly@reduced:q}}: no such quantity'
 has "paper-filter: a quantity absent from the paper tier fails" '{{x/paperonly:nonesuch}}: no such quantity'
-has "paper-filter: derived with a quick operand and an unknown one fails" '{{diff:x/paperonly@quick:q-x/nonesuch#q}}: no quantity'
 has "paper-filter: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
 has "paper-filter: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
 has "paper-filter: an unpinned verdict without results fails" '{{verdict:x/nores}}'
@@ -581,7 +584,7 @@ has "paper-filter: a missing reduced-tier figure fails" 'fig-reduced.png does no
 has "paper-filter: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
 has "paper-filter: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
 has "paper-filter: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
-has "paper-filter: counts them all as failures" '^paper-filter: 18 placeholder(s) could not be filled'
+has "paper-filter: counts them all as failures" '^paper-filter: 17 placeholder(s) could not be filled'
 lacks "paper-filter: none of them counted as awaiting the quick tier" 'await the quick tier'
 # once the quick tier exists, the same placeholders are filled from it (and marked as quick)
 mkres x/paperonly quick 12.4 <<EOF2
@@ -595,10 +598,9 @@ touch -d '2001-01-01' "$root"/results/x/paperonly/*/summary.tsv
 touch -d '2002-01-01' "$root/figures/x/paperonly/plot-quick.png"
 T "paper-filter: the quick tier computed, its placeholders are filled" 0 "$M" -i "$root/quick.md" -o "$QG"
 lacks "paper-filter: nothing awaits the quick tier" 'await the quick tier'
-# 0.75 +- 0.05 - 0.5 +- 0.05 = 0.25 +- 0.071; (0.25 - 0.75)/0.0707 = -7.1; 0.75 x 2 + 0.5; 3/30.9; 30.9/0.75 = 41.2 (+4020 +- 280 %)
-in_file "paper-filter: quick value, CPU, diff, sigmas filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier) c +0.25 +- 0.071 (quick tier) d -7.1 (quick tier)\.$'
+in_file "paper-filter: quick value and CPU filled" "$QG" '^a 0.75 +- 0.05 (quick tier) b 12 (quick tier)\.$'
 in_file "paper-filter: quick tsv cell filled" "$QG" '^e 3 (quick tier)\.$'
-in_file "paper-filter: derived with another experiment's quick operand filled" "$QG" '^h +4e+03 +- 2.8e+02 % (quick tier) i 0.5 +- 0\.$'
+in_file "paper-filter: the committed value still filled" "$QG" '^i 0.5 +- 0\.$'
 in_file "paper-filter: quick figure shown" "$QG" '^!\[q against nothing\](figures/x/paperonly/plot-quick.png)$'
 in_file "paper-filter: quick tsv table shown" "$QG" '^| 1 | 2 |$'
 if grep -q 'make figures' "$QG"; then bad "paper-filter: a mark left once the quick tier exists" "$QG"; else ok "paper-filter: no mark left once the quick tier exists"; fi

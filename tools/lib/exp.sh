@@ -2,10 +2,10 @@
 # Environment from tools/run-experiment: DPD (simulator), TIER, OUT (result dir).
 set -euo pipefail
 : "${DPD:?run through tools/run-experiment}" "${OUT:?}" "${TIER:?}"
-# the statistics (means, errors, fits, propagation) are num_* functions of one tested
-# library, tools/lib/numerics.awk, called through num_awk
+# the former statistics library, tools/lib/numerics.awk (num_awk): no experiment calls it since issue 40
 . "$DPD_ROOT/tools/lib/numerics.sh"
-# the analysis layer (tools/analysis.py, issue 40): "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
+# the analysis layer (tools/analysis.py, issue 40): every statistic, formula and derived simulation
+# argument of the experiments; "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
 ANALYSE=$DPD_ROOT/tools/analyse
 # tsv_lookup FILE Q [WHO] -> "value<TAB>stderr" of the first row named Q, exit 1 (saying so as WHO)
 # if none: selection only, in bash without a process, for the lookups an analysis makes in its loops
@@ -265,16 +265,14 @@ emit_from() {
 emit_diff() {
     local a b
     a=$(get "$2" "$3") b=$(get "$4" "$5")
-    num_awk -v q="$1" -v a="$a" -v b="$b" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
-        num_diff(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+    emit "$1" "$("$ANALYSE" diff "$a" "$b")"
 }
 
 # emit_ratio QUANTITY NAME1 Q1 NAME2 Q2: value1 / value2 with first-order error propagation.
 emit_ratio() {
     local a b
     a=$(get "$2" "$3") b=$(get "$4" "$5")
-    num_awk -v q="$1" -v a="$a" -v b="$b" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
-        num_ratio(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+    emit "$1" "$("$ANALYSE" ratio "$a" "$b")"
 }
 
 # emit_mean AS QUANTITY NAME...: mean over independent runs of a run quantity,
@@ -283,9 +281,8 @@ emit_mean() {
     local as=$1 q=$2; shift 2
     local vals="" n
     for n in "$@"; do vals="$vals $(get "$n" "$q" | cut -f1)" || return 1; done
-    num_awk -v q="$as" -v v="$vals" 'BEGIN { k = split(v, x, " "); num_mean_se(x, k, o)
-        if (k == 1) o["se"] = 0
-        print num_row(q, o) }' >> "$OUT/summary.tsv"
+    # shellcheck disable=SC2086
+    "$ANALYSE" mean-se-row "$as" $vals >> "$OUT/summary.tsv"
 }
 
 # lattice_pair KP:KQ DIGITS - the Mai-Duy et al. suspensions: the paper's KP^3
@@ -295,8 +292,7 @@ emit_mean() {
 # particles, 6 per colloid) and geo (the --set arguments of box and count).
 lattice_pair() {
     kp=${1%:*} kq=${1#*:}
-    tag=$(awk -v k="$kp" -v d="$2" 'BEGIN { printf ("phi%." d "f"), 6 * k^3 / (13500 + 6 * k^3) }')
-    L=$(awk -v a="$kp" -v b="$kq" 'BEGIN { printf "%.10g", 15 * b / a }')
+    read -r tag L < <("$ANALYSE" lattice-tag "$kp" "$kq" "$2")
     count=$((6 * kq * kq * kq))
     geo=(--set "box=[$L,$L,$L]" --set "types.[1].count=$count")
 }
@@ -313,8 +309,7 @@ emit_drag_torque() {
     emit "torque_theory_row$r" "$Tth" 0
     for q in drag torque; do
         [ $q = drag ] && v=$F th=$Fth || v=$T th=$Tth
-        printf '%s\t%s\n' "$v" "$u" | num_awk -F'\t' -v t=$th -v q=${q}_ratio_row$r '{
-            num_rel2($1 / t, $1, $2, $3, $4, o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+        "$ANALYSE" theory-ratio ${q}_ratio_row$r "$v" "$u" "$th" >> "$OUT/summary.tsv"
     done
 }
 
@@ -323,30 +318,18 @@ emit_drag_torque() {
 # with measure.profile.per_block) and averaged; the error from the scatter of the block
 # slopes. The bins of one profile share the flow's fluctuations (and at m = 0 are solved
 # together), so a fit of the averaged profile taking its bins as independent understates it.
-block_slope() { _blocks "$1" "$2" '$3 >= r[1] && $3 <= r[2]' num_block_slope; }
+block_slope() { "$ANALYSE" block-stat "$OUT/runs/$1/profile_blocks.tsv" "${2%%:*}" "${2#*:}" slope; }
 
 # block_mean NAME LO:HI -> "mean<TAB>stderr": v_x averaged over the bins with LO < pos < HI
 # in each block's profile (runs/NAME/profile_blocks.tsv), then over the blocks; the error
 # from the scatter of the block means (neighbouring bins share the flow's fluctuations:
 # their errors do not add in quadrature).
-block_mean() { _blocks "$1" "$2" '$3 > r[1] && $3 < r[2]' num_block_mean; }
-# _blocks NAME LO:HI CONDITION FUNCTION: FUNCTION (numerics.awk) of the (pos, v_x) rows of
-# each block that meet CONDITION, blocks in the file's order
-_blocks() {
-    num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } NR == 1 || $5 == "nan" { next }
-        '"$3"' { num_block_add($1, $3, $5) }
-        END { '"$4"'(o); print num_pair(o) }' \
-        "$OUT/runs/$1/profile_blocks.tsv"
-}
+block_mean() { "$ANALYSE" block-stat "$OUT/runs/$1/profile_blocks.tsv" "${2%%:*}" "${2#*:}" mean; }
 
 # max_rel_dev PROFILE LO:HI -> "dev<TAB>stderr": the largest relative deviation of a bin's
 # density from the mean over the bins with LO <= pos <= HI of a profile.tsv; the error that
 # bin's (num_max_rel_dev)
-max_rel_dev() {
-    num_awk -F'\t' -v b="$2" 'BEGIN { split(b, r, ":") } /^#/ || $1 == "pos" { next }
-        $1 >= r[1] && $1 <= r[2] { n++; d[n] = $2; e[n] = $3 }
-        END { num_max_rel_dev(d, e, n, o); printf "%s", num_pair(o) }' "$1"
-}
+max_rel_dev() { "$ANALYSE" max-rel-dev "$1" "${2%%:*}" "${2#*:}"; }
 
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016
 # fig03 (walls bottom_inner/outer, top_inner/outer; run with
@@ -361,11 +344,9 @@ max_rel_dev() {
 couette_viscosity() {
     local name=$1 lx=$2 bulk=$3 g gse tau tause
     read -r g gse < <(block_slope "$name" "$bulk" | tr '\t' ' ')
-    read -r tau tause < <(for w in bottom_inner bottom_outer top_inner top_outer; do get "$name" "force_on_${w}_x"; done |
-        num_awk -F'\t' -v lx="$lx" '{ x[NR] = (NR <= 2 ? 1 : -1) * $1; se[NR] = $2 }
-            END { num_sum_linear(x, se, NR, o); printf "%.10g %.4g\n", o["v"] / (2 * lx), o["se"] / (2 * lx) }')
-    num_awk -v g="$g" -v gs="$gse" -v t="$tau" -v ts="$tause" \
-        'BEGIN { num_ratio(t, ts, g, gs, o); printf "%s %s %s %s %.10g %.4g\n", g, gs, t, ts, o["v"], o["se"] }'
+    read -r tau tause < <("$ANALYSE" wall-stress "$lx" "$(get "$name" force_on_bottom_inner_x)" "$(get "$name" force_on_bottom_outer_x)" \
+                                              "$(get "$name" force_on_top_inner_x)" "$(get "$name" force_on_top_outer_x)")
+    printf '%s %s %s %s %s\n' "$g" "$gse" "$tau" "$tause" "$("$ANALYSE" ratio "$tau	$tause" "$g	$gse" | tr '\t' ' ')"
 }
 
 # What paper.md says of a result in words ("4 % below the paper's", "the halves differ by") is a
@@ -380,16 +361,9 @@ paper_number() {
 }
 # emit_pct QUANTITY A B: 100 (a / b - 1), a's deviation from b in per cent; A and B each "value<TAB>stderr"
 # (as get gives it) or a number (exact: the paper's, a theory's); first-order error of independent a, b
-emit_pct() {
-    num_awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { if (split(a, x, "\t") < 2) x[2] = 0; if (split(b, y, "\t") < 2) y[2] = 0
-        if (num_isnan(num_ratio(x[1], x[2], y[1], y[2], r))) num_set(o, "nan", "nan"); else num_scale(r["v"] - 1, r["se"], 100, o)
-        print num_row(q, o) }' >> "$OUT/summary.tsv"
-}
+emit_pct() { emit "$1" "$("$ANALYSE" pct "$2" "$3")"; }
 # emit_minus QUANTITY A B: a - b, A and B as for emit_pct, errors in quadrature
-emit_minus() {
-    num_awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { if (split(a, x, "\t") < 2) x[2] = 0; if (split(b, y, "\t") < 2) y[2] = 0
-        num_diff(x[1], x[2], y[1], y[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
-}
+emit_minus() { emit "$1" "$("$ANALYSE" minus "$2" "$3")"; }
 
 # two_sphere_blocks NAME BLOCKS: per-block means of the drag per sphere (F_a + F_b) / 2 along x and of
 # the torque (T_a - T_b) / 2 about z (sphere a at lower y) of a run with two fixed colloids (pan-2008
@@ -402,9 +376,5 @@ two_sphere_blocks() {
     [ -f "$OUT/runs/$1/run.h5" ] || { echo "exp.sh: runs/$1 has neither sphere_blocks.tsv nor run.h5" >&2; return 1; }
     paste <(h5_series $1 drag_on_colloid_a_x) <(h5_series $1 drag_on_colloid_b_x) \
           <(h5_series $1 torque_on_colloid_a_z) <(h5_series $1 torque_on_colloid_b_z) |
-        num_awk -F'\t' -v B=$nb '{F[NR] = ($1 + $2) / 2; T[NR] = ($3 - $4) / 2}
-            END{len = int(NR / B); skip = NR - len * B; print "block\tdrag\ttorque"
-                for (b = 0; b < B; b++) {
-                    for (i = 1; i <= len; i++) { f[i] = F[skip + b * len + i]; t[i] = T[skip + b * len + i] }
-                    printf "%d\t%.10g\t%.10g\n", b, num_mean(f, len), num_mean(t, len) } }' > "$f.tmp" && mv "$f.tmp" "$f"
+        "$ANALYSE" sphere-blocks $nb > "$f.tmp" && mv "$f.tmp" "$f"
 }

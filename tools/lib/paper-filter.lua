@@ -33,17 +33,13 @@
 --                                          (a number printed to 4 digits), or COL+-SECOL for
 --                                          "value +- stderr"; a PATH under results/PAPER/EXP/TIER/ must
 --                                          be a valid result and is marked unless TIER is paper
---   {{pct:PAPER/EXP:A/B}}, {{ratio:PAPER/EXP:A/B}}, {{diff:PAPER/EXP:A-B}}, {{sigmas:PAPER/EXP:A-B}}
---                                          derived from two quantities (or a quantity and a number; an
---                                          operand OTHER/EXP[@TIER]#Q is another experiment's):
---                                          100 (A/B - 1), A/B, A - B with the first-order error of
---                                          independent A, B, and (A - B) / sqrt(se_A^2 + se_B^2); an error
---                                          of zero is not printed; marked with the tier unless both paper
 --   {{bench:FILE:ROW:COL}}                 one cell of bench/FILE (make bench) with the date and commit
 --                                          of its "date, commit" row; "not measured (run `make bench`)"
 --                                          if the file or the row is absent
 -- Arithmetic a section needs is a quantity its experiment's analysis (run.sh) writes, not an expression here:
--- there is no expression language ({{calc:...}}, its former one, is an error naming the placeholder; issue 40).
+-- there is no expression language: {{calc:...}}, its former one, and the derived values {{pct:}}, {{ratio:}},
+-- {{diff:}}, {{sigmas:}} (a percentage, ratio, difference or difference in standard errors of two
+-- quantities) are errors naming the placeholder (issue 40): the analysis writes such a number as a quantity.
 -- The summary table (<!-- summary-table -->) opens with one sentence per paper and every claim by group,
 -- each experiment linked to its section (a heading "## PAPER/EXP: ..." gets the anchor exp-PAPER-EXP).
 -- Each placeholder's expansion is markdown, read by pandoc's markdown reader in its place. An inline
@@ -857,74 +853,6 @@ local function inline_cpu(spec, hours)
     return text .. (mark and ' (' .. mark .. ' tier)' or '')
 end
 
--- a quantity Q of experiment ID[@TIER] (or OTHER/EXP[@TIER]#Q, or a number) as {{ID:Q}} finds it:
--- returns 'ok', value, stderr, tier ('-' for a number) | 'missing' | 'quick', id (awaits the quick tier)
-local function quantity_of(spec, q)
-    if is_number(q) then return 'ok', q, '0', '-' end
-    if q:find('#', 1, true) then spec, q = before(q, '#'), after(q, '#') end
-    local id, tiers = id_and_tiers(spec)
-    for _, t in ipairs(tiers) do
-        if valid_result(id, t) then
-            local v, se = summary_value(id, t, q)
-            if v then return 'ok', v, se, t end
-        end
-    end
-    if only_quick(tiers) and awaits_quick(id) then return 'quick', id end
-    return 'missing'
-end
-
-local function derived_text(kind, a, sa, b, sb)
-    if not sa:match('^[0-9.eE+%-]+$') then sa = '0' end
-    if not sb:match('^[0-9.eE+%-]+$') then sb = '0' end
-    a, sa, b, sb = awk_number(a), awk_number(sa), awk_number(b), awk_number(sb)
-    local d = math.sqrt(sa * sa + sb * sb)
-    if kind == 'diff' then return string.format(d > 0 and '%+.4g +- %.2g' or '%+.4g', a - b, d) end
-    if kind == 'sigmas' then if d == 0 then return nil end; return string.format('%.1f', (a - b) / d) end
-    if a == 0 or b == 0 then return nil end
-    local r = a / b
-    local e = math.abs(r) * math.sqrt((sa / a) ^ 2 + (sb / b) ^ 2)
-    if kind == 'pct' then return string.format(e > 0 and '%+.2g +- %.2g %%' or '%+.2g %%', 100 * (r - 1), 100 * e) end
-    return string.format(e > 0 and '%.3g +- %.2g' or '%.3g', r, e)
-end
-
--- split "A<op>B" where names may hold the operator (1e-10, phan-thien-2016/...): at the first place
--- where A resolves; returns a, b ('ok'), or the experiment awaiting its quick tier, or nil
-local function split_operands(id, spec, op)
-    local head, tail, first_a, awaiting = '', spec, nil, nil
-    while tail:find(op, 1, true) do
-        head = head .. before(tail, op); tail = after(tail, op)
-        local a, b = head, tail
-        first_a = first_a or (a ~= '' and a or nil)
-        if a ~= '' then
-            local status, qid = quantity_of(id, a)
-            if status == 'ok' then return 'ok', a, b end
-            if status == 'quick' and not awaiting and quantity_of(id, b) ~= 'missing' then awaiting = qid end
-        end
-        head = head .. op
-    end
-    if awaiting then return 'quick', awaiting end
-    return 'missing', first_a or ''
-end
-
-local function inline_derived(kind, arg)
-    local ph, shown = '{{' .. kind .. ':' .. arg .. '}}', 'missing: ' .. kind .. ':' .. arg
-    local op = (kind == 'sigmas' or kind == 'diff') and '-' or '/'
-    local id, spec = before(arg, ':'), after(arg, ':') or arg
-    if not spec:find(op, 1, true) then return missing(ph, 'expected ' .. kind .. ':PAPER/EXP:A' .. op .. 'B', shown) end
-    local status, a, b = split_operands(id, spec, op)
-    if status == 'quick' then return pending(a) end
-    if status == 'missing' then return missing(ph, 'no quantity ' .. a .. ' for ' .. id, shown) end
-    local _, av, as, at = quantity_of(id, a)
-    local sb, bv, bs, bt = quantity_of(id, b)
-    if sb == 'quick' then return pending(bv) end
-    if sb ~= 'ok' then return missing(ph, 'no quantity ' .. b .. ' for ' .. id, shown) end
-    local v = derived_text(kind, av, as, bv, bs)
-    if not v then return missing(ph, 'cannot compute (zero value or zero error)', shown) end
-    local mark
-    for _, t in ipairs({ at, bt }) do if t ~= '-' and t ~= 'paper' then mark = t end end
-    return v .. (mark and ' (' .. mark .. ' tier)' or '')
-end
-
 -- ROW -> the columns it names and a test of a row: its first field is ROW, or, for
 -- NAME=VALUE[&NAME=VALUE...], column NAME holds VALUE for every pair
 local function row_test(row)
@@ -1008,10 +936,9 @@ local function expand_inline(kind, arg)
     elseif kind == 'cpu' then return inline_cpu(arg)
     elseif kind == 'cpu-h' then return inline_cpu(arg, true)
     elseif kind == 'tsv' then return inline_tsv(arg)
-    elseif kind == 'pct' or kind == 'ratio' or kind == 'diff' or kind == 'sigmas' then return inline_derived(kind, arg)
-    elseif kind == 'calc' then
-        return missing('{{calc:' .. arg .. '}}', 'no expressions in the text: a number a section needs is a quantity its'
-            .. " experiment's analysis writes, quoted as {{PAPER/EXP:QUANTITY[:FMT]}} (issue 40 item 7)", 'missing: calc:' .. arg)
+    elseif kind == 'calc' or kind == 'pct' or kind == 'ratio' or kind == 'diff' or kind == 'sigmas' then
+        return missing('{{' .. kind .. ':' .. arg .. '}}', 'no expressions in the text: a number a section needs is a quantity its'
+            .. " experiment's analysis writes, quoted as {{PAPER/EXP:QUANTITY[:FMT]}} (issue 40 item 7)", 'missing: ' .. kind .. ':' .. arg)
     elseif kind == 'bench' then return inline_bench(arg)
     else return inline_value(kind, arg) end
 end

@@ -42,5 +42,8 @@ for est in "" _exp; do
     "$ANALYSE" keff-rows "$OUT/runs/free/tcaf_eta.tsv" "${ec%	*}" "${ec#*	}" "$est" >> "$OUT/summary.tsv"
 done
 for r in free constrained constrained_bodies; do cp "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/tcaf_eta_$r.tsv"; done
+# what paper.md says in words (issue 40 item 7): the free minus constrained eta(k -> 0) (two-mode) in
+# standard errors
+"$ANALYSE" sigmas eta_k0_free_minus_constrained_two_mode_sigmas "$(get . eta_k0_free_minus_constrained_two_mode)" 0 >> "$OUT/summary.tsv"
 }
 experiment

@@ -55,7 +55,7 @@ pair_simulations() {
         dpd_run constrained_$tag "$T02/constrained.cfg" "${tcaf[@]}" "${rep3[@]}" "${geo[@]}" \
             --set "colloids.per_axis=$kq" --set "seed=$((40301 + 2 * i))"
     fi
-    nax=$(awk -v k="$kq" 'BEGIN { n = int(k * (4 * 3.14159265358979 / 3)^(1/3)) + 2; print (n > 31 ? 31 : n) }')
+    nax=$("$ANALYSE" tcaf-axis-nmax "$kq")
     dpd_run freehk_$tag "$T02/free.cfg" "${hik[@]}" "${rep3[@]}" "${geo[@]}" --set "measure.tcaf.axis_nmax=$nax" \
         --set "seed=$((40500 + 2 * i))"
     dpd_run solventhk_$tag "$HERE/../fig01-viscosity-wavenumber/solvent-tcaf.cfg" "${hik[@]}" "${rep[@]}" \
@@ -131,5 +131,10 @@ for pair in $PAIRS; do
     fi
     "$ANALYSE" fig04-eta-r-row "$OUT/summary.tsv" "$tag" >> "$OUT/eta_r.tsv"
 done
+# what paper.md says in words (issue 40 item 7): the free system's eta(k -> 0) against eta_eff at
+# phi = 0.19 (where that phi is run)
+if f=$(get . eta_k0_free_phi0.19 2> /dev/null) && e=$(get . eta_eff_phi0.19 2> /dev/null); then
+    emit_minus eta_k0_free_minus_eta_eff_phi0.19 "$f" "$e"
+fi
 }
 experiment

@@ -12,9 +12,9 @@ printf 'dt\tT\tT_se\teta\teta_se\tcpu_seconds\n' > "$OUT/dt-scan.tsv"
 # run_dt DT K: the run at step DT (seed 40190 + K), the same simulated time at every step
 run_dt() {
     local dt=$1 steps eq every
-    steps=$(awk -v t=$T_RUN -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
-    eq=$(awk -v t=$T_EQ -v d=$dt 'BEGIN{printf "%d", t/d + 0.5}')
-    every=$(awk -v d=$dt 'BEGIN{e = int(0.05/d + 0.5); print (e < 1 ? 1 : e)}')   # sample every 0.05 time units
+    steps=$("$ANALYSE" steps-for $T_RUN $dt)
+    eq=$("$ANALYSE" steps-for $T_EQ $dt)
+    every=$("$ANALYSE" sample-every 0.05 $dt)   # sample every 0.05 time units
     dpd_run dt$dt solvent-shear.cfg "${box[@]}" --set dt=$dt --set steps=$steps --set equilibration=$eq \
         --set measure.every=$every --set "seed=$((40190 + $2))"
 }
@@ -47,5 +47,8 @@ case $TIER in
     paper) emit_ratio eta_ratio_dt0.005_dt0.0025 dt0.005 viscosity dt0.0025 viscosity
            emit_ratio eta_ratio_dt0.01_dt0.0025 dt0.01 viscosity dt0.0025 viscosity ;;
 esac
+# what paper.md says in words (issue 40 item 7): the limit over the paper tier's step 0.005 (the limit
+# is a rung of the ladder: no error)
+emit dt_max_T1pct_over_0.005 "$("$ANALYSE" quotient "$best" 0.005)" nan
 }
 experiment

@@ -75,5 +75,10 @@ fi
 # table beside the paper's columns; TCAF: value +- se, "no crossing" when the free eta(k) never
 # reaches the constrained eta(k -> 0), "-" when the phi was not run at this tier
 "$ANALYSE" tab01-tables "$OUT/summary.tsv" paper-table1.tsv "$OUT/table1.tsv" "$OUT/lambda_tcaf.tsv"
+# what paper.md says in words (issue 40 item 7): the free minus constrained eta(k -> 0) at the
+# smallest phi in standard errors (where that phi is run)
+if d=$(get . eta_k0_free_minus_constrained_phi0.0119 2> /dev/null); then
+    "$ANALYSE" sigmas eta_k0_free_minus_constrained_phi0.0119_sigmas "$d" 0 >> "$OUT/summary.tsv"
+fi
 }
 experiment

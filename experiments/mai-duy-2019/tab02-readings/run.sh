@@ -262,5 +262,10 @@ paste <(grep -v '^#' "$OUT/runs/$cr/tcaf.tsv" | cut -f1-3) <(grep -v '^#' "$OUT/
 # else unresolved; none where the curve is not reached: fail), and the TCAF eta_r(0.49) at both a
 "$ANALYSE" readings-grid "$PAPER2" "$OUT/summary.tsv" "$OUT/grid_rows.tsv" "$OUT/grid.tsv" > "$OUT/.rows"
 cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+# what paper.md says in words (issue 40 item 7): reading (d)'s eta_eff at phi = 0.4940 over the
+# paper's (Table 2, bands.tsv), where it is computed
+if d=$(get . reading_d_eta_eff_phi0.4940 2> /dev/null); then
+    "$ANALYSE" div "$d" "$(paper_number reading_d_eta_eff_phi0.4940)" reading_d_eta_eff_phi0.4940_over_paper >> "$OUT/summary.tsv"
+fi
 }
 experiment

@@ -6,37 +6,29 @@ FV=$(up fluid-viscosity paper) EQ16=$(up eq16-effective-radius reduced) F01=$(up
 F02=$(up fig02-drag-calibration reduced) T01=$(up tab01-couette-torque reduced) T02=$(up tab02-poiseuille reduced)
 T03=$(up tab03-two-spheres reduced) F03=$(up fig03-chain-rotation reduced)
 # sget DIR QUANTITY -> "value<TAB>stderr" of a summary (an upstream result's or one of its runs')
-sget() { awk -F'\t' -v q="$2" '$1 == q { print $2 "\t" $3; f = 1; exit } END { exit !f }' "$1/summary.tsv" \
-         || { echo "pan-estimators: $2 missing in $1/summary.tsv" >&2; return 1; }; }
+sget() { tsv_lookup "$1/summary.tsv" "$2" pan-estimators; }
 # speed factor of the committed pan-2008 runs (made by binaries of b789431's speed; tools/cost's class
 # factor for these scenes) and of this experiment's own runs (the current binary: 1)
-OLD=$(awk -F'\t' '$1 == "rotation-generic" { print $2 }' "$DPD_ROOT/bench/speedup.tsv")
+OLD=$(tsv_lookup "$DPD_ROOT/bench/speedup.tsv" rotation-generic pan-estimators | cut -f1)
 # prod_time NAME -> production time units of one of this experiment's runs (dt = 0.01): the summary's
 # steps less the equilibration of its arguments, else of its scene (no simulator call: verification)
 prod_time() {
     local a=$OUT/runs/$1/.args sc
     sc=$(head -1 "$a" | sed -E "s#^/([^/]+/)*experiments/#$DPD_ROOT/experiments/#"); case $sc in /*) ;; *) sc=$HERE/$sc ;; esac
-    get "$1" steps | awk -F'\t' -v a="$a" -v sc="$sc" 'BEGIN { while ((getline l < sc) > 0) { sub(/#.*/, "", l)
-            if (l ~ /^[ \t]*equilibration[ \t]*=/) { sub(/.*=[ \t]*/, "", l); eq = l + 0 } }
-        while ((getline l < a) > 0) if (l ~ /^equilibration=/) { sub(/^[^=]*=/, "", l); eq = l + 0 } }
-        { printf "%.6g", ($1 - eq) * 0.01 }'
+    "$ANALYSE" prod-time "$(get "$1" steps | cut -f1)" "$a" "$sc"
 }
 # column_mean_se FILE COLUMN -> "mean<TAB>stderr" over the rows after the header (blocks)
-column_mean_se() { num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%s", num_pair(o) }' "$1"; }
+column_mean_se() { "$ANALYSE" column-mean "$1" $2; }
 # cpu_h NAME -> the run's CPU hours (this binary)
-cpu_h() { get "$1" cpu_seconds | awk -F'\t' '{ printf "%.6g", $1 / 3600 }'; }
+cpu_h() { "$ANALYSE" quotient6 "$(get "$1" cpu_seconds | cut -f1)" 3600; }
 
 # ------------------------------------------------------------------ 1. the precision each claim needs
 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/claim-runs.tsv" > "$OUT/precision.tsv"
-awk -F'\t' 'NR > 1 && $13 != "inf" { p += $13 } NR > 1 && $14 != "inf" { o += $14 }
-    END { printf "precision_cpu_hours_at_paper_values\t%.4g\t0\nprecision_cpu_hours_at_our_values\t%.4g\t0\n", p, o }' \
-    "$OUT/precision.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" precision-totals "$OUT/precision.tsv" >> "$OUT/summary.tsv"
 # Pan's 0.5 % (item 5): the plain average's CPU-hours for a stderr of 0.5 % of every number the paper
 # prints from a simulation (entries.tsv), in the paper's box at the paper's drive; totals per source
 PRECISION_REL=0.005 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/entries.tsv" > "$OUT/half_percent.tsv"
-awk -F'\t' 'NR > 1 { k = $1; sub(/.*\//, "", k); sub(/-.*/, "", k); h[k] += $13; if (!(k in seen)) { seen[k] = 1; ks[++n] = k }; all += $13 }
-    END { for (i = 1; i <= n; i++) printf "half_percent_cpu_hours_%s\t%.4g\t0\n", ks[i], h[ks[i]]
-          printf "half_percent_cpu_hours_all\t%.4g\t0\n", all }' "$OUT/half_percent.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" half-percent-totals "$OUT/half_percent.tsv" >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 2a. the rotation ladder (stronger drive)
 # torque over eq. 18 at each Omega, the noise (variance of the mean x production time), the relative
@@ -44,11 +36,8 @@ awk -F'\t' 'NR > 1 { k = $1; sub(/.*\//, "", k); sub(/-.*/, "", k); h[k] += $13;
 printf 'omega\ttorque\ttorque_se\tratio_eq18\tratio_se\tnoise\tcpu_h\trel_var_cpu_h\n' > "$OUT/ladder.tsv"
 for w in $LADDER; do
     W=${w%%:*} n=rot_W${w%%:*}
-    paste <(get $n torque_on_colloid_z) <(echo "$(prod_time $n)	$(cpu_h $n)") |
-        num_awk -F'\t' -v W=$W -v m=$MU -v R=$R -v pi=$PI '{ T18 = -8 * pi * m * W * R * R * R
-            printf "%s\t%s\t%s\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g\n", W, $1, $2, $1 / T18, $2 / T18, $2 * $2 * $3, $4, num_sq($2 / $1) * $4 }' >> "$OUT/ladder.tsv"
-    emit "ladder_torque_ratio_W$W" $(awk -F'\t' -v W=$W '$1 == W { print $4 "\t" $5 }' "$OUT/ladder.tsv")
-    emit "ladder_noise_W$W" $(awk -F'\t' -v W=$W '$1 == W { print $6 "\t" $6 * sqrt(2 / 49) }' "$OUT/ladder.tsv")
+    "$ANALYSE" ladder-row $W "$(get $n torque_on_colloid_z)" "$(prod_time $n)" "$(cpu_h $n)" $MU $R >> "$OUT/ladder.tsv"
+    "$ANALYSE" ladder-rows "$OUT/ladder.tsv" $W >> "$OUT/summary.tsv"
 done
 # the plain average at the paper's Omega = -0.4 (fig01's committed 1500 time units) for comparison
 emit plain_torque_ratio_W-0.4 $(sget "$F01" torque_ratio_gS5.5)
@@ -57,8 +46,7 @@ ws=($(for w in $LADDER; do echo ${w%%:*}; done | sort -g -r))   # -1.0 -2.0 -4.0
 prev=-0.4 prevv=$(sget "$F01" torque_ratio_gS5.5)
 for W in "${ws[@]}"; do
     cur=$(get . ladder_torque_ratio_W$W)
-    num_awk -v a="$prevv" -v b="$cur" -v q="ladder_linearity_W${W}_vs_W$prev" 'BEGIN { split(a, x, "\t"); split(b, y, "\t")
-        num_ratio(y[1], y[2], x[1], x[2], o); print num_row(q, o) }' >> "$OUT/summary.tsv"
+    emit "ladder_linearity_W${W}_vs_W$prev" "$("$ANALYSE" ratio "$cur" "$prevv")"
     prev=$W prevv=$cur
 done
 
@@ -70,27 +58,19 @@ done
 printf 'L\tu\tzeta\tzeta_se\tK_measured\tK_se\tK_hasimoto\tK_over_hasimoto\tK_over_hasimoto_se\tu_at_Fext\tu_at_Fext_se\tu_hasimoto_at_Fext\tnoise_drag\tnoise_total\tzeta_einstein\tcpu_h\n' > "$OUT/hold.tsv"
 for h in $HOLD; do
     IFS=: read -r Lb u n <<< "$h"; nm=hold_L${Lb}_u$u
-    paste <(get $nm drag_on_colloid_x) <(get $nm force_on_colloid_x) <(echo "$(prod_time $nm)	$(cpu_h $nm)") |
-        num_awk -F'\t' -v L=$Lb -v u=$u -v m=$MU -v R=$R -v pi=$PI -v Fe=$FEXT '{
-            z = $1 / u; zs = $2 / u; S = 6 * pi * m * R; phi = 4 / 3 * pi * R * R * R / (L * L * L)
-            K = 1 / (1 - 1.7601 * phi ^ (1 / 3) + phi - 1.5593 * phi * phi)
-            printf "%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\t%.4g\t%.10g\t%.4g\t%.4g\t%.4g\t%.4g\n", L, u, z, zs, z / S, zs / S, K,
-                   z / S / K, zs / S / K, Fe / z, Fe / z * zs / z, Fe / (S * K), $2 * $2 * $5, $4 * $4 * $5, $4 * $4 * $5 / 2, $6 }' >> "$OUT/hold.tsv"
-    emit "K_over_hasimoto_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $8 "\t" $9 }' "$OUT/hold.tsv")
-    emit "u_at_fext_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $10 "\t" $11 }' "$OUT/hold.tsv")
-    emit "zeta_L${Lb}_u$u" $(awk -F'\t' -v L=$Lb -v u=$u '$1 == L && $2 == u { print $3 "\t" $4 }' "$OUT/hold.tsv")
+    "$ANALYSE" hold-row $Lb $u "$(get $nm drag_on_colloid_x)" "$(get $nm force_on_colloid_x)" "$(prod_time $nm)" "$(cpu_h $nm)" \
+        $MU $R $FEXT >> "$OUT/hold.tsv"
+    "$ANALYSE" hold-rows "$OUT/hold.tsv" $Lb $u >> "$OUT/summary.tsv"
 done
 # the box test: zeta(6) / zeta(10) against Hasimoto's K(6) / K(10); linearity: zeta at u = 0.15 / at 0.3 (L = 6)
-zrow() { awk -F'\t' -v L=$1 -v u=$2 '$1 == L && $2 == u { print $3 "\t" $4 "\t" $7 }' "$OUT/hold.tsv"; }
+zrow() { "$ANALYSE" hold-cols "$OUT/hold.tsv" $1 $2 3 4 7; }
 if [ -n "$(zrow 10 0.3)" ] && [ -n "$(zrow 6 0.3)" ]; then
-    paste <(zrow 6 0.3) <(zrow 10 0.3) | num_awk -F'\t' '{ num_ratio($1, $2, $4, $5, o); print num_row("zeta_L6_over_L10", o)
-        printf "hasimoto_L6_over_L10\t%.10g\t0\n", $3 / $6 }' >> "$OUT/summary.tsv"
+"$ANALYSE" hold-ratio "$OUT/hold.tsv" 6 0.3 10 0.3 zeta_L6_over_L10 hasimoto_L6_over_L10 >> "$OUT/summary.tsv"
     # the body-force plain average (fig02, 3000 time units) against the held-u estimate in the same box
-    paste <(sget "$F02" u_gC3.5) <(get . u_at_fext_L10_u0.3) | num_awk -F'\t' '{ num_diff($1, $2, $3, $4, o)
-        print num_row("u_bodyforce_minus_held_L10", o) }' >> "$OUT/summary.tsv"
+    emit u_bodyforce_minus_held_L10 "$("$ANALYSE" diff "$(sget "$F02" u_gC3.5)" "$(get . u_at_fext_L10_u0.3)")"
 fi
 if [ -n "$(zrow 6 0.15)" ] && [ -n "$(zrow 6 0.3)" ]; then
-    paste <(zrow 6 0.15) <(zrow 6 0.3) | num_awk -F'\t' '{ num_ratio($1, $2, $4, $5, o); print num_row("zeta_L6_u0.15_over_u0.3", o) }' >> "$OUT/summary.tsv"
+"$ANALYSE" hold-ratio "$OUT/hold.tsv" 6 0.15 6 0.3 zeta_L6_u0.15_over_u0.3 >> "$OUT/summary.tsv"
 fi
 
 # ------------------------------------------------------------------ 2c. the twins (correlated sampling)
@@ -106,91 +86,54 @@ twins() {
     for s in $SEEDS; do
         files="$files $OUT/runs/twin_${kind}_s${s}_$b/$ser.windows $OUT/runs/twin_${kind}_s${s}_$d/$ser.windows $OUT/runs/twin_${kind}_s${s}_$t/$ser.windows"
     done
-    num_awk -v files="$files" -v S="$steady" -v P="$plain" -v kind=$kind -v out="$OUT/twin_$kind.tsv" 'BEGIN {
-        nf = split(files, f, " "); ns = nf / 3; W = 0.05
-        for (s = 1; s <= ns; s++) for (k = 0; k < 3; k++) { n = 0
-            while ((getline l < f[3 * (s - 1) + k + 1]) > 0) x[s, k, ++n] = l; nw = n }
-        # one run'"'"'s window variance, over the second half of the windows (the fluid settled), all seeds
-        m = 0; for (s = 1; s <= ns; s++) for (w = 1; w <= nw; w++) if (2 * w > nw) { v[++m] = x[s, 0, w] }
-        num_mean_se(v, m, o); sd = o["se"] * sqrt(m); ind = sqrt(2) * sd
-        print "t\tresponse\tresponse_se\tresponse_over_steady\ttiny_decorrelation\tfull_decorrelation" > out
-        # bins of 5 windows (0.25 time units): the table; lambda from the tiny twin over bins where it is 0.005 ... 0.3
-        nb = int(nw / 5); tdec = "nan"; nl = 0
-        for (b = 1; b <= nb; b++) { q = 0; e2 = 0; r2 = 0
-            for (s = 1; s <= ns; s++) { rs = 0
-                for (w = 5 * (b - 1) + 1; w <= 5 * b; w++) { e2 += num_sq(x[s, 2, w] - x[s, 0, w]); rs += x[s, 1, w] - x[s, 0, w] }
-                rr[s] = rs / 5 }
-            num_mean_se(rr, ns, o); resp = o["v"]; rse = o["se"]
-            for (s = 1; s <= ns; s++) for (w = 5 * (b - 1) + 1; w <= 5 * b; w++) { r2 += num_sq(x[s, 1, w] - x[s, 0, w] - resp) }
-            c = sqrt(e2 / (5 * ns)) / ind; cf = sqrt(r2 / (5 * ns)) / ind; t = (b - 0.5) * 5 * W
-            if (tdec == "nan" && c >= 0.5) tdec = (b - 1) * 5 * W
-            if (c > 0.005 && c < 0.3) { nl++; lx[nl] = t; ly[nl] = log(c) }
-            printf "%.3f\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\n", t, resp, rse, (S == "" ? "nan" : resp / S), c, cf > out }
-        num_line(lx, ly, nl, o)
-        printf "twin_%s_lyapunov_rate\t%s\t%s\n", kind, num_fmt("%.4g", o["slope"]), num_fmt("%.2g", o["slope_se"])
-        printf "twin_%s_decorrelation_time\t%s\t%.2g\n", kind, tdec, 5 * W
-        # the twin estimator over [t1, t2]: its mean over the steady value, and its variance x 2 t2 over
-        # the plain average'"'"'s variance x time
-        split("0.25:0.5 0.5:1 1:2 2:4", win, " ")
-        for (i = 1; i <= 4; i++) { split(win[i], tt, ":")
-            for (s = 1; s <= ns; s++) { a = 0; k = 0
-                for (w = 1; w <= nw; w++) if ((w - 1) * W >= tt[1] && w * W <= tt[2] + 1e-9) { a += x[s, 1, w] - x[s, 0, w]; k++ }
-                y[s] = a / k }
-            num_mean_se(y, ns, o)
-            printf "twin_%s_bias_%s_%s\t%s\t%s\n", kind, tt[1], tt[2], num_fmt("%.4g", S == "" ? "nan" : o["v"] / S - 1), num_fmt("%.2g", S == "" ? "nan" : o["se"] / num_abs(S))
-            printf "twin_%s_variance_ratio_%s_%s\t%s\t%s\n", kind, tt[1], tt[2],
-                   num_fmt("%.4g", P == "" ? "nan" : o["se"] * o["se"] * ns * 2 * tt[2] / P), num_fmt("%.2g", P == "" ? "nan" : o["se"] * o["se"] * ns * 2 * tt[2] / P * sqrt(2 / (ns - 1))) } }' >> "$OUT/summary.tsv"
+    # shellcheck disable=SC2086
+    "$ANALYSE" twins "$kind" "$steady" "$plain" "$OUT/twin_$kind.tsv" $files >> "$OUT/summary.tsv"
 }
 # the steady responses and the plain averages' noise (variance x time) they are compared with: drag at
 # V = 0.3 from the held u = 0.3 in the same 10^3 box (opposite sign: the sphere moves through the fluid),
 # torque at Omega = -0.4 from the ladder's weakest drive (scaled by Omega; gamma^C_cf does not enter, Fig. 1)
 sd=""; pd=""
 if [ -n "$(zrow 10 0.3)" ]; then
-    sd=$(get hold_L10_u0.3 drag_on_colloid_x | awk '{ printf "%.10g", -$1 }')
-    pd=$(awk -F'\t' '$1 == 10 && $2 == 0.3 { print $13 }' "$OUT/hold.tsv")
+    sd=$("$ANALYSE" scale "$(get hold_L10_u0.3 drag_on_colloid_x)" -1 | cut -f1)
+    pd=$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 13)
 fi
 twins drag drag_on_colloid_x V0.0 V0.3 V0.003 "$sd" "$pd"
 wk=${ws[0]}
-sr=$(awk -F'\t' -v W=$wk '$1 == W { printf "%.10g", $2 * -0.4 / W }' "$OUT/ladder.tsv")
-pr=$(awk -F'\t' -v W=$wk '$1 == W { print $6 }' "$OUT/ladder.tsv")
+sr=$("$ANALYSE" ladder-steady "$OUT/ladder.tsv" $wk)
+pr=$("$ANALYSE" ladder-cols "$OUT/ladder.tsv" $wk 6)
 twins rot torque_on_colloid_z W0.0 W-0.4 W-0.004 "$sr" "$pr"
 
 # ------------------------------------------------------------------ 2d. Green-Kubo for the rotational friction
 # tab01's control-variate diagnostic (seven frozen spheres at rest, 504 run means of 10 time units): the
 # total torque's variance x time over 2 kBT is the rotational friction (Einstein form of Green-Kubo);
 # against fig01's driven friction (torque / Omega at -0.4) and the ladder's
-sget "$T01" cv_noise_total | num_awk -F'\t' -v m=$MU -v R=$R -v pi=$PI '{ z = 8 * pi * m * R * R * R
-    num_div($1 / 2, $2 / 2, z, o); print num_row("gk_rotational_friction_over_eq18", o) }' >> "$OUT/summary.tsv"
+"$ANALYSE" gk-rotational-friction "$(sget "$T01" cv_noise_total)" $MU $R >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 3. Table 3's pair in two boxes
 # drag per sphere over eq. 23 at the same u, against the leading periodic-array correction for two
 # spheres per cell, 1 / (1 - 2 x 2.837297 R / L) (the partner's images and the sphere's own, each
 # -2.837297 F / (6 pi mu L) at the sphere: the Yeh-Hummer / Hasimoto constant), in 12^3 (this
 # experiment, l = 1, u = 0.3) and 30^3 (tab03's committed rows)
-eq23F() { awk -v l=$1 -v u=$2 -v m=$MU -v R=$R -v pi=$PI 'BEGIN { q = R / l
-    printf "%.10g", 6*pi*m*R*u * (1 - 3*q/4 + 9*q^2/16 - 59*q^3/64 + 465*q^4/256 - 15813*q^5/7168) }'; }
-lattice2() { awk -v L=$1 -v R=$R 'BEGIN { printf "%.10g", 1 / (1 - 2 * 2.837297 * R / L) }'; }
+eq23F() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R | cut -d' ' -f1; }
+lattice2() { "$ANALYSE" pair-periodic-factor $1 $R; }
 printf 'L\tl\tu\tdrag\tdrag_se\tdrag_over_eq23\tse\tperiodic_prediction\tover_prediction\tse\tpan_over_eq23\n' > "$OUT/pair_boxes.tsv"
 pan_F() { case $1 in 2.0) echo 4.861;; 1.5) echo 4.857;; 1.0) echo 4.863;; esac; }
 for r in 1 2 3; do
     l=$(case $r in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac)
-    paste <(sget "$T03" drag_row$r) | num_awk -F'\t' -v l=$l -v F=$(eq23F $l 0.3) -v P=$(lattice2 30) -v pF=$(pan_F $l) '{
-        printf "30\t%s\t0.3\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\n", l, $1, $2, $1 / F, $2 / F, P, $1 / F / P, $2 / F / P, pF / F }' >> "$OUT/pair_boxes.tsv"
+    "$ANALYSE" pair-box-row 30 $l 0.3 "$(sget "$T03" drag_row$r)" $(eq23F $l 0.3) $(lattice2 30) $(pan_F $l) >> "$OUT/pair_boxes.tsv"
 done
 for p in $PAIR12; do
     u=${p%%:*}
     F=$(column_mean_se "$OUT/runs/pair12_u$u/sphere_blocks.tsv" 2)
-    echo "$F" | num_awk -F'\t' -v u=$u -v F=$(eq23F 1.0 $u) -v P=$(lattice2 12) -v pF=$(pan_F 1.0) '{
-        printf "12\t1.0\t%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.10g\t%.4g\t%.10g\n", u, $1, $2, $1 / F, $2 / F, P, $1 / F / P, $2 / F / P, pF / F }' >> "$OUT/pair_boxes.tsv"
-    emit "pair12_drag_over_eq23_u$u" $(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $6 "\t" $7 }' "$OUT/pair_boxes.tsv")
-    emit "pair12_drag_over_periodic_u$u" $(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $9 "\t" $10 }' "$OUT/pair_boxes.tsv")
+    "$ANALYSE" pair-box-row 12 1.0 $u "$F" $(eq23F 1.0 $u) $(lattice2 12) $(pan_F 1.0) >> "$OUT/pair_boxes.tsv"
+    emit "pair12_drag_over_eq23_u$u" $("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 6 7)
+    emit "pair12_drag_over_periodic_u$u" $("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 9 10)
     emit "pair12_torque_u$u" $(column_mean_se "$OUT/runs/pair12_u$u/sphere_blocks.tsv" 3)
     # the box ratio: l = 1's drag per sphere in 12^3 over 30^3, both at u = 0.3, against the prediction
-    paste <(awk -F'\t' -v u=$u '$1 == 12 && $3 == u { print $4 "\t" $5 }' "$OUT/pair_boxes.tsv") <(sget "$T03" drag_row3) |
-        num_awk -F'\t' -v p=$(awk -v a=$(lattice2 12) -v b=$(lattice2 30) 'BEGIN { print a / b }') '{ num_ratio($1, $2, $3, $4, o)
-            print num_row("pair_drag_L12_over_L30", o); printf "pair_periodic_L12_over_L30\t%.10g\t0\n", p }' >> "$OUT/summary.tsv"
+    emit pair_drag_L12_over_L30 "$("$ANALYSE" ratio "$("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 4 5)" "$(sget "$T03" drag_row3)")"
+    "$ANALYSE" periodic-ratio-row $(lattice2 12) $(lattice2 30) >> "$OUT/summary.tsv"
 done
-awk -F'\t' 'NR > 1 && $1 == 30 { printf "pair30_drag_over_periodic_l%s\t%s\t%s\n", $2, $9, $10 }' "$OUT/pair_boxes.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" pair30-rows "$OUT/pair_boxes.tsv" >> "$OUT/summary.tsv"
 
 # ------------------------------------------------------------------ 3b. torque over drag, box by box
 # The periodic images change the flow a sphere of the pair sees by a uniform backflow at leading
@@ -201,12 +144,7 @@ awk -F'\t' 'NR > 1 && $1 == 30 { printf "pair30_drag_over_periodic_l%s\t%s\t%s\n
 # at a fraction of the cost. Tested: l = 1, u = 0.6 in 8^3 and 12^3 (12^3: this experiment's run and
 # the committed ladder's u = 0.6 run, weighted by their errors); 30^3 at u = 0.3 (tab03 row 3).
 tf() {   # FILE(S) of sphere_blocks -> "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se" (runs weighted by their errors)
-    local f F="" T=""
-    for f in "$@"; do F="$F$(column_mean_se "$f" 2);"; T="$T$(column_mean_se "$f" 3);"; done
-    num_awk -v F="$F" -v T="$T" 'BEGIN { n = split(F, a, ";") - 1; split(T, b, ";")
-        for (i = 1; i <= n; i++) { split(a[i], x, "\t"); split(b[i], y, "\t"); f[i] = x[1]; fs[i] = x[2]; t[i] = y[1]; ts[i] = y[2] }
-        num_wmean_se(f, fs, n, oF); num_wmean_se(t, ts, n, oT); num_ratio(oT["v"], oT["se"], oF["v"], oF["se"], o)
-        printf "%s\t%s\t%s\n", num_pair(o), num_pair(oF), num_pair(oT) }'
+    "$ANALYSE" torque-over-drag "$@"
 }
 if [ -n "$PAIRBOX" ]; then
     printf 'L\tu\tT_over_F\tse\tdrag\tdrag_se\ttorque\ttorque_se\tperiodic_prediction_drag\n' > "$OUT/torque_over_drag.tsv"
@@ -217,17 +155,11 @@ if [ -n "$PAIRBOX" ]; then
     emit tf_L8_u0.6 $(echo "$tf8" | cut -f1,2)
     emit tf_L12_u0.6 $(echo "$tf12" | cut -f1,2)
     emit tf_L30_u0.3 $(echo "$tf30" | cut -f1,2)
-    paste <(echo "$tf8") <(echo "$tf12") | num_awk -F'\t' -v p8=$(lattice2 8) -v p12=$(lattice2 12) '{
-        num_ratio($1, $2, $7, $8, o); print num_row("tf_L8_over_L12", o)
-        num_ratio($3, $4, $9, $10, o); print num_row("drag_L8_over_L12", o)
-        printf "drag_periodic_L8_over_L12\t%.10g\t0\n", p8 / p12 }' >> "$OUT/summary.tsv"
+"$ANALYSE" tf-ratios "$tf8" "$tf12" $(lattice2 8) $(lattice2 12) >> "$OUT/summary.tsv"
     # Table 3's row 3 torque in 30^3 from (T / F) of 12^3 times the 30^3 drag (u = 0.3; the ratio is
     # linear in u within the ladder's 6 %), over eq. 23, beside the plain 30^3 average
-    T23=$(awk -v l=1.0 -v u=0.3 -v m=$MU -v R=$R -v pi=$PI 'BEGIN { q = R / l
-        printf "%.10g", 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024) }')
-    paste <(echo "$tf12") <(sget "$T03" drag_row3) | num_awk -F'\t' -v t=$T23 '{
-        num_product($1, $2, $7, $8, o); print num_row("tab03_row3_torque_via_tf", o)
-        num_div(o["v"], o["se"], t, r); print num_row("tab03_row3_torque_ratio_via_tf", r) }' >> "$OUT/summary.tsv"
+    T23=$("$ANALYSE" two-sphere-theory 1.0 0.3 $MU $R | cut -d' ' -f2)
+    "$ANALYSE" tf-torque "$tf12" "$(sget "$T03" drag_row3)" $T23 >> "$OUT/summary.tsv"
 fi
 
 # ------------------------------------------------------------------ 4. ours against Pan's simulated values
@@ -239,9 +171,7 @@ pan_compare() {
     # (PAN_THEORY and OURS_RATIO_QUANTITY "-": no theory value)
     row() { local d=$1 q=$2 p=$3 pt=$4 rq=$5 lab=$6 rr="-	-"
         [ "$rq" = - ] || rr=$(sget "$d" "$rq")
-        paste <(sget "$d" "$q") <(echo "$rr") | awk -F'\t' -v p=$p -v pt=$pt -v lab="$lab" -v q=$q '{
-            printf "%s\t%s\t%s\t%.10g\t%.4g\t%.10g\t%.4g\t%.3g\t%s\t%s\t%s\n", lab, q, p, $1, $2, $1 / p, $2 / p, ($1 - p) / $2,
-                   (pt == "-" ? "-" : sprintf("%.10g", p / pt)), $3, $4 }'; }
+        "$ANALYSE" pan-compare-row "$lab" $q $p $pt "$(sget "$d" "$q")" "$rr"; }
     row "$F01" torque_ratio_gS5.5 1.013 1 torque_ratio_gS5.5 "fig01	Omega -0.4"
     row "$F02" u_gC3.5 0.2986 - u_ratio_eq19_gC3.5 "fig02	gC 3.5"
     row "$EQ16" D_colloid 0.0533 - - "eq16	10^3"
@@ -268,11 +198,9 @@ pan_compare > "$OUT/pan_compare.tsv"
 # bench/speedup.tsv, $OLD, as tools/cost does); this experiment's runs are this binary's.
 # est_row QUANTITY ESTIMATOR SETUP VALUE SE CPU_H CHECK KEPT
 est_row() {
-    awk -v q="$1" -v e="$2" -v st="$3" -v v="$4" -v se="$5" -v c="$6" -v ck="$7" -v k="$8" 'BEGIN {
-        r = (se / v) ^ 2 * c; if (r < 0) r = -r
-        printf "%s\t%s\t%s\t%.6g\t%.4g\t%.4g\t%.4g\t%.4g\t%s\t%s\n", q, e, st, v, se, c, r, r / 1e-4, ck, k }'
+    "$ANALYSE" est-row "$@"
 }
-rcpu() { awk -F'\t' -v f=${2:-1} '$1 == "cpu_seconds" { s += $2 } END { printf "%.6g", s * f / 3600 }' "$1"; }
+rcpu() { "$ANALYSE" rcpu "$1" ${2:-1}; }
 pair() { printf '%s %s' "$(echo "$1" | cut -f1)" "$(echo "$1" | cut -f2)"; }
 {
 printf 'quantity\testimator\tsetup\tvalue\tse\tcpu_h\trel_var_cpu_h\tcpu_h_for_1pct\tcheck\tkept\n'
@@ -282,30 +210,30 @@ est_row "fig01 torque" "plain average, Omega = -0.4" "10^3, one sphere, 1500 t.u
 prev=-0.4
 for W in "${ws[@]}"; do
     est_row "fig01 torque" "stronger drive, Omega = $W" "10^3, one sphere (this experiment)" \
-        $(awk -F'\t' -v W=$W '$1 == W { print $2, $3, $7 }' "$OUT/ladder.tsv") \
-        "torque per Omega over Omega = $prev: $(get . ladder_linearity_W${W}_vs_W$prev | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" \
+        $("$ANALYSE" ladder-cols "$OUT/ladder.tsv" $W 2 3 7) \
+        "torque per Omega over Omega = $prev: $("$ANALYSE" fmt "%.4f +- %.4f" "$(get . ladder_linearity_W${W}_vs_W$prev)")" \
         "kept where linear"
     prev=$W
 done
-read -r v se < <(sget "$T01" cv_noise_total | awk -F'\t' '{ print $1 / 2, $2 / 2 }')
+read -r v se < <("$ANALYSE" half-pair "$(sget "$T01" cv_noise_total)")
 est_row "fig01 torque" "Green-Kubo (Einstein form): total torque's variance x time / 2 kBT" "10^3, seven spheres at rest, 3 components, 24 x 10 t.u. (tab01 cv runs)" \
     $v $se $(cat "$T01"/runs/cv*/summary.tsv | rcpu /dev/stdin $OLD) \
-    "friction over eq. 18: $(get . gk_rotational_friction_over_eq18 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }') (driven, Omega = -0.4: $(sget "$F01" torque_ratio_gS5.5 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'))" no
+    "friction over eq. 18: $("$ANALYSE" fmt "%.3f +- %.3f" "$(get . gk_rotational_friction_over_eq18)") (driven, Omega = -0.4: $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$F01" torque_ratio_gS5.5)"))" no
 vr=$(get . twin_rot_variance_ratio_0.25_0.5 | cut -f1)
-plain_r=$(awk -F'\t' -v W=${ws[0]} '$1 == W { print $6 }' "$OUT/ladder.tsv")   # noise x time, Omega-independent
-echo "fig01 torque	twins: driven minus undriven over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's (2 branches of 0.5 t.u., no equilibration counted); response over steady $(get . twin_rot_bias_0.25_0.5 | awk -F'\t' '{ printf "%+.3f +- %.3f", $1, $2 }'): bias unresolved at 8 %	no"
+plain_r=$("$ANALYSE" ladder-cols "$OUT/ladder.tsv" ${ws[0]} 6)   # noise x time, Omega-independent
+echo "fig01 torque	twins: driven minus undriven over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's (2 branches of 0.5 t.u., no equilibration counted); response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_rot_bias_0.25_0.5)"): bias unresolved at 8 %	no"
 # B. the drag of a fixed sphere (Figs 1-2's colloid, gamma^C_cf = 3.5) in the 10^3 box
 if [ -n "$(zrow 10 0.3)" ]; then
     est_row "fig02 drag (u at F_ext)" "plain average, body force (u from the fluid's mean velocity)" "10^3, 3000 t.u. (fig02 reduced, Ornstein-Uhlenbeck error)" \
         $(pair "$(sget "$F02" u_gC3.5)") $(rcpu "$F02/runs/gC3.5/summary.tsv" $OLD) "the paper's drive" reference
     est_row "fig02 drag (u at F_ext)" "held mean velocity u = 0.3, u = F_ext / zeta" "10^3, 12000 t.u. (this experiment)" \
         $(pair "$(get . u_at_fext_L10_u0.3)") $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
-        "body force minus held: $(get . u_bodyforce_minus_held_L10 | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" "kept (no start-up, no slow mode)"
+        "body force minus held: $("$ANALYSE" fmt "%.4f +- %.4f" "$(get . u_bodyforce_minus_held_L10)")" "kept (no start-up, no slow mode)"
     est_row "fig02 drag (u at F_ext)" "Green-Kubo (Einstein form): total force's variance x time / 2 kBT" "10^3, u = 0.3 held (this experiment)" \
-        $(awk -F'\t' '$1 == 10 && $2 == 0.3 { print $15, $15 * sqrt(2 / 49) }' "$OUT/hold.tsv") $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
-        "zeta from it $(awk -F'\t' '$1 == 10 && $2 == 0.3 { printf "%.1f", $15 }' "$OUT/hold.tsv") against the driven $(awk -F'\t' '$1 == 10 && $2 == 0.3 { printf "%.2f", $3 }' "$OUT/hold.tsv"): the held momentum changes the ensemble" no
+        $("$ANALYSE" with-variance-se "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)" 49) $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
+        "zeta from it $("$ANALYSE" fmt %.1f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)") against the driven $("$ANALYSE" fmt %.2f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 3)"): the held momentum changes the ensemble" no
     vr=$(get . twin_drag_variance_ratio_0.25_0.5 | cut -f1)
-    echo "fig02 drag (u at F_ext)	twins: sphere moving at 0.3 minus at rest over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's; response over steady $(get . twin_drag_bias_0.25_0.5 | awk -F'\t' '{ printf "%+.3f +- %.3f", $1, $2 }') (Basset's transient R / sqrt(pi nu t) is +23 % at 0.375 t.u. in a continuum)	no"
+    echo "fig02 drag (u at F_ext)	twins: sphere moving at 0.3 minus at rest over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's; response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_drag_bias_0.25_0.5)") (Basset's transient R / sqrt(pi nu t) is +23 % at 0.375 t.u. in a continuum)	no"
 fi
 # C. Table 3's torque, l = 1, 30^3: the plain average at u = 0.3 and the same noise at a stronger drive
 # (projected: the 30^3 row's noise x time, its torque scaled linearly in u, its cost per time unit)
@@ -313,10 +241,10 @@ read -r T Tse < <(sget "$T03" torque_row3 | tr '\t' ' ')
 c3=$(rcpu "$T03/runs/row3/summary.tsv" $OLD)
 est_row "tab03 torque l = 1" "plain average, u = 0.3" "30^3, 600 t.u. (tab03 reduced row 3)" $T $Tse $c3 "the paper's drive" reference
 for u in 0.6 1.2; do
-    awk -v T=$T -v se=$Tse -v u=$u -v c=$c3 'BEGIN { printf "%.6g %.4g %.6g\n", T * u / 0.3, se, c }' | {
+    "$ANALYSE" drive-projection $T $Tse $u $c3 | {
         read -r Tu seu cu
         est_row "tab03 torque l = 1" "stronger drive, u = $u (projected)" "30^3, the row's noise and cost per t.u." $Tu $seu $cu \
-            "12^3 ladder: torque per u at 1.2 over 0.6 $(sget "$T03" lr_torque_per_u_1.2_vs_0.6 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'), at 2.4 over 1.2 $(sget "$T03" lr_torque_per_u_2.4_vs_1.2 | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'); drag per u 1.2 over 0.6 $(sget "$T03" lr_drag_per_u_1.2_vs_0.6 | awk -F'\t' '{ printf "%.4f +- %.4f", $1, $2 }')" \
+            "12^3 ladder: torque per u at 1.2 over 0.6 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_1.2_vs_0.6)"), at 2.4 over 1.2 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_2.4_vs_1.2)"); drag per u 1.2 over 0.6 $("$ANALYSE" fmt "%.4f +- %.4f" "$(sget "$T03" lr_drag_per_u_1.2_vs_0.6)")" \
             "$( [ $u = 0.6 ] && echo 'kept for l = 1 (bias about 1 %, README)' || echo 'no: linearity not shown at 2 %')"; }
 done
 # D. D of eq. 16: one 10^3 box with 27 colloids against the 1/L extrapolation of three boxes
@@ -325,7 +253,7 @@ est_row "eq16 D" "plain MSD, one box" "10^3, 27 colloids, 400 t.u. (eq16 reduced
 est_row "eq16 D" "1/L extrapolation of three boxes" "6, 8, 12, 12000 / 3000 / 2000 t.u. (eq16 reduced)" $(pair "$(sget "$EQ16" D_colloid_extrapolated)") \
     $(cat "$EQ16"/runs/box_L*/summary.tsv | rcpu /dev/stdin $OLD) "chi^2/dof $(sget "$EQ16" fit_chi2_dof | cut -f1 | xargs printf '%.1f') (errors scaled by its root)" "kept, with replicas per box"
 # E. the random part as a control variate (tab01's diagnostic, seven spheres at rest, every step sampled)
-echo "fig01 torque	control variate: D + c R (R the torque's zero-mean random part)	10^3, seven spheres at rest (tab01 cv runs)	-	-	-	-	-	variance factor at the best c $(sget "$T01" cv_variance_factor_best | awk -F'\t' '{ printf "%.3f +- %.3f", $1, $2 }'), only with every step sampled (fig01 README: every 2 steps gives a smaller error per CPU second), and R is not in run.h5	no"
+echo "fig01 torque	control variate: D + c R (R the torque's zero-mean random part)	10^3, seven spheres at rest (tab01 cv runs)	-	-	-	-	-	variance factor at the best c $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T01" cv_variance_factor_best)"), only with every step sampled (fig01 README: every 2 steps gives a smaller error per CPU second), and R is not in run.h5	no"
 # F. replicas: the same variance per CPU-hour (plus one equilibration each), the wall time divided
 echo "every quantity	independent replicas, each with its own equilibration	any	-	-	-	-	-	same variance per CPU-hour (each adds its equilibration: 1-2 % at the paper tier's lengths); wall time / number of replicas	kept (wall time)"
 } > "$OUT/estimators.tsv"

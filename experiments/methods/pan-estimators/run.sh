@@ -71,7 +71,7 @@ done
 k=0
 for h in $HOLD; do
     IFS=: read -r Lb u n <<< "$h"; k=$((k + 1))
-    c=$(awk -v l=$Lb 'BEGIN { printf "%.2f", l / 2 }')
+    c=$("$ANALYSE" box-centre $Lb 2)
     dpd_run hold_L${Lb}_u$u twin-sphere.cfg --set walls_start_at_production=false --set "steps=$n" \
         --set "box=[$Lb.0,$Lb.0,$Lb.0]" --set "types.[0].count=$((3 * Lb * Lb * Lb))" \
         --set "types.[0].hold_mean_velocity=[$u,0.0,0.0]" --set measure.every=2 --set measure.blocks=50 \
@@ -92,7 +92,7 @@ done
 # leading order, which scales drag and torque alike)?
 for p in $PAIRBOX; do
     Lb=${p%%:*} n=${p##*:}
-    c=$(awk -v L=$Lb 'BEGIN{printf "%.4f", L/2}') ya=$(awk -v L=$Lb 'BEGIN{printf "%.4f", L/2 - 0.5}') yb=$(awk -v L=$Lb 'BEGIN{printf "%.4f", L/2 + 0.5}')
+    read -r c ya yb < <("$ANALYSE" two-sphere-positions $Lb 1.0)
     dpd_run pairbox_L${Lb}_u0.6 "$TAB03/two-spheres.cfg" --set equilibration=1000 --set "steps=$n" --set "box=[$Lb.0,$Lb.0,$Lb.0]" \
         --set "types.[0].count=$((3 * Lb * Lb * Lb))" --set "types.[0].hold_mean_velocity=[0.6,0.0,0.0]" --set measure.blocks=50 \
         --set "types.[1].positions=([$c,$ya,$c])" --set "types.[2].positions=([$c,$yb,$c])" --set "seed=$((3980 + Lb))"
@@ -106,8 +106,7 @@ windows() {
     local f=$OUT/runs/$1/$2.windows
     [ -f "$f" ] && return 0
     [ -f "$OUT/runs/$1/run.h5" ] || { echo "pan-estimators: runs/$1 has neither $2.windows nor run.h5" >&2; return 1; }
-    h5_series "$1" "$2" | num_awk -v W=$3 '{ x[++n] = $1 } END { for (b = 0; (b + 1) * W <= n; b++) {
-        for (i = 1; i <= W; i++) y[i] = x[b * W + i]; printf "%.10g\n", num_mean(y, W) } }' > "$f.tmp" && mv "$f.tmp" "$f"
+    h5_series "$1" "$2" | "$ANALYSE" window-means $3 > "$f.tmp" && mv "$f.tmp" "$f"
 }
 # pan-2008/tab03's drag per sphere and antisymmetric torque per block (its sphere_blocks)
 pair_blocks() { two_sphere_blocks "$1" 50; }

@@ -83,7 +83,7 @@ bisect() {
         elif ! trial $fam $par $val $seed "$scene" $lo $nmax "$@"; then hi=$lo lo=0
         else
             for ((k = 0; k < it; k++)); do
-                mid=$(awk -v a=$lo -v b=$hi -v f=$fmt 'BEGIN{printf f, sqrt(a*b)}')
+                mid=$("$ANALYSE" geometric-mid $lo $hi $fmt)
                 if trial $fam $par $val $seed "$scene" $mid $nmax "$@"; then lo=$mid; else hi=$mid; fi
             done
         fi
@@ -123,7 +123,7 @@ for H in $HS; do bisect spring_m0 H $H colloid2d-m0.cfg 1e-7 1 $NSTEPS_M0 --set 
 # 5. pairs at r -> 0: two particles at the same position and 1e-12 apart, inertial and m = 0
 coincident_ok=0 coincident_n=0
 for sep in 0 1e-12; do for kind in inertial m0; do
-    x2=$(awk -v d=$sep 'BEGIN{printf "%.15f", 2.0 + d}')
+    x2=$("$ANALYSE" sum-fmt %.15f 2.0 $sep)
     sed "s/@X2@/$x2/" pair.cfg.in > "$OUT/pair.cfg"
     [ $kind = m0 ] && printf 'overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };\n' >> "$OUT/pair.cfg"
     coincident_n=$((coincident_n + 1))

@@ -24,7 +24,7 @@ case $TIER in
            run=(--set equilibration=2000 --set steps=10000); tcafrun=(--set equilibration=1000 --set steps=8000) ;;
 esac
 # body M with its inertia: the octahedron's sites at d = 0.5 from the centre, I = (2/3) M d^2
-body() { echo --set "colloids.mass=$1" --set "colloids.inertia=$(awk -v m="$1" 'BEGIN { printf "%.10g", m / 6 }')"; }
+body() { echo --set "colloids.mass=$1" --set "colloids.inertia=$("$ANALYSE" octahedron-inertia "$1" 0.5)"; }
 rep() { echo --set "pairs.[0].a=$1" --set "pairs.[1].a=$1" --set "pairs.[2].a=$1"; }
 # choice settings: the default (M as given, dt 0.005, rate 0.1, H = 400, d = 0.5) or one varied (issue 37
 # item 5: the spring stiffness H and the octahedron's size d, the two choices that set the colloid's size;
@@ -34,7 +34,7 @@ choice_args() { case $1 in dt0.01) echo --set dt=0.01 --set equilibration=1000 -
                           rate0.003) echo --set shear_rate=0.003 --set equilibration=2000 --set steps=60000 ;;
                           H*) echo "${run[@]}" --set "colloids.H=${1#H}" ;;
                           d*) echo "${run[@]}" --set "colloids.site_distance=${1#d}" \
-                                   --set "colloids.inertia=$(awk -v d="${1#d}" 'BEGIN { printf "%.10g", 4 * d * d }')" ;; esac; }
+                                   --set "colloids.inertia=$("$ANALYSE" octahedron-inertia 6 "${1#d}")" ;; esac; }
 
 # ---- the simulations
 simulations() {

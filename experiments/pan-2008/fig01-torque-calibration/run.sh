@@ -42,7 +42,7 @@ done
 }
 analysis() {
 # the analysis
-T18=$(awk -v m=$MU -v r=$R -v w=$OMEGA 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
+T18=$("$ANALYSE" rotlet-torque $MU $R $OMEGA)
 emit torque_eq18 "$T18" 0
 printf 'gammaC\tgammaS\ttorque\ttorque_se\n' > "$OUT/torque.tsv"
 for run in $RUNS; do
@@ -52,30 +52,25 @@ for run in $RUNS; do
     printf '%s\t%s\t%s\n' "$gC" "$gS" "$(get $name torque_on_colloid_z)" >> "$OUT/torque.tsv"
 done
 # torque ratio to eq. 18 at the calibrated gamma^S_cf = 5.5, gamma^C_cf = 0 (eq. 18 at the run's Omega)
-get gC0.0_gS5.5 torque_on_colloid_z | num_awk -F'\t' -v t=$T18 '{ num_div($1, $2, t, o); print num_row("torque_ratio_gS5.5", o) }' >> "$OUT/summary.tsv"
+"$ANALYSE" div "$(get gC0.0_gS5.5 torque_on_colloid_z)" $T18 torque_ratio_gS5.5 >> "$OUT/summary.tsv"
 # the stronger drive's linearity (paper tier): the torque over eq. 18 at each other Omega, and its
 # ratio to the calibrated run's (1 in Stokes flow)
 for w in $LIN; do
     W=${w%%:*}
-    t=$(awk -v m=$MU -v r=$R -v w=$W 'BEGIN{printf "%.10g", -8*3.141592653589793*m*w*r^3}')
-    get lin_W$W torque_on_colloid_z | num_awk -F'\t' -v t=$t -v W=$W '{ num_div($1, $2, t, o); print num_row("torque_ratio_gS5.5_W" W, o) }' >> "$OUT/summary.tsv"
-    paste <(get . torque_ratio_gS5.5_W$W) <(get . torque_ratio_gS5.5) | num_awk -F'\t' -v W=$W -v W0=$OMEGA '{
-        num_ratio($1, $2, $3, $4, o); print num_row("linearity_W" W "_over_W" W0, o) }' >> "$OUT/summary.tsv"
+    "$ANALYSE" div "$(get lin_W$W torque_on_colloid_z)" "$("$ANALYSE" rotlet-torque $MU $R $W)" torque_ratio_gS5.5_W$W >> "$OUT/summary.tsv"
+    emit linearity_W${W}_over_W$OMEGA "$("$ANALYSE" ratio "$(get . torque_ratio_gS5.5_W$W)" "$(get . torque_ratio_gS5.5)")"
 done
 # slope of the torque against gamma^C_cf at gamma^S_cf = 5.5 (weighted least squares), at the paper's
 # Omega = -0.4: a run at another Omega (the paper tier's -2) scaled by 0.4 / |Omega| (Stokes flow)
-num_awk -F'\t' -v f=$(awk -v w=$OMEGA 'BEGIN { printf "%.10g", 0.4 / (w < 0 ? -w : w) }') 'NR > 1 && $2 == 5.5 { n++; x[n] = $1; y[n] = $3 * f; s[n] = $4 * f }
-    END { num_wline(x, y, s, n, o); printf "torque_slope_gC\t%.10g\t%.4g\n", o["slope"], o["slope_se"] }' \
-    "$OUT/torque.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" torque-slope "$OUT/torque.tsv" $OMEGA >> "$OUT/summary.tsv"
 # the calibrated run's torque noise (reduced and paper tiers, 50 blocks): variance of the mean x
 # production time (torque^2 x time), and the production time at which that noise would give eq. 18's
 # ratio a stderr of 0.5 % (the paper's precision), t (se / 0.005)^2; their stderr that of a variance
 # from 50 blocks, sqrt(2 / 49)
 if [ -n "$(run_steps 0.0:5.5)" ]; then
-    t=$(awk -v n=$(run_steps 0.0:5.5) 'BEGIN { print n * 0.01 }')    # dt = 0.01 (rotating-sphere.cfg)
-    paste <(get . torque_gC0.0_gS5.5) <(get . torque_ratio_gS5.5) | awk -F'\t' -v t=$t '{f = sqrt(2 / 49)
-        v = $2 * $2 * t; printf "torque_noise_gC0.0_gS5.5\t%.4g\t%.2g\n", v, v * f
-        h = t * ($4 / 0.005) * ($4 / 0.005); printf "time_half_percent_gS5.5\t%.4g\t%.2g\n", h, h * f}' >> "$OUT/summary.tsv"
+    t=$("$ANALYSE" time-of-steps $(run_steps 0.0:5.5))    # dt = 0.01 (rotating-sphere.cfg)
+    "$ANALYSE" noise-row torque_noise_gC0.0_gS5.5 "$(get . torque_gC0.0_gS5.5 | cut -f2)" $t 49 >> "$OUT/summary.tsv"
+    emit time_half_percent_gS5.5 "$("$ANALYSE" half-percent-time "$(get . torque_ratio_gS5.5 | cut -f2)" $t 49)"
 fi
 # what paper.md says in words (issue 40 item 7): the calibrated torque's deviation from eq. 18 and its
 # ratio's difference from the paper's (bands.tsv)

@@ -29,9 +29,7 @@ done
 analysis() {
 # the analysis
 # eq. 19: F_ext = 6 pi mu u R with F_ext = N_f g; Hasimoto: F = 6 pi mu u R / K(phi)
-read -r U19 UH PHI < <(awk -v m=$MU -v r=$R -v n=$NF -v g=$G -v L=$L 'BEGIN{pi = 3.141592653589793
-    u19 = n*g/(6*pi*m*r); phi = 4*pi*r^3/(3*L^3)
-    printf "%.10g %.10g %.6g\n", u19, u19*(1 - 1.7601*phi^(1/3) + phi - 1.5593*phi^2), phi}')
+read -r U19 UH PHI < <("$ANALYSE" drag-theory $MU $R $NF $G $L)
 emit u_eq19 "$U19" 0
 emit u_hasimoto "$UH" 0
 emit phi "$PHI" 0
@@ -43,22 +41,17 @@ for run in $RUNS; do
     # Its error: the larger of the block estimate and the Ornstein-Uhlenbeck value sqrt(2 kBT / (zeta T))
     # of the fluid's total momentum relaxing through the colloid (zeta = N_f g / u), because the
     # momentum's correlation time N_f / zeta ~ 160 is not short against the blocks.
-    line=$(get $name mean_velocity_fluid_x | awk -F'\t' -v n=$NF -v g=$G -v T="$(awk -v s=$st 'BEGIN{print s*0.01}')" '{
-        ou = sqrt(2 * $1 / (n * g * T)); se = $2 > ou ? $2 : ou
-        printf "%.10g\t%.4g\t%.4g\t%.4g", $1, se, $2, ou }')
+    line=$("$ANALYSE" superficial-velocity "$(get $name mean_velocity_fluid_x)" $NF $G $st)
     printf '%s\t%s\t%s\n' "$gC" "$line" "$(get $name force_on_colloid_x)" >> "$OUT/superficial.tsv"
-    echo "$line" | awk -F'\t' -v q="u_gC$gC" '{printf "%s\t%s\t%s\n", q, $1, $2}' >> "$OUT/summary.tsv"
+    emit "u_gC$gC" "$(cut -f1,2 <<< "$line")"
 done
 # ratio of the calibrated point to eq. 19 and to Hasimoto's value
-num_awk -F'\t' -v a=$U19 -v h=$UH '$1 == "u_gC3.5" { num_div($2, $3, a, o); print num_row("u_ratio_eq19_gC3.5", o)
-    num_div($2, $3, h, o); print num_row("u_ratio_hasimoto_gC3.5", o) }' \
-    "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" fig02-ratios "$OUT/summary.tsv" $U19 $UH >> "$OUT/summary.tsv"
 # how much the blocks underestimate u's error: the Ornstein-Uhlenbeck error over the blocks' (per run);
 # its stderr that of the blocks' error from the scene's 20 blocks, 1 / sqrt(2 x 19) relative (taken as
 # if the blocks were independent: their correlation is what the ratio shows), with half of u's
 # relative error, the Ornstein-Uhlenbeck error's, in quadrature
-num_awk -F'\t' 'NR > 1 { r = $5 / $4; num_set(o, r, r * sqrt(1 / 38 + num_sq(0.5 * $3 / $2)))
-    print num_row("u_se_ou_over_blocks_gC" $1, o) }' "$OUT/superficial.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" ou-over-blocks "$OUT/superficial.tsv" >> "$OUT/summary.tsv"
 # what paper.md says in words (issue 40 item 7): Hasimoto's u against eq. 19's, and the calibrated u
 # against the paper's (bands.tsv)
 emit_pct u_hasimoto_pct_from_eq19 "$UH" "$U19"

@@ -14,8 +14,7 @@ esac
 # the simulations: one chain of N spheres per N
 simulations() {
 for N in $NS; do
-    pos=$(awk -v n=$N -v R=$R -v c=$C 'BEGIN{ s = "("; for (k = 0; k < n; k++)
-        s = s sprintf("%s[%.4f,%.4f,%.4f]", k ? "," : "", c + (k - (n - 1)/2) * 2*R, c, c); print s ")" }')
+    pos=$("$ANALYSE" chain-positions $N $R $C)
     dpd_run N$N chain.cfg "${len[@]}" --set "types.[1].positions=$pos" --set "types.[1].spin=[$OMEGA,0.0,0.0]" \
         --set "seed=$((2400 + N))"
 done
@@ -24,15 +23,12 @@ analysis() {
 # the analysis
 printf 'N\tTs\tTs_se\ttorque\ttorque_se\n' > "$OUT/shape_factor.tsv"
 for N in $NS; do
-    Ts=$(get N$N torque_on_chain_x | awk -F'\t' -v m=$MU -v R=$R -v w=$OMEGA -v n=$N '{
-        d = -8*3.141592653589793*m*w*n*R^3; printf "%.10g\t%.4g", $1/d, $2/d }')
+    Ts=$("$ANALYSE" chain-shape-factor "$(get N$N torque_on_chain_x)" $MU $R $OMEGA $N)
     emit "Ts_N$N" $Ts
     printf '%s\t%s\t%s\n' $N "$Ts" "$(get N$N torque_on_chain_x)" >> "$OUT/shape_factor.tsv"
 done
 # the fall with N: (T_s(1) - T_s(8)) in units of its standard error
-num_awk -F'\t' '$1 == "Ts_N1" { a = $2; sa = $3 } $1 == "Ts_N8" { b = $2; sb = $3 }
-    END { num_diff(a, sa, b, sb, o); printf "%s\nTs_drop_N8_sigmas\t%.4g\t0\n", num_row("Ts_drop_N8", o), o["v"] / o["se"] }' \
-    "$OUT/summary.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" diff-sigmas "$OUT/summary.tsv" Ts_N1 Ts_N8 Ts_drop_N8 >> "$OUT/summary.tsv"
 # what paper.md says in words (issue 40 item 7): the single sphere's T_s against eq. 18's 1
 emit_pct Ts_N1_pct_from_eq18 "$(get . Ts_N1)" 1
 }

@@ -24,8 +24,9 @@ for r in rpf rpf_dt0.01; do
     "$DPD" fit-poiseuille "$OUT/runs/$r/profile_blocks.tsv" --blocks --force $G > "$f"
     "$DPD" fit-poiseuille "$OUT/runs/$r/profile.tsv" --force $G | grep '^fit_chi2' >> "$f"
 done
-awk -F'\t' 'NR > 1' "$OUT/fit.tsv" >> "$OUT/summary.tsv"
-awk -F'\t' 'NR > 1 { print $1 "_dt0.01\t" $2 "\t" $3 }' "$OUT/fit_dt0.01.tsv" >> "$OUT/summary.tsv"
+# the fits' rows as summary rows (those at dt = 0.01 named so)
+"$ANALYSE" table-rows "$OUT/fit.tsv" >> "$OUT/summary.tsv"
+"$ANALYSE" table-rows "$OUT/fit_dt0.01.tsv" _dt0.01 >> "$OUT/summary.tsv"
 emit_from rpf rotational_temperature rotational_temperature
 emit_from rpf_dt0.01 rotational_temperature rotational_temperature_dt0.01
 cp "$OUT/runs/rpf/profile.tsv" "$OUT/profile.tsv"

@@ -33,7 +33,7 @@ run_seed() { case $1 in row1r2) echo 9011;; *) echo $((9000 + ${1#row}));; esac;
 simulations() {
 for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
-    V=$(awk -v c=$C 'BEGIN{printf "%.6g", c * 8.0}')    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
+    V=$("$ANALYSE" times6 $C 8.0)    # v = (curl/2) H: shear rate 2v/H = 2 curl/2
     len=(); [ -n "$(row_steps $r)" ] && len=(--set "steps=$(row_steps $r)")
     for n in $(row_runs $r); do
         dpd_run $n couette-sphere.cfg "${tier[@]}" "${len[@]}" --set "types.[1].velocity=[-$V,0.0,0.0]" \
@@ -53,7 +53,7 @@ fi
 }
 # mean_runs: the equal-weight mean of "value<TAB>stderr" lines (replicas of equal length), stderr
 # sqrt(sum se^2) / n
-mean_runs() { num_awk -F'\t' '{n++; x[n] = $1; e[n] = $2} END{num_set(o, num_mean(x, n), num_quad(e, n) / n); printf "%s", num_pair(o)}'; }
+mean_runs() { "$ANALYSE" mean-runs; }
 analysis() {
 # the analysis
 printf 'row\tOmega\tcurl2_nominal\tcurl2_measured\tcurl2_se\ttorque\ttorque_se\ttheory\tpaper\tverdict@\n' > "$OUT/table1.tsv"
@@ -61,15 +61,15 @@ for r in $ROWS; do
     W=$(row_omega $r) C=$(row_curl $r)
     # undisturbed vorticity: slope of the plane-averaged v_x(z) over the central 4 rc, fitted per
     # block (the bins of one profile share the flow's fluctuations: not independent)
-    c2=$(for n in $(row_runs $r); do block_slope $n 3.0:7.0; done | mean_runs | num_awk -F'\t' '{ num_div($1, $2, 2, o); printf "%s", num_pair(o) }')
+    c2=$("$ANALYSE" div "$(for n in $(row_runs $r); do block_slope $n 3.0:7.0; done | mean_runs)" 2)
     emit "curl2_row$r" $c2
     T=$(for n in $(row_runs $r); do get $n torque_on_colloid_y; done | mean_runs)
     # each run's own torque, for the replicas' agreement (README)
     [ "$(row_runs $r)" = row$r ] || for n in $(row_runs $r); do emit "torque_run_$n" $(get $n torque_on_colloid_y); done
     emit "torque_row$r" $T
-    the=$(echo "$c2" | awk -F'\t' -v m=$MU -v R=$R -v w=$W '{printf "%.10g", 8*3.141592653589793*m*R^3*($1 - w)}')
+    the=$("$ANALYSE" couette-torque $MU $R "$(cut -f1 <<< "$c2")" $W)
     emit "theory_row$r" "$the" 0
-    echo "$T" | num_awk -F'\t' -v t=$the -v r=$r '{ num_div($1, $2, t, o); print num_row("torque_ratio_row" r, o) }' >> "$OUT/summary.tsv"
+    "$ANALYSE" div "$T" $the torque_ratio_row$r >> "$OUT/summary.tsv"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\ttorque_ratio_row%s\n' $r $W $C "$c2" "$T" "$the" "$(paper_T $r)" $r >> "$OUT/table1.tsv"
     cp "$OUT/runs/row$r/profile.tsv" "$OUT/profile_row$r.tsv"
 done
@@ -80,10 +80,8 @@ done
 if [ "$TIER" != quick ]; then
     for p in 1:2 3:4; do
         a=${p%:*} b=${p#*:}
-        paste <(get . torque_row$a) <(get . curl2_row$a) <(get . torque_row$b) <(get . curl2_row$b) |
-            awk -F'\t' -v wa=$(row_omega $a) -v wb=$(row_omega $b) -v n=torque_per_drive_row${b}_vs_row$a '{
-                x = ($5 / ($7 - wb)) / ($1 / ($3 - wa))
-                printf "%s\t%.10g\t%.4g\n", n, x, x * sqrt(($2 / $1)^2 + ($6 / $5)^2)}' >> "$OUT/summary.tsv"
+        "$ANALYSE" per-drive-ratio "$(get . torque_row$a)" "$(get . curl2_row$a)" $(row_omega $a) \
+            "$(get . torque_row$b)" "$(get . curl2_row$b)" $(row_omega $b) torque_per_drive_row${b}_vs_row$a >> "$OUT/summary.tsv"
     done
 fi
 # the control-variate diagnostic: one "D R" line per run, sphere and component; the intensities
@@ -91,22 +89,9 @@ fi
 # variance factor 1 - rho^2 of the best D + c R (stderrs: a variance's sqrt(2 / (n - 1)), and
 # (1 - rho^2) / sqrt(n - 3) for rho)
 if [ "$TIER" = reduced ]; then
-    for i in $(seq 1 $CV_RUNS); do
-        f=$OUT/runs/cv$(printf %02d $i)/summary.tsv
-        awk -F'\t' '$1 ~ /^torque_on_s[0-9]_[xyz]$/ {k = substr($1, 11); d[k] = $2}
-            $1 ~ /^torque_random_on_s[0-9]_[xyz]$/ {k = substr($1, 18); r[k] = $2}
-            END {for (k in d) print d[k] "\t" r[k]}' "$f"
-    done | LC_ALL=C sort > "$OUT/random_part_cv.tsv"
-    awk -F'\t' -v t=10 'function q(name, v, se) {printf "%s\t%.6g\t%.3g\n", name, v, se}
-        {n++; d += $1; r += $2; dd += $1 * $1; rr += $2 * $2; dr += $1 * $2}
-        END {md = d / n; mr = r / n; vd = (dd - n * md * md) / (n - 1); vr = (rr - n * mr * mr) / (n - 1)
-             c = (dr - n * md * mr) / (n - 1); vt = vd + vr + 2 * c; rho = c / sqrt(vd * vr); f = sqrt(2 / (n - 1))
-             q("cv_samples", n, 0)
-             q("cv_torque_mean", md, sqrt(vd / n)); q("cv_random_mean", mr, sqrt(vr / n))
-             q("cv_noise_D", vd * t, vd * t * f); q("cv_noise_R", vr * t, vr * t * f); q("cv_noise_total", vt * t, vt * t * f)
-             q("cv_rho", rho, (1 - rho * rho) / sqrt(n - 3)); q("cv_c_best", -c / vr, sqrt((1 - rho * rho) * vd / vr / (n - 3)))
-             q("cv_variance_factor_best", 1 - rho * rho, 2 * (rho < 0 ? -rho : rho) * (1 - rho * rho) / sqrt(n - 3))}' \
-        "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
+    cvs=(); for i in $(seq 1 $CV_RUNS); do cvs+=("$OUT/runs/cv$(printf %02d $i)/summary.tsv"); done
+    "$ANALYSE" cv-pairs "${cvs[@]}" > "$OUT/random_part_cv.tsv"
+    "$ANALYSE" control-variate "$OUT/random_part_cv.tsv" >> "$OUT/summary.tsv"
 fi
 # the torque's noise per row (reduced and paper tiers, 50 blocks per run): variance of the row's mean x
 # its production time (torque^2 x time, all its runs; dt = 0.01, couette-sphere.cfg), the number that
@@ -115,8 +100,7 @@ fi
 if [ "$TIER" != quick ]; then
     for r in $ROWS; do
         k=$(row_runs $r | wc -w)
-        get . torque_row$r | awk -F'\t' -v t=$(( $(row_steps $r) * k / 100 )) -v k=$k -v r=$r '{v = $2 * $2 * t
-            printf "torque_noise_row%s\t%.4g\t%.2g\n", r, v, v * sqrt(2 / (k * 49))}' >> "$OUT/summary.tsv"
+        "$ANALYSE" noise-row torque_noise_row$r "$(get . torque_row$r | cut -f2)" $(( $(row_steps $r) * k / 100 )) $((k * 49)) >> "$OUT/summary.tsv"
     done
 fi
 # what paper.md says in words (issue 40 item 7): each row's measured curl/2 against its nominal drive,

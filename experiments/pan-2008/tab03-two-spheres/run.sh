@@ -28,12 +28,11 @@ run_seed() { case $1 in row?r*) echo $((2300 + 10 * ${1##*r} + ${1:3:1}));; *) e
 row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
 paper_T()  { case $1 in 1) echo 0.0253;; 2) echo 0.0451;; 3) echo 0.113;; esac; }
-NF=$(awk -v L=$L 'BEGIN{printf "%d", 3*L^3}')
+NF=$("$ANALYSE" fluid-count $L)
 # the simulations: one per row, the spheres at y = L/2 -+ l/2 on the line x = z = L/2
 simulations() {
 for r in $ROWS; do
-    l=$(row_l $r) c=$(awk -v L=$L 'BEGIN{printf "%.4f", L/2}')
-    ya=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$l 'BEGIN{printf "%.4f", c + l/2}')
+    l=$(row_l $r); read -r c ya yb < <("$ANALYSE" two-sphere-positions $L $l)
     rl=(); [ "$TIER" = paper ] && rl=(--set "steps=$(paper_steps $r)")
     for n in $(row_runs $r); do
         dpd_run $n two-spheres.cfg "${len[@]}" "${rl[@]}" --set "box=[$L.0,$L.0,$L.0]" --set "types.[0].count=$NF" \
@@ -51,8 +50,7 @@ done
 LR_L=12 LR_l=1.0 LR_B=50 LR_U="0.6 1.2 2.4"
 lr_steps() { case $1 in 0.6) echo 300000;; 1.2) echo 150000;; 2.4) echo 50000;; esac; }
 if [ "$TIER" = reduced ]; then
-    nf=$(awk -v L=$LR_L 'BEGIN{printf "%d", 3*L^3}') c=$(awk -v L=$LR_L 'BEGIN{printf "%.4f", L/2}')
-    ya=$(awk -v c=$c -v l=$LR_l 'BEGIN{printf "%.4f", c - l/2}') yb=$(awk -v c=$c -v l=$LR_l 'BEGIN{printf "%.4f", c + l/2}')
+    nf=$("$ANALYSE" fluid-count $LR_L); read -r c ya yb < <("$ANALYSE" two-sphere-positions $LR_L $LR_l)
     i=0
     for u in $LR_U; do
         i=$((i + 1))
@@ -65,21 +63,14 @@ fi
 }
 analysis() {
 # the analysis
-eq23() {  # l u -> F_the T_the (eq. 23)
-    awk -v l=$1 -v u=$2 -v m=$MU -v R=$R 'BEGIN{pi = 3.141592653589793; q = R/l
-        F = 6*pi*m*R*u * (1 - 3*q/4 + 9*q^2/16 - 59*q^3/64 + 465*q^4/256 - 15813*q^5/7168)
-        T = 8*pi*m*R^3*u/l * (3*q/4 - 9*q^2/16 + 27*q^3/64 - 273*q^4/256 + 1683*q^5/1024)
-        printf "%.10g %.10g\n", F, T}'
-}
+eq23() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R; }  # l u -> F_the T_the (eq. 23)
 # sphere_blocks NAME [BLOCKS]: the two spheres' per-block drag and torque, B (or BLOCKS) blocks
 # (tools/lib/exp.sh two_sphere_blocks)
 sphere_blocks() { two_sphere_blocks "$1" "${2:-$B}"; }
 # row_blocks R: the sphere_blocks of row R's runs, one header
 row_blocks() { local n; echo "block	drag	torque"; for n in $(row_runs $1); do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
-column_mean() {
-    num_awk -F'\t' -v c=$2 'NR > 1 { x[++n] = $c } END { num_mean_se(x, n, o); printf "%s", num_pair(o) }' "$1"
-}
+column_mean() { "$ANALYSE" column-mean "$1" $2; }
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
 printf 'l\tu\tF paper\tF ours\tF eq. 23\tF verdict@\tT paper\tT ours\tT eq. 23\tT verdict@\n' > "$OUT/table3.tsv"
 for r in $ROWS; do
@@ -93,17 +84,15 @@ for r in $ROWS; do
     read -r Fth Tth < <(eq23 $l $U)
     emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$u"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $l "$u" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table3.data.tsv"
-    printf '%s\t%s\t%s\t%s\t%s\t%s\n' $l "$u" "$F" "$T" $Fth $Tth | awk -F'\t' -v r=$r -v pF=$(paper_F $r) -v pT=$(paper_T $r) '{
-        printf "%s\t%.2f\t%s\t%.3f +- %.3f\t%.3f\tdrag_ratio_row%s\t%s\t%.4f +- %.4f\t%.4f\ttorque_ratio_row%s\n",
-               $1, $2, pF, $4, $5, $8, r, pT, $6, $7, $9, r }' >> "$OUT/table3.tsv"
+    "$ANALYSE" tab03-row $r $l "$u" "$F" "$T" $Fth $Tth $(paper_F $r) $(paper_T $r) >> "$OUT/table3.tsv"
 done
 # the torque's noise: variance of the mean x production time (torque^2 x time), the quantity that
 # sets every projected run length (README); equilibration 5000 steps (reduced), 1500 (quick scene)
 eq_steps() { case $TIER in reduced|paper) echo 5000;; *) echo 1500;; esac; }
 # (its stderr: that of a variance from n blocks, sqrt(2 / (n - 1)))
-noise() { awk -v s=$1 -v t=$2 -v n=$3 'BEGIN{v = s * s * t; printf "%.4g\t%.2g", v, v * sqrt(2 / (n - 1))}'; }
+noise() { "$ANALYSE" noise-row x $1 $2 $(($3 - 1)) | cut -f2,3; }
 for r in $ROWS; do
-    t=$(for n in $(row_runs $r); do get $n steps; done | awk -F'\t' -v e=$(eq_steps) '{ s += ($1 - e) * 0.01 } END { print s }')
+    t=$(for n in $(row_runs $r); do get $n steps; done | "$ANALYSE" production-time $(eq_steps))
     emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $((B * $(row_runs $r | wc -w))))
 done
 # the harder drive's linear response (reduced tier): the antisymmetric torque and the drag per sphere
@@ -118,16 +107,13 @@ if [ "$TIER" = reduced ]; then
         emit "lr_drag_u$u" $F
         emit "lr_torque_u$u" $T
         emit "lr_torque_theory_u$u" "$Tth" 0
-        noise=$(noise $(echo "$T" | cut -f2) $(awk -v n=$(lr_steps $u) 'BEGIN{print n * 0.01}') $LR_B)
+        noise=$(noise $(echo "$T" | cut -f2) $("$ANALYSE" time-of-steps $(lr_steps $u)) $LR_B)
         emit "lr_torque_noise_u$u" $noise
         emit "lr_temperature_u$u" $(get lr_u$u temperature)
         printf '%s\t%s\t%s\t%s\t%s\t%s\n' $u "$F" "$T" "$Tth" "$noise" "$(get lr_u$u temperature)" >> "$OUT/linear_response.tsv"
     done
     # per_u_ratio Q U1 U2 -> "ratio<TAB>stderr" of (Q(U2) / U2) / (Q(U1) / U1), relative errors in quadrature
-    per_u_ratio() {
-        paste <(get . "lr_$1_u$2") <(get . "lr_$1_u$3") | awk -F'\t' -v a=$2 -v b=$3 '{x = ($3 / b) / ($1 / a)
-            printf "%.10g\t%.4g", x, (x < 0 ? -x : x) * sqrt(($2 / $1)^2 + ($4 / $3)^2)}'
-    }
+    per_u_ratio() { "$ANALYSE" per-unit-ratio "$(get . "lr_$1_u$2")" $2 "$(get . "lr_$1_u$3")" $3; }
     for q in torque drag; do
         emit "lr_${q}_per_u_1.2_vs_0.6" $(per_u_ratio $q 0.6 1.2)
         emit "lr_${q}_per_u_2.4_vs_1.2" $(per_u_ratio $q 1.2 2.4)
@@ -140,23 +126,17 @@ fi
 # CPU-hours at the row's measured 30^3 cost per time unit; the remaining hours count the 600 time
 # units run at u = 0.3 as 600 (0.3 / u)^2 at u. Their stderr: the noise's.
 if [ "$TIER" = reduced ]; then
-    lin=$(get . lr_torque_per_u_1.2_vs_0.6 | awk -F'\t' '{d = $1 - 1; d = d < 0 ? -d : d; print (d <= 0.10 + 2 * $2 && 2 * $2 <= 0.20) ? 1 : 0}')
+    lin=$("$ANALYSE" linear-decision "$(get . lr_torque_per_u_1.2_vs_0.6)")
     emit projection_linear_response "$lin" 0
     for r in $ROWS; do
         up=$U; [ "$lin" = 1 ] && { [ $r = 3 ] && up=1.2 || up=0.6; }
-        paste <(get . torque_noise_row$r) <(get . torque_theory_row$r) <(get row$r cpu_seconds) <(get row$r steps) |
-            awk -F'\t' -v u=$up -v u0=$U -v r=$r '{T = $3 * u / u0; t = $1 / (0.1 * T)^2; c = $5 / ($7 * 0.01)
-                f = $2 / $1; h = t * c / 3600; rem = (t - 600 * (u0 / u)^2) * c / 3600
-                printf "projection_u_row%s\t%s\t0\n", r, u
-                printf "projection_time_row%s\t%.4g\t%.2g\n", r, t, t * f
-                printf "projection_cpu_hours_row%s\t%.4g\t%.2g\n", r, h, h * f
-                printf "projection_cpu_hours_remaining_row%s\t%.4g\t%.2g\n", r, rem, rem * f
-                t3 = $1 / (0.1 * $3)^2; printf "projection_cpu_hours_u0.3_row%s\t%.4g\t%.2g\n", r, t3 * c / 3600, t3 * c / 3600 * f}' >> "$OUT/summary.tsv"
+        "$ANALYSE" torque-projection $r $up $U "$(get . torque_noise_row$r)" "$(get . torque_theory_row$r | cut -f1)" \
+            "$(get row$r cpu_seconds)" "$(get row$r steps)" >> "$OUT/summary.tsv"
     done
 fi
 # the linear-response ladder's cost (reduced tier): the CPU seconds of its three runs (a count: no error)
 if [ "$TIER" = reduced ]; then
-    for u in $LR_U; do get lr_u$u cpu_seconds; done | awk -F'\t' '{s += $1} END {printf "lr_cpu_seconds\t%.10g\t0\n", s}' >> "$OUT/summary.tsv"
+    emit lr_cpu_seconds "$(for u in $LR_U; do get lr_u$u cpu_seconds; done | "$ANALYSE" sum-first %.10g)" 0
 fi
 # what paper.md says in words (issue 40 item 7): each drag's deviation from eq. 23, and row 2's drag
 # over row 1's

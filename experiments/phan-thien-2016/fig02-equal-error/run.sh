@@ -37,5 +37,9 @@ for solver in $solvers; do
 done
 # interpolate each solver to E*; then the ratios of issue 3
 "$ANALYSE" equal-error "$OUT/ladder.tsv" "$ESTAR" >> "$OUT/summary.tsv"
+# what paper.md says in words (issue 40 item 7): the iterations at E* of scheme 2 over PCG's, and of
+# PCG over the two-level PCG's
+emit_ratio iteration_ratio_scheme2_paper_pcg . iterations_at_Estar_scheme2_paper . iterations_at_Estar_pcg
+emit_ratio iteration_ratio_pcg_pcg_2level . iterations_at_Estar_pcg . iterations_at_Estar_pcg_2level
 }
 experiment

@@ -69,5 +69,10 @@ analysis_2() {
 emit_from le viscosity eta_lees_edwards_bulk_density
 # the LE density is held at the measured mean: its error enters through d eta / d rho ~ 2 eta / rho
 emit eta_wall_minus_lees_edwards $("$ANALYSE" wall-minus-lees-edwards "$OUT/summary.tsv" $rho $rhose "$(get le viscosity)")
+# what paper.md says in words (issue 40 item 7): the fluid's slip at each wall over the walls' speed
+# 10 (couette.cfg), and the wall-driven viscosity's difference from the Lees-Edwards one in standard
+# errors
+"$ANALYSE" div "$(get . wall_slip)" 10 wall_slip_over_wall_speed >> "$OUT/summary.tsv"
+"$ANALYSE" sigmas eta_wall_minus_lees_edwards_sigmas "$(get . eta_wall_minus_lees_edwards)" 0 >> "$OUT/summary.tsv"
 }
 experiment

@@ -38,5 +38,7 @@ for m in m0 m1; do
     emit_mean "temperature_$m" temperature "${runs[@]}"
 done
 emit_ratio t90_ratio_m1_m0 . t90_m1 . t90_m0
+# what paper.md says in words (issue 40 item 7): t90 at m = 0 in time steps (dt = 0.01, m0.cfg)
+"$ANALYSE" div "$(get . t90_m0)" 0.01 t90_m0_steps >> "$OUT/summary.tsv"
 }
 experiment

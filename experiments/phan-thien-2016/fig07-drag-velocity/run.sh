@@ -6,6 +6,8 @@
 # radius measured in fig06-cylinder-exclusion (same tier).
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any phan-thien-2016/fig06-cylinder-exclusion
+# fig03's committed Couette viscosities, read against this experiment's Lees-Edwards solvent (paper.md)
+needs any phan-thien-2016/fig03-couette-profile@paper
 scene=$DPD_ROOT/experiments/phan-thien-2016/fig06-cylinder-exclusion/cylinder.cfg
 case $TIER in
     quick) Ps="0.1 0.5 1.0"; tier=(--set equilibration=500 --set steps=8000); shear=(--set equilibration=300 --set steps=3000) ;;
@@ -34,5 +36,12 @@ for P in $Ps; do
     drag=$(get "P$P" force_on_cylinder_x) U=$(get "P$P" mean_velocity_fluid_x) eta=$(get shear viscosity)
     "$ANALYSE" fig07-drag "$P" $nfluid $h "$drag" "$U" "$eta" "$a" >> "$OUT/summary.tsv" 2>> "$OUT/drag.tsv"
 done
+# what paper.md says in words (issue 40 item 7): the drive's effect on the fluid's velocity, and
+# fig03's wall-driven eta and its Lees-Edwards eta at the channel's bulk density against this
+# solvent's eta (density 4) in per cent
+emit_ratio velocity_ratio_P1.0_P0.1 . velocity_P1.0 . velocity_P0.1
+fig03=$(upstream phan-thien-2016/fig03-couette-profile@paper)/summary.tsv
+emit_pct fig03_eta_pct_from_eta_solvent "$("$ANALYSE" lookup "$fig03" eta)" "$(get . eta_solvent)"
+emit_pct fig03_eta_lees_edwards_bulk_density_pct_from_eta_solvent "$("$ANALYSE" lookup "$fig03" eta_lees_edwards_bulk_density)" "$(get . eta_solvent)"
 }
 experiment

@@ -26,5 +26,8 @@ emit_from colloid mean_velocity_solvent_y
 # solvent size: lower edge of the first RDF bin (dr = 0.01) where g reaches 0.001
 "$ANALYSE" solvent-radius "$OUT/runs/colloid/rdf.tsv" >> "$OUT/summary.tsv"
 for t in rdf msd colloid_msd colloid_around; do cp "$OUT/runs/colloid/$t.tsv" "$OUT/$t.tsv"; done
+# what paper.md says in words (issue 40 item 7): the springs' rms extension over the sides' rest
+# length r* = (a + H r_bar) / (a + H) = 0.2636 (README)
+"$ANALYSE" div "$(get . colloid_spring_extension_rms)" 0.2636 colloid_spring_extension_rms_over_rest_length >> "$OUT/summary.tsv"
 }
 experiment

@@ -32,5 +32,9 @@ done
 "$ANALYSE" slope-rows "$OUT/fit.tsv" eta_r_slope >> "$OUT/summary.tsv"
 # the spring stress at the most concentrated suspension (the paper: oscillatory, zero mean)
 emit_from k8 viscosity_spring eta_spring_k8
+# what paper.md says in words (issue 40 item 7): the slope's distance from Brady's 2 in standard
+# errors, and the suspension's viscosity above the solvent's at k = 8
+"$ANALYSE" sigmas eta_r_slope_sigmas_from_2 "$(get . eta_r_slope)" 2 >> "$OUT/summary.tsv"
+emit_minus eta_k8_minus_eta_solvent "$(get . eta_k8)" "$(get . eta_solvent)"
 }
 experiment

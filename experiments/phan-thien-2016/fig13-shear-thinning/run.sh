@@ -41,5 +41,8 @@ emit_ratio solvent_thinning_ratio "k0_rate$lo" viscosity "k0_rate$hi" viscosity
 "$ANALYSE" significance "$OUT/summary.tsv" thinning_ratio thinning_significance > "$OUT/.rows"
 cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
 "$ANALYSE" relative-thinning "$OUT/thinning.tsv" $lo $hi >> "$OUT/summary.tsv"
+# what paper.md says in words (issue 40 item 7): the suspension's thinning ratio against the
+# solvent's, in standard errors
+"$ANALYSE" sigmas thinning_ratio_sigmas_from_solvent "$(get . thinning_ratio)" "$(get . solvent_thinning_ratio)" >> "$OUT/summary.tsv"
 }
 experiment

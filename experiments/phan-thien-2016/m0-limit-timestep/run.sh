@@ -10,8 +10,10 @@ case $TIER in
     quick) T=4 TEQ=1 masses="0.3 0.1" dts="0.005 0.01 0.05" ;;
     paper) T=10 TEQ=2 masses="0.3 0.1 0.03" dts="0.005 0.01 0.02 0.05 0.1" ;;
 esac
+# fig03's committed m = 0 shear rate, the limit the inertial runs approach (paper.md)
+needs any phan-thien-2016/fig03-couette-profile@paper
 od=../fig03-couette-profile/couette.cfg
-nsteps() { awk -v t=$1 -v dt=$2 'BEGIN{printf "%d", t/dt + 0.5}'; }
+nsteps() { "$ANALYSE" steps-for $1 $2; }
 # analyse NAME PREFIX: shear rate (blocks' bulk slopes), viscosity from the wall force, bulk density deviation
 analyse() {
     local p=$OUT/runs/$1/profile.tsv g gse tau tause eta etase
@@ -21,19 +23,19 @@ analyse() {
     emit "density_bulk_max_rel_dev_$2" $(max_rel_dev "$p" 2:10)
     emit_from $1 temperature "temperature_$2"
 }
-mdt() { awk -v m=$1 'BEGIN{printf "%.6g", m/30}'; }   # the time step of the inertial run at mass m
+mdt() { "$ANALYSE" quotient6 $1 30; }   # the time step of the inertial run at mass m
 # the simulations: 1. the m = 0 solve and the inertial runs at decreasing m; 2. the m = 0 time steps
 simulations() {
 dpd_run m0 $od --set measure.profile.per_block=true --set dt=0.01 --set equilibration=$(nsteps $TEQ 0.01) --set steps=$(nsteps $T 0.01)
 for m in $masses; do
     dt=$(mdt $m)
-    every=$(awk -v dt=$dt 'BEGIN{e=int(0.05/dt+0.5); printf "%d", e<1?1:e}')
+    every=$("$ANALYSE" sample-every 0.05 $dt)
     dpd_run m$m inertial.cfg --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
         --set measure.every=$every $(for t in 0 1 2 3 4; do printf -- '--set types.[%d].mass=%s ' $t $m; done)
 done
 for dt in $dts; do
     dpd_run dt$dt $od --set measure.profile.per_block=true --set dt=$dt --set equilibration=$(nsteps $TEQ $dt) --set steps=$(nsteps $T $dt) \
-        --set measure.every=$(awk -v dt=$dt 'BEGIN{e=int(0.1/dt+0.5); printf "%d", e<1?1:e}') --set measure.blocks=10
+        --set measure.every=$("$ANALYSE" sample-every 0.1 $dt) --set measure.blocks=10
 done
 }
 analysis() {
@@ -54,5 +56,16 @@ printf 'dt\tshear_rate\tshear_rate_se\teta\teta_se\tdensity_dev\tsound\n' > "$OU
 for dt in $dts; do analyse dt$dt dt$dt; done
 "$ANALYSE" dt-scan "$OUT/summary.tsv" "$dts" "$OUT/dt-scan.tsv" > "$OUT/.rows"
 cat "$OUT/.rows" >> "$OUT/summary.tsv"; rm "$OUT/.rows"
+# what paper.md says in words (issue 40 item 7): the largest sound m = 0 step over the inertial
+# step 0.01; at the paper tier, the smallest mass's shear rate against fig03's m = 0 one and the
+# viscosity at dt = 0.1 against dt = 0.005 (in standard errors and in per cent)
+"$ANALYSE" div "$(get . dt_max_sound)" 0.01 dt_max_sound_over_0.01 >> "$OUT/summary.tsv"
+if [ "$TIER" = paper ]; then
+    fig03=$(upstream phan-thien-2016/fig03-couette-profile@paper)/summary.tsv
+    "$ANALYSE" sigmas shear_rate_m0.03_sigmas_from_m0 "$(get . shear_rate_m0.03)" "$("$ANALYSE" lookup "$fig03" shear_rate)" >> "$OUT/summary.tsv"
+    emit_pct shear_rate_m0.03_pct_from_m0 "$(get . shear_rate_m0.03)" "$("$ANALYSE" lookup "$fig03" shear_rate)"
+    "$ANALYSE" sigmas eta_dt0.1_sigmas_from_dt0.005 "$(get . eta_dt0.1)" "$(get . eta_dt0.005)" >> "$OUT/summary.tsv"
+    emit_pct eta_dt0.1_pct_from_dt0.005 "$(get . eta_dt0.1)" "$(get . eta_dt0.005)"
+fi
 }
 experiment
