@@ -1,7 +1,7 @@
 #!/bin/bash
 # run-tests.sh BIN... - run cmocka test binaries and the scripts tests/scene_errors.sh,
 # tests/checkpoint.sh, tests/io_errors.sh, tests/blowup.sh, tests/bare.sh (BARE: the bare build), tests/fit_line.sh, tests/tcaf_fit.sh,
-# tests/numerics.sh (the analyses' statistics, tools/lib/numerics.awk), tests/analysis.py (the analysis layer, tools/analysis.py), tests/precision.sh (issue 38: the precision each claim needs),
+# tests/analysis.py (the analysis layer, tools/analysis.py), tests/precision.sh (issue 38: the precision each claim needs),
 # tests/claim_groups.sh (claims.tsv: every claim in one group), tests/bands_diff.sh (tools/bands-diff)
 # tests/library_exits.sh and tests/h5md.sh (MDAnalysis reads the trajectories; skipped, saying so, without it),
 # add up their checks, print "N passed, M failed" (", K skipped" when a suite could not run some
@@ -46,7 +46,7 @@ for bin in "$@"; do
     pass=$((pass + p)); fail=$((fail + f))
     rm -f "$log"
 done
-scripts=${TEST_SCRIPTS:-tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/numerics.sh tests/analysis.py tests/precision.sh tests/claim_groups.sh tests/bands_diff.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh tests/skips.sh}
+scripts=${TEST_SCRIPTS:-tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/analysis.py tests/precision.sh tests/claim_groups.sh tests/bands_diff.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh tests/skips.sh}
 for script in $scripts; do
 name=$(basename "$script")
 log=$(mktemp)

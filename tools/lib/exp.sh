@@ -2,8 +2,6 @@
 # Environment from tools/run-experiment: DPD (simulator), TIER, OUT (result dir).
 set -euo pipefail
 : "${DPD:?run through tools/run-experiment}" "${OUT:?}" "${TIER:?}"
-# the former statistics library, tools/lib/numerics.awk (num_awk): no experiment calls it since issue 40
-. "$DPD_ROOT/tools/lib/numerics.sh"
 # the analysis layer (tools/analysis.py, issue 40): every statistic, formula and derived simulation
 # argument of the experiments; "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
 ANALYSE=$DPD_ROOT/tools/analyse
@@ -328,7 +326,7 @@ block_mean() { "$ANALYSE" block-stat "$OUT/runs/$1/profile_blocks.tsv" "${2%%:*}
 
 # max_rel_dev PROFILE LO:HI -> "dev<TAB>stderr": the largest relative deviation of a bin's
 # density from the mean over the bins with LO <= pos <= HI of a profile.tsv; the error that
-# bin's (num_max_rel_dev)
+# bin's (tools/analysis.py max_rel_dev)
 max_rel_dev() { "$ANALYSE" max-rel-dev "$1" "${2%%:*}" "${2#*:}"; }
 
 # couette_viscosity NAME LX BULK: the m = 0 Couette channel of phan-thien-2016

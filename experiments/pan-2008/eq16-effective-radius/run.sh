@@ -72,7 +72,7 @@ for Lb in $BOX_L; do
     emit D_colloid_L$Lb $d
     emit D_t_ratio_late_half_L$Lb $r
 done
-# weighted straight line D = D_inf + slope / L (num_wline; its value at 1/L = 0 is the intercept;
+# weighted straight line D = D_inf + slope / L (tools/analysis.py wline; its value at 1/L = 0 is the intercept;
 # the errors scaled by chi^2/dof when that exceeds 1, the scatter then exceeding the errors; r2 the
 # unweighted coefficient of determination), in the table the former `dpd fit-line` wrote
 "$ANALYSE" finite-size-fit "$OUT/d-of-L.tsv" > "$OUT/fit-d-of-L.tsv"
