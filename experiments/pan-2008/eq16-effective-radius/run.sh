@@ -7,7 +7,7 @@
 needs any pan-2008/fluid-viscosity@paper
 MU=3.6388 L=10.0
 # the three boxes: edge, production steps (dt = 0.01) and seed, per tier (README: sizes and lengths
-# for a CPU budget; the paper tier's lengths give D_inf to about 0.5 %, not run)
+# per tier; the paper tier was run 2026-12-06)
 BOX_L="6 8 12"
 case $TIER in
     quick) tier=(--set steps=12000); BOX_STEPS="10000 10000 10000" ;;
