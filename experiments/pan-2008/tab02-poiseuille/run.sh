@@ -67,7 +67,7 @@ done
 # linear response (issue 23 item 5; reported, no band: computed after the rows were seen): the torque
 # and drag per unit g between successive rows (g doubles), relative errors in quadrature; and the
 # torque's noise, variance of the mean x production time (torque^2 x time), its stderr that of a
-# variance from 50 blocks
+# variance from 50 blocks per run (49 degrees of freedom per run: the paper tier's replicas pooled)
 if [ "$TIER" != quick ]; then
     for p in 1:2 2:3; do
         a=${p%:*} b=${p#*:}
@@ -77,7 +77,7 @@ if [ "$TIER" != quick ]; then
         done
     done
     for r in $ROWS; do
-        "$ANALYSE" noise-row torque_noise_row$r "$(get . torque_row$r | cut -f2)" $(( $(row_steps $r) * $(row_reps $r) / 100 )) 49 >> "$OUT/summary.tsv"
+        "$ANALYSE" noise-row torque_noise_row$r "$(get . torque_row$r | cut -f2)" $(( $(row_steps $r) * $(row_reps $r) / 100 )) $(( $(row_reps $r) * 49 )) >> "$OUT/summary.tsv"
     done
 fi
 # how many times its run each row's torque would need for a stderr of 0.5 % of eq. 22 (the paper
