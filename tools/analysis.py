@@ -2399,11 +2399,11 @@ PAN_COMMANDS = {
 }
 
 
-def _pairs(ps):
-    """the value and error of each "v<TAB>se", in one list"""
+def _pairs(ps, parse=None):
+    """the value and error of each "v<TAB>se" (or of whatever PARSE reads), in one list"""
     out = []
     for p in ps:
-        o = parse_pair(p)
+        o = (parse or parse_pair)(p)
         out += [o.v, o.se]
     return out
 
@@ -3001,11 +3001,8 @@ def sigmas(a, sa, b, sb):
 
 
 def _pairs_or_numbers(xs):
-    out = []
-    for x in xs:
-        o = _pair_or_number(x)
-        out += [o.v, o.se]
-    return out
+    """_pairs of "value<TAB>stderr" entries or exact numbers"""
+    return _pairs(xs, _pair_or_number)
 
 
 def _pair_or_number(x):
