@@ -1,14 +1,21 @@
 #!/bin/bash
-# run-tests.sh BIN... - run cmocka test binaries and the scripts tests/scene_errors.sh,
-# tests/checkpoint.sh, tests/io_errors.sh, tests/blowup.sh, tests/bare.sh (BARE: the bare build), tests/fit_line.sh, tests/tcaf_fit.sh,
-# tests/analysis.py (the analysis layer, tools/analysis.py), tests/precision.sh (issue 38: the precision each claim needs),
-# tests/claim_groups.sh (claims.tsv: every claim in one group), tests/bands_diff.sh (tools/bands-diff)
-# tests/library_exits.sh and tests/h5md.sh (MDAnalysis reads the trajectories; skipped, saying so, without it),
-# add up their checks, print "N passed, M failed" (", K skipped" when a suite could not run some
-# of its checks and said so: "N passed, M failed, K skipped"), exit 1 if M > 0.
-# TEST_SCRIPTS replaces the list of scripts (tests/skips.sh tests this summing).
-# A binary that dies before cmocka's summary (crash, sanitizer abort) counts
-# its unfinished tests as failed (at least one).
+# run-tests.sh - run the test suites and add up their checks.
+#
+#   run-tests.sh --one SUITE LOG   run one suite (a cmocka binary tests/test_*, or a script) and write
+#                                  its output to LOG, ending with its counts; always exits 0 (the
+#                                  verdict is --sum's). make test runs one per suite, two at a time
+#                                  under make -j2 (tests/tests.mk), so that the suites share the cores.
+#   run-tests.sh --sum LOG...      print each log in the order given, a "NAME: N passed, M failed (T s)"
+#                                  line per suite, the total "N passed, M failed" (", K skipped" when a
+#                                  suite could not run some of its checks and said so), exit 1 if M > 0
+#                                  or a log is missing (a suite that never ran counts as one failure).
+#   run-tests.sh SUITE...          the suites and then those of TEST_SCRIPTS, one after another, and
+#                                  their sum (tests/skips.sh tests the summing this way).
+# The list of suites make test runs is tests/tests.mk's.
+#
+# A script ends with "N passed, M failed[, K skipped]". A binary that dies before cmocka's summary
+# (crash, sanitizer abort) counts its unfinished tests as failed (at least one); a nonzero exit
+# with nothing failed counts one failure.
 set -u
 cd "$(dirname "$0")/.."
 if [ "${SANITIZE:-}" = 1 ]; then
@@ -17,56 +24,82 @@ if [ "${SANITIZE:-}" = 1 ]; then
     # libconfig 1.5's own scanner leak on some syntax errors (see the file)
     export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/tests/lsan.supp:print_suppressions=0}"
 fi
-# other jobs may share the 2 cores: idle OpenMP threads sleep instead of spinning
+# other jobs share the 2 cores: idle OpenMP threads sleep instead of spinning
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
-pass=0 fail=0 skip=0
-t_start=$(date +%s.%N)
-for bin in "$@"; do
-    name=$(basename "$bin")
-    log=$(mktemp)
-    t0=$(date +%s.%N)
-    "$bin" >"$log" 2>&1
-    rc=$?
-    t1=$(date +%s.%N)
-    cat "$log"
+
+# counts of a cmocka binary's log: "P F"
+cmocka_counts() {
+    local log=$1 rc=$2 total p f ok
     total=$(sed -n 's/.*Running \([0-9]*\) test(s).*/\1/p' "$log" | head -1)
     p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test(s)\..*/\1/p' "$log" | tail -1)
     f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test(s), listed below.*/\1/p' "$log" | tail -1)
     p=${p:-0}; f=${f:-0}
     if [ $((p + f)) -eq 0 ] || { [ -n "$total" ] && [ $((p + f)) -lt "$total" ]; }; then
-        # no summary: the binary died
-        ok=$(grep -c '^\[       OK \]' "$log")
-        p=$ok
-        f=$(( ${total:-1} - ok )); [ "$f" -lt 1 ] && f=1
-        echo "$name: exited with status $rc before finishing" >&2
-    elif [ $rc -ne 0 ] && [ "$f" -eq 0 ]; then
-        f=1; echo "$name: exit status $rc although every test passed" >&2
+        ok=$(grep -c '^\[       OK \]' "$log")      # no summary: the binary died
+        p=$ok; f=$(( ${total:-1} - ok )); [ "$f" -lt 1 ] && f=1
+        echo "exited with status $rc before finishing" >> "$log"
+    elif [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
+        f=1; echo "exit status $rc although every test passed" >> "$log"
     fi
-    printf '%s: %d passed, %d failed (%.1f s)\n' "$name" "$p" "$f" "$(echo "$t1 - $t0" | bc)"
-    pass=$((pass + p)); fail=$((fail + f))
+    echo "$p $f 0"
+}
+# counts of a script's log: "P F S"
+script_counts() {
+    local log=$1 rc=$2 line p f s=0
+    line=$(grep -E '^[0-9]+ passed, [0-9]+ failed(, [0-9]+ skipped)?$' "$log" | tail -1)
+    if [[ $line =~ ^([0-9]+)\ passed,\ ([0-9]+)\ failed(,\ ([0-9]+)\ skipped)?$ ]]; then
+        p=${BASH_REMATCH[1]} f=${BASH_REMATCH[2]} s=${BASH_REMATCH[4]:-0}
+    else
+        p=0; f=1; echo "no summary (status $rc)" >> "$log"
+    fi
+    [ "$rc" -ne 0 ] && [ "$f" -eq 0 ] && f=1
+    echo "$p $f $s"
+}
+# run_one SUITE LOG: the output, then a last line "suite-counts NAME P F S SECONDS"
+run_one() {
+    local suite=$1 log=$2 name rc t0 t1 counts
+    name=$(basename "$suite")
     rm -f "$log"
+    mkdir -p "$(dirname "$log")"
+    t0=$(date +%s.%N)
+    case $name in
+        test_*) "$suite" > "$log.tmp" 2>&1 ;;
+        *) DPD="${DPD:-bin/dpd}" BARE="${BARE:-build/dpd-bare}" "$suite" > "$log.tmp" 2>&1 ;;
+    esac
+    rc=$?
+    t1=$(date +%s.%N)
+    case $name in test_*) counts=$(cmocka_counts "$log.tmp" $rc) ;; *) counts=$(script_counts "$log.tmp" $rc) ;; esac
+    echo "suite-counts $name $counts $(echo "$t1 - $t0" | bc)" >> "$log.tmp"
+    mv "$log.tmp" "$log"
+}
+# sum LOG...
+sum() {
+    local pass=0 fail=0 skip=0 secs=0 log name p f s t
+    for log in "$@"; do
+        if [ ! -s "$log" ] || ! tail -1 "$log" | grep -q '^suite-counts '; then
+            echo "$(basename "$log" .log): did not run (no $log)" >&2
+            fail=$((fail + 1)); continue
+        fi
+        sed '$d' "$log"
+        read -r _ name p f s t < <(tail -1 "$log")
+        printf '%s: %d passed, %d failed%s (%.1f s)\n' "$name" "$p" "$f" "$([ "$s" -gt 0 ] && echo ", $s skipped")" "$t"
+        pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s)); secs=$(echo "$secs + $t" | bc)
+    done
+    printf 'all tests: %d suites, %.1f s of suite time\n' $# "$secs"
+    echo "$pass passed, $fail failed$([ "$skip" -gt 0 ] && echo ", $skip skipped")"
+    [ "$fail" -eq 0 ]
+}
+
+case ${1:-} in
+    --one) [ $# -eq 3 ] || { echo "usage: run-tests.sh --one SUITE LOG" >&2; exit 2; }
+           run_one "$2" "$3"; exit 0 ;;
+    --sum) shift; sum "$@"; exit ;;
+esac
+logs=$(mktemp -d)
+trap 'rm -rf "$logs"' EXIT
+list=()
+for suite in "$@" ${TEST_SCRIPTS:-}; do
+    run_one "$suite" "$logs/${#list[@]}.log"
+    list+=("$logs/${#list[@]}.log")
 done
-scripts=${TEST_SCRIPTS:-tests/scene_errors.sh tests/checkpoint.sh tests/io_errors.sh tests/blowup.sh tests/bare.sh tests/fit_line.sh tests/tcaf_fit.sh tests/analysis.py tests/precision.sh tests/claim_groups.sh tests/bands_diff.sh tests/library_exits.sh tests/layers.sh tests/h5md.sh tests/skips.sh}
-for script in $scripts; do
-name=$(basename "$script")
-log=$(mktemp)
-t0=$(date +%s.%N)
-DPD="${DPD:-bin/dpd}" BARE="${BARE:-build/dpd-bare}" "$script" >"$log" 2>&1
-rc=$?
-t1=$(date +%s.%N)
-cat "$log"
-line=$(grep -E '^[0-9]+ passed, [0-9]+ failed(, [0-9]+ skipped)?$' "$log" | tail -1)
-s=0
-if [[ $line =~ ^([0-9]+)\ passed,\ ([0-9]+)\ failed(,\ ([0-9]+)\ skipped)?$ ]]; then
-    p=${BASH_REMATCH[1]} f=${BASH_REMATCH[2]} s=${BASH_REMATCH[4]:-0}
-else
-    p=0; f=1; echo "$name: no summary (status $rc)" >&2
-fi
-[ $rc -ne 0 ] && [ "$f" -eq 0 ] && f=1
-printf '%s: %d passed, %d failed%s (%.1f s)\n' "$name" "$p" "$f" "$([ "$s" -gt 0 ] && echo ", $s skipped")" "$(echo "$t1 - $t0" | bc)"
-pass=$((pass + p)); fail=$((fail + f)); skip=$((skip + s))
-rm -f "$log"
-done
-printf 'all tests: %.1f s wall\n' "$(echo "$(date +%s.%N) - $t_start" | bc)"
-echo "$pass passed, $fail failed$([ "$skip" -gt 0 ] && echo ", $skip skipped")"
-[ "$fail" -eq 0 ]
+sum "${list[@]}"

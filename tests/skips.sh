@@ -1,7 +1,8 @@
 #!/bin/bash
 # skips.sh - a check a suite cannot run is reported as skipped, never as passed:
 # tests/io_errors.sh on a machine without unprivileged user and mount namespaces
-# (simulated: an `unshare` that fails, first in PATH) says SKIP for its tmpfs checks
+# (simulated: an `unshare` that fails, first in PATH; only its namespace part,
+# IO_ERRORS_PART=namespace) says SKIP for its tmpfs checks
 # and ends with "N passed, M failed, K skipped", K > 0, counting no pass for them;
 # tests/run-tests.sh adds the skipped checks up beside the passed and failed ones.
 # DPD selects the binary. Prints "N passed, M failed".
@@ -11,7 +12,7 @@ cd "$(dirname "$0")/.."
 mkdir -p "$tmp/bin"
 printf '#!/bin/sh\necho "unshare: unprivileged namespaces are not allowed here (stub)" >&2\nexit 1\n' > "$tmp/bin/unshare"
 chmod +x "$tmp/bin/unshare"
-PATH="$tmp/bin:$PATH" DPD="$DPD" tests/io_errors.sh > "$tmp/io.log" 2>&1; st=$?
+PATH="$tmp/bin:$PATH" DPD="$DPD" IO_ERRORS_PART=namespace tests/io_errors.sh > "$tmp/io.log" 2>&1; st=$?
 last=$(tail -1 "$tmp/io.log")
 if grep -q '^SKIP tmpfs checks' "$tmp/io.log"; then ok "io_errors.sh without namespaces: says SKIP"
 else bad "io_errors.sh without namespaces: says SKIP" "$(tail -3 "$tmp/io.log")"; fi

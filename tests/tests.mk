@@ -1,6 +1,6 @@
 # tests.mk - `make test` (included by the top Makefile). Builds every
 # tests/test_*.c against $(BUILD)/libdpd.a with cmocka, runs them and the
-# scene-error script, prints one "N passed, M failed" line and fails if M > 0.
+# script suites, prints one "N passed, M failed" line and fails if M > 0.
 # `make test SANITIZE=1` does the same under ASan + UBSan (build/asan); the
 # scene-error script then runs a sanitized dpd linked in $(BUILD)/tests/ so
 # that bin/dpd is left alone.
@@ -25,6 +25,20 @@ $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 	@mkdir -p $(BUILD)/tests
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
 
-.PHONY: test
-test: $(TEST_BINS) $(TEST_DPD) $(BARE)
-	@DPD=$(TEST_DPD) BARE=$(BARE) SANITIZE=$(SANITIZE) tests/run-tests.sh $(TEST_BINS)
+# The suites, the longest first (measured: make test prints each one's time), so that under
+# make -j2 the two cores finish together; each writes its log to $(SUITE_LOGS) (tests/run-tests.sh
+# --one) and the last step prints the logs in this order and adds up their checks (--sum).
+TEST_SCRIPTS := tests/checkpoint.sh tests/io_errors.sh tests/scene_errors.sh tests/blowup.sh \
+  tests/h5md.sh tests/layers.sh tests/tcaf_fit.sh tests/precision.sh tests/bare.sh tests/skips.sh \
+  tests/analysis.py tests/bands_diff.sh tests/fit_line.sh tests/claim_groups.sh tests/library_exits.sh
+SLOW_BINS := test_transverse_relaxation test_thermostat test_bonds test_msd test_rotation test_forces
+SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(notdir $(TEST_BINS)))
+SUITE_LOGS := $(BUILD)/tests/logs
+suite_path = $(if $(filter test_%,$(1)),$(BUILD)/tests/$(1),tests/$(1))
+
+.PHONY: test $(addprefix suite/,$(SUITES))
+$(addprefix suite/,$(SUITES)): suite/%: $(TEST_BINS) $(TEST_DPD) $(BARE)
+	@DPD=$(TEST_DPD) BARE=$(BARE) SANITIZE=$(SANITIZE) tests/run-tests.sh --one $(call suite_path,$*) $(SUITE_LOGS)/$*.log
+	@echo "test: $* done"
+test: $(addprefix suite/,$(SUITES))
+	@tests/run-tests.sh --sum $(patsubst %,$(SUITE_LOGS)/%.log,$(SUITES))
