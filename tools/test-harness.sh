@@ -441,45 +441,38 @@ printf '# A\n\ntext\n## B glued\n' > "$root/glued.md"
 T "render-paper: a heading without a blank line before it fails" 1 "$tools/render-paper" -i "$root/glued.md" -o "$root/build/glued.html"
 has "render-paper: names the line" 'glued.md:4: ## B glued'
 
-# no expressions in the text (issue 40 item 7): {{calc:}}, the former expression language, is refused
-# everywhere, the sections of pan-2008 included, in a draft too, each named; by render-paper before
-# pandoc runs, and by the filter itself (pandoc with the filter alone)
+# no expressions in the text (issue 40 item 7): arithmetic written in the text is refused everywhere,
+# each placeholder named, in a draft too; by render-paper before pandoc runs (it writes nothing), and
+# by the filter itself (pandoc with the filter alone), which counts them.
+# refused_in_text WHAT FILE COUNT LINE... -- CELL...: LINE, a regex of the "FILE:N: text" render-paper
+# names (the last one is checked in the draft too); CELL, a regex of a placeholder the filter refuses
+refused_in_text() {
+    local what=$1 file=$2 count=$3 base line cell; shift 3
+    local -a lines=()
+    while [ $# -gt 0 ] && [ "$1" != -- ]; do lines+=("$1"); shift; done
+    shift
+    base=$(basename "$file" .md)
+    T "render-paper: $what: fails" 1 "$tools/render-paper" -i "$file" -o "$root/build/$base.md"
+    for line in "${lines[@]}"; do has "render-paper: $what: names $line" "$line"; done
+    has "render-paper: $what: says what to write instead" 'let the analysis write the quantity'
+    if [ -e "$root/build/$base.md" ]; then bad "render-paper: $what: wrote output" "$root/build/$base.md"
+    else ok "render-paper: $what: writes nothing"; fi
+    T "render-paper: $what: fails in a draft (MKPAPER_ALLOW_MISSING=1)" 1 env MKPAPER_ALLOW_MISSING=1 "$tools/render-paper" -i "$file" -o "$root/build/$base.md"
+    has "render-paper: $what: the draft names ${lines[-1]}" "${lines[-1]}"
+    command -v pandoc >/dev/null || return 0
+    T "paper-filter: $what: fails in the filter alone" 1 env DPD_ROOT="$root" pandoc "$file" --lua-filter "$tools/lib/paper-filter.lua" -t markdown -o "$root/build/$base.filter.md"
+    for cell in "$@"; do has "paper-filter: $what: refused $cell" "$cell: no expressions in the text"; done
+    has "paper-filter: $what: counts the $count" "^paper-filter: $count placeholder(s) could not be filled"
+}
+# {{calc:}}, the former expression language, in pan-2008's section too
 printf '%s\n' '# A' '' 'a {{calc:%.1f:1+1}}' '' '## pan-2008/x: once kept' '' 'b {{calc:%.1f:[x/y:eta]*2}}' '' '## other/x: not' '' 'c {{calc:%.1f:2}}' > "$root/calcout.md"
-T "render-paper: {{calc:}} fails" 1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
-has "render-paper: names the first" 'calcout.md:3: a {{calc'
-has "render-paper: names the one in pan-2008's section" 'calcout.md:7: b {{calc'
-has "render-paper: names the last" 'calcout.md:11: c {{calc'
-has "render-paper: says what to write instead" 'let the analysis write the quantity'
-if [ -e "$root/build/calcout.md" ]; then bad "render-paper: wrote output despite {{calc:}}" "$root/build/calcout.md"; else ok "render-paper: writes nothing on {{calc:}}"; fi
-T "render-paper: {{calc:}} fails in a draft (MKPAPER_ALLOW_MISSING=1)" 1 env MKPAPER_ALLOW_MISSING=1 "$tools/render-paper" -i "$root/calcout.md" -o "$root/build/calcout.md"
-has "render-paper: the draft names it" 'calcout.md:7: b {{calc'
-if command -v pandoc >/dev/null; then
-    T "paper-filter: {{calc:}} fails in the filter alone" 1 env DPD_ROOT="$root" pandoc "$root/calcout.md" --lua-filter "$tools/lib/paper-filter.lua" -t markdown -o "$root/build/calcout.filter.md"
-    has "paper-filter: calc is no expression: refused, the first named" '{{calc:%.1f:1+1}}: no expressions in the text'
-    has "paper-filter: calc in pan-2008's section refused" '{{calc:%.1f:\[x/y:eta\]\*2}}: no expressions in the text'
-    has "paper-filter: calc refused, the last named" '{{calc:%.1f:2}}: no expressions in the text'
-    has "paper-filter: counts the three" '^paper-filter: 3 placeholder(s) could not be filled'
-fi
-
-# the derived values of the former text (issue 40): {{pct:}}, {{ratio:}}, {{diff:}}, {{sigmas:}} are
-# arithmetic in the text like {{calc:}}: refused each, named, by render-paper (in a draft too) and by the filter
+refused_in_text '{{calc:}}' "$root/calcout.md" 3 'calcout.md:3: a {{calc' 'calcout.md:11: c {{calc' 'calcout.md:7: b {{calc' -- \
+    '{{calc:%.1f:1+1}}' '{{calc:%.1f:\[x/y:eta\]\*2}}' '{{calc:%.1f:2}}'
+# the derived values of the former text: {{pct:}}, {{ratio:}}, {{diff:}}, {{sigmas:}}
 printf '%s\n' '# A' '' 'a {{pct:x/y:eta/29.08}}' '' 'b {{ratio:x/y:eta/ratio}} and {{diff:x/y:eta-ratio}}' '' '## other/x: not' '' \
     'c {{sigmas:x/y:eta-29.08}}' > "$root/derivedout.md"
-T "render-paper: derived values fail" 1 "$tools/render-paper" -i "$root/derivedout.md" -o "$root/build/derivedout.md"
-has "render-paper: names the pct" 'derivedout.md:3: a {{pct:'
-has "render-paper: names the line of the ratio and the diff" 'derivedout.md:5: b {{ratio:'
-has "render-paper: names the sigmas" 'derivedout.md:9: c {{sigmas:'
-has "render-paper: says what to write instead of a derived value" 'let the analysis write the quantity'
-if [ -e "$root/build/derivedout.md" ]; then bad "render-paper: wrote output despite derived values" "$root/build/derivedout.md"; else ok "render-paper: writes nothing on derived values"; fi
-T "render-paper: derived values fail in a draft (MKPAPER_ALLOW_MISSING=1)" 1 env MKPAPER_ALLOW_MISSING=1 "$tools/render-paper" -i "$root/derivedout.md" -o "$root/build/derivedout.md"
-if command -v pandoc >/dev/null; then
-    T "paper-filter: derived values fail in the filter alone" 1 env DPD_ROOT="$root" pandoc "$root/derivedout.md" --lua-filter "$tools/lib/paper-filter.lua" -t markdown -o "$root/build/derivedout.filter.md"
-    has "paper-filter: pct refused" '{{pct:x/y:eta/29.08}}: no expressions in the text'
-    has "paper-filter: ratio refused" '{{ratio:x/y:eta/ratio}}: no expressions in the text'
-    has "paper-filter: diff refused" '{{diff:x/y:eta-ratio}}: no expressions in the text'
-    has "paper-filter: sigmas refused" '{{sigmas:x/y:eta-29.08}}: no expressions in the text'
-    has "paper-filter: counts the four" '^paper-filter: 4 placeholder(s) could not be filled'
-fi
+refused_in_text 'derived values' "$root/derivedout.md" 4 'derivedout.md:3: a {{pct:' 'derivedout.md:5: b {{ratio:' 'derivedout.md:9: c {{sigmas:' -- \
+    '{{pct:x/y:eta/29.08}}' '{{ratio:x/y:eta/ratio}}' '{{diff:x/y:eta-ratio}}' '{{sigmas:x/y:eta-29.08}}'
 
 # figure missing
 mv "$root/figures/x/y/fig.png" "$root/fig.bak"
