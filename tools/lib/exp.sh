@@ -231,6 +231,17 @@ h5_series() {
     tr -d ' ,' < "$f" | grep .; rm -f "$f"
 }
 
+# tcaf_fit NAME MODEL RHO BOX [ARG...]: `dpd tcaf-fit --model MODEL` of run NAME's stored C(k,t), the
+# per-shell eta(k) to runs/NAME/tcaf_fit_MODEL.tsv and the fit's quantities to runs/NAME/tcaf_fit_MODEL.out.
+# It runs in runs/NAME, so that the table's header names its input as tcaf.tsv beside it, not the
+# scratch directory the analysis ran in (a reanalysis would otherwise rewrite every header).
+tcaf_fit() {
+    local run=$1 model=$2 rho=$3 box=$4 dpd; shift 4
+    dpd=$(realpath "$DPD") || return 1
+    (cd "$OUT/runs/$run" && "$dpd" tcaf-fit tcaf.tsv --rho "$rho" --box "$box" --model "$model" \
+        --table "tcaf_fit_$model.tsv" "$@" > "tcaf_fit_$model.out")
+}
+
 # tcaf_k0 NAME MODEL BOX -> "value<TAB>stderr": eta(k -> 0) of run NAME's stored C(k,t) by `dpd tcaf-fit
 # --model MODEL` (README "The simulator"), rho the run's tcaf_mass_density, BOX its side; the per-shell
 # eta(k) goes to runs/NAME/tcaf_fit_MODEL.tsv. The suspension experiments of Mai-Duy et al. judge the
@@ -240,8 +251,7 @@ h5_series() {
 # downswing of an oscillating curve at large phi; two-mode (its slow mode) is their second estimator.
 tcaf_k0() {
     local rho; rho=$(get "$1" tcaf_mass_density | cut -f1) || return 1
-    "$DPD" tcaf-fit "$OUT/runs/$1/tcaf.tsv" --rho "$rho" --box "$3" --model "$2" --table "$OUT/runs/$1/tcaf_fit_$2.tsv" \
-        > "$OUT/runs/$1/tcaf_fit_$2.out" || { echo "exp.sh: dpd tcaf-fit --model $2 failed on run $1" >&2; return 1; }
+    tcaf_fit "$1" "$2" "$rho" "$3" || { echo "exp.sh: dpd tcaf-fit --model $2 failed on run $1" >&2; return 1; }
     awk -F'\t' '$1 == "eta_k0" { print $2 "\t" $3; f = 1; exit } END { exit !f }' "$OUT/runs/$1/tcaf_fit_$2.out"
 }
 

@@ -77,10 +77,7 @@ for A in $AS; do for pair in $PAIRS; do lattice_pair "$pair" 4; pair_runs "$A"; 
 
 # ---- analysis helpers ----
 # fit NAME MODEL RHO BOX: dpd tcaf-fit of run NAME -> runs/NAME/tcaf_fit_MODEL.tsv (per shell) and .out
-fit() {
-    "$DPD" tcaf-fit "$OUT/runs/$1/tcaf.tsv" --rho "$3" --box "$4" --model "$2" --table "$OUT/runs/$1/tcaf_fit_$2.tsv" \
-        > "$OUT/runs/$1/tcaf_fit_$2.out"
-}
+fit() { tcaf_fit "$@"; }
 # fq NAME MODEL QUANTITY -> "value<TAB>stderr" of a fit
 fq() { tsv_lookup "$OUT/runs/$1/tcaf_fit_$2.out" "$3" tab02-readings; }
 # put QUANTITY "value<TAB>stderr"

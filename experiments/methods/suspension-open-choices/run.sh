@@ -108,9 +108,7 @@ printf 'M\tbodies\teta_k0\tse\teta_susp\tse\n' > "$OUT/tcaf.tsv"
 for M in $TCAF_MASSES; do
     for b in false true; do
         r=tcaf_M${M}_bodies$b
-        "$DPD" tcaf-fit "$OUT/runs/$r/tcaf.tsv" --rho "$(get $r tcaf_mass_density | cut -f1)" --box "$L" --model integral \
-            --table "$OUT/runs/$r/tcaf_fit_integral.tsv" > "$OUT/runs/$r/tcaf_fit_integral.out"
-        ek=$("$ANALYSE" lookup "$OUT/runs/$r/tcaf_fit_integral.out" eta_k0)
+        ek=$(tcaf_k0 $r integral "$L")
         emit "eta_k0_constrained_M${M}_bodies$b" "${ek%	*}" "${ek#*	}"
         emit_from $r temperature temperature_$r
         printf '%s\t%s\t%s\t%s\n' "$M" "$b" "$ek" "$(get susp_M${M}_a3.53 viscosity)" >> "$OUT/tcaf.tsv"
