@@ -260,6 +260,29 @@ grid = 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(
     ''.join('%g\t%g\t4\t%d\t0\n' % (i + 0.5, j + 0.5, (1, 2, 0, 0)[i]) for i in range(4)) for j in range(4))
 r = A.density_fields(tsv('map2.tsv', grid), '4', '2', '2', '0', '4')[0].split('\t')
 close('density_fields: mean |div u| by periodic central differences', r[1], 0.75, 1e-12)
+# residual_floor_free: three 4 x 4 maps n = n0 + 0.1 + 0.3 w_r, the noise w_r the Walsh patterns
+# (-1)^i, (-1)^j, (-1)^(i+j), orthogonal to each other and to a constant: every pair's cross sum is the
+# true field's 16 x 0.01, so the residual is sqrt(0.16) / 16 = 0.025 exactly and each leave-one-out
+# estimate too (jackknife error 0), while each map's plain residual carries the noise (0.0791)
+walsh = (lambda i, j: (-1) ** i, lambda i, j: (-1) ** j, lambda i, j: (-1) ** (i + j))
+maps = [tsv('walsh%d.tsv' % k, 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(''.join(
+    '%g\t%g\t%.17g\t0\t0\n' % (i + 0.5, j + 0.5, 4.1 + 0.3 * w(i, j)) for i in range(4)) for j in range(4)))
+    for k, w in enumerate(walsh)]
+r = A.residual_floor_free('q', '4', '2', '2', '0', '4', *maps)[0].split('\t')
+close('residual_floor_free: the true field without the noise floor', r[1], 0.025, 1e-12)
+close('residual_floor_free: leave-one-out estimates equal, jackknife error 0', r[2], 0.0, 1e-12)
+close('residual_floor_free: the plain residual of one map carries the floor',
+      A.density_fields(maps[0], '4', '2', '2', '0', '4')[0].split('\t')[0], math.sqrt(16 * 0.01 + 16 * 0.09) / 16, 1e-9)
+# noise alone (no true field): the cross sums are 0, the residual 0 (a negative C would also give 0)
+maps0 = [tsv('walsh0_%d.tsv' % k, 'x\ty\tdensity\tvx\tvy\n' + '\n'.join(''.join(
+    '%g\t%g\t%.17g\t0\t0\n' % (i + 0.5, j + 0.5, 4 + 0.3 * w(i, j)) for i in range(4)) for j in range(4)))
+    for k, w in enumerate(walsh)]
+close('residual_floor_free: noise alone gives 0', A.residual_floor_free('q', '4', '2', '2', '0', '4', *maps0)[0].split('\t')[1], 0.0, 1e-12)
+try:
+    A.residual_floor_free('q', '4', '2', '2', '0', '4', *maps[:2])
+    same('residual_floor_free: two runs refused', 'accepted', 'refused')
+except SystemExit as e:
+    same('residual_floor_free: two runs refused', 'jackknife needs 3' in str(e), True)
 
 # ---- more reductions with closed-form answers
 close('project: the amplitude of x along w', A.project(['2', '4', '6'], ['1', '2', '3']), 2.0)

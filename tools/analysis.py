@@ -1256,12 +1256,9 @@ def wall_minus_lees_edwards(summary, rho, rhose, lepair):
     return [cfmt('%.10g\t%.4g', num(a) - num(L.v), quad(e))]
 
 
-def density_fields(path, L, cx, cy, rex, n0):
-    """phan-thien-2016 fig08, eq. 49: the density residual sqrt(sum (n - n0)^2) / nb and the mean
-    |div u| (central differences, periodic) over the nb bins of a density map (density_map.tsv:
-    x y density vx vy, a block per grid row after a header) whose centre lies at least rex from
-    the cylinder centre (cx, cy), minimum image in a box of side L (formerly fields.awk)"""
-    L, cx, cy, rex, n0 = num(L), num(cx), num(cy), num(rex), num(n0)
+def _density_map(path):
+    """a density map (density_map.tsv: x y density vx vy, a block per grid row after a header) as
+    dicts X, Y, N, U, V keyed by (column, row), and the grid's nx, ny"""
     X, Y, N, U, Vv = {}, {}, {}, {}, {}
     row = col = nx = 0
     for i, r in enumerate(rows(path)):
@@ -1278,17 +1275,31 @@ def density_fields(path, L, cx, cy, rex, n0):
     if col > 0:
         nx = col
         row += 1
-    ny = row
+    return X, Y, N, U, Vv, nx, row
+
+
+def _outside(X, Y, i, j, L, cx, cy, rex):
+    """bin (i, j)'s centre lies at least rex from (cx, cy), minimum image in a box of side L"""
+    g = lambda a, k: num(a.get(k, ''))
+    ddx = g(X, (i, j)) - cx
+    ddy = g(Y, (i, j)) - cy
+    ddx -= L * float(int(ddx / L * 2))          # minimum image (|d| < L); awk's int() truncates
+    ddy -= L * float(int(ddy / L * 2))
+    return ddx * ddx + ddy * ddy >= rex * rex
+
+
+def density_fields(path, L, cx, cy, rex, n0):
+    """phan-thien-2016 fig08, eq. 49: the density residual sqrt(sum (n - n0)^2) / nb and the mean
+    |div u| (central differences, periodic) over the nb bins of a density map whose centre lies at
+    least rex from the cylinder centre (cx, cy), minimum image in a box of side L (formerly fields.awk)"""
+    L, cx, cy, rex, n0 = num(L), num(cx), num(cy), num(rex), num(n0)
+    X, Y, N, U, Vv, nx, ny = _density_map(path)
     dx, dy = div(L, nx), div(L, ny)
     nb, ss, sdiv = 0, 0.0, 0.0
     g = lambda a, k: num(a.get(k, ''))
     for j in range(ny):
         for i in range(nx):
-            ddx = g(X, (i, j)) - cx
-            ddy = g(Y, (i, j)) - cy
-            ddx -= L * float(int(ddx / L * 2))          # minimum image (|d| < L); awk's int() truncates
-            ddy -= L * float(int(ddy / L * 2))
-            if ddx * ddx + ddy * ddy < rex * rex:
+            if not _outside(X, Y, i, j, L, cx, cy, rex):
                 continue
             ip, im, jp, jm = (i + 1) % nx, (i + nx - 1) % nx, (j + 1) % ny, (j + ny - 1) % ny
             dv = div(g(U, (ip, j)) - g(U, (im, j)), 2 * dx) + div(g(Vv, (i, jp)) - g(Vv, (i, jm)), 2 * dy)
@@ -1296,6 +1307,36 @@ def density_fields(path, L, cx, cy, rex, n0):
             sdiv += -dv if dv < 0 else dv
             nb += 1
     return [cfmt('%.10g\t%.10g\t%d', div(sqrt(ss), nb), div(sdiv, nb), nb)]
+
+
+def residual_floor_free(q, L, cx, cy, rex, n0, *paths):
+    """phan-thien-2016 fig08, a second estimator of eq. 49's residual, free of the statistical floor.
+    A run's time-averaged density is the true field plus noise, so sum (n - n0)^2 over the bins
+    carries the noise's variance too: a floor that falls with the run length, and that makes the
+    plain residual's growth with P depend on the run length. The product (n_a - n0)(n_b - n0) of two
+    independent runs a and b has the true field's square as its mean, noise and all. Here
+    C = the mean over the pairs of runs of sum (n_a - n0)(n_b - n0), the residual sqrt(C) / nb
+    (0 if C < 0), its error the jackknife over the runs (each left out in turn: the pairs of the
+    others; Efron & Tibshirani 1993, ch. 11). The bins as density_fields's. Needs 3 runs or more.
+    Row "Q<TAB>value<TAB>stderr"."""
+    L, cx, cy, rex, n0 = num(L), num(cx), num(cy), num(rex), num(n0)
+    if len(paths) < 3:
+        raise SystemExit('analysis.py residual-floor-free: %d runs given, the jackknife needs 3 or more' % len(paths))
+    dev = []
+    for p in paths:
+        X, Y, N, U, Vv, nx, ny = _density_map(p)
+        dev.append([num(N.get((i, j), '')) - n0 for j in range(ny) for i in range(nx)
+                    if _outside(X, Y, i, j, L, cx, cy, rex)])
+    nb = len(dev[0])
+    if any(len(d) != nb for d in dev):
+        raise SystemExit('analysis.py residual-floor-free: the maps keep different numbers of bins')
+
+    def residual(runs):
+        c = mean([sum(a * b for a, b in zip(dev[r], dev[s])) for k, r in enumerate(runs) for s in runs[k + 1:]])
+        return div(sqrt(c), nb) if c > 0 else 0.0
+    n = len(dev)
+    jk = jackknife_se([residual([r for r in range(n) if r != left]) for left in range(n)])
+    return [Val(residual(list(range(n))), jk.se).row(q)]
 
 
 def fields_mean_row(P, m, lines):
@@ -3158,6 +3199,8 @@ COMMANDS = {
     'fraction': lambda a: [cfmt('%.10g', div(num(a[0]), num(a[1])))],
     # density-fields MAP L CX CY REX N0
     'density-fields': lambda a: density_fields(*a[:6]),
+    # residual-floor-free Q L CX CY REX N0 MAP MAP MAP...
+    'residual-floor-free': lambda a: residual_floor_free(*a),
     # fields-mean-row P M < "residual divu nb U" rows
     'fields-mean-row': lambda a: fields_mean_row(a[0], a[1], sys.stdin.read().split('\n')[:-1]),
     'force-balance': lambda a: force_balance(a[0], a[1], a[2]),

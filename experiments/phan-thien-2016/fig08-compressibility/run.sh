@@ -50,5 +50,18 @@ printf 'P\tmach\tmach_se\n' > "$OUT/mach.tsv"
 "$ANALYSE" fig08-mach-rows "$OUT/mach.tsv" >> "$OUT/summary.tsv"
 # growths from P = 0.1 to P = 1.0 (first-order error propagation) and m = 1 over m = 0
 "$ANALYSE" fig08-growths "$OUT/fields.tsv" >> "$OUT/summary.tsv"
+# the residual and its growth by a second estimator, free of the statistical floor that the
+# time-averaged fields carry (tools/analysis.py residual_floor_free: cross products of independent
+# seeds, jackknife over the seeds; needs 3 seeds, the paper tier's)
+if [ "$(echo $seeds | wc -w)" -ge 3 ]; then
+    for m in 0 1; do
+        for P in 0.1 1.0; do
+            maps=(); for k in $seeds; do maps+=("$OUT/runs/m${m}_P${P}_s$k/density_map.tsv"); done
+            "$ANALYSE" residual-floor-free "residual_floor_free_m${m}_P$P" 6 3 3 1 4 "${maps[@]}" >> "$OUT/summary.tsv"
+        done
+        emit "residual_floor_free_growth_m$m" "$("$ANALYSE" ratio "$(tsv_lookup "$OUT/summary.tsv" "residual_floor_free_m${m}_P1.0")" \
+            "$(tsv_lookup "$OUT/summary.tsv" "residual_floor_free_m${m}_P0.1")")"
+    done
+fi
 }
 experiment
