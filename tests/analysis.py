@@ -616,6 +616,24 @@ if 'ANALYSIS_PY' not in os.environ:
           p.returncode == 2 and 'usage' in p.stderr and p.stdout == '', (p.returncode, p.stderr[:60]))
     p = subprocess.run([cli, 'lookup', os.path.join(tmp, 'no-such.tsv'), 'q'], capture_output=True, text=True)
     check('tools/analyse: a missing file exits 1 naming it', p.returncode == 1 and 'no-such.tsv' in p.stderr, (p.returncode, p.stderr))
+    # the compiled module follows its source: an edit that keeps the file's size and modification
+    # time (a mutant and its revert within one second) must not be read from a stale cache
+    cp = os.path.join(tmp, 'tools')
+    os.mkdir(cp)
+    for f in ('analyse', 'analysis.py'):
+        shutil.copy2(os.path.join(HERE, '..', 'tools', f), os.path.join(cp, f))
+    first = subprocess.run([os.path.join(cp, 'analyse'), 'diff', '5\t0.3', '2\t0.4'], capture_output=True, text=True).stdout
+    src = os.path.join(cp, 'analysis.py')
+    st = os.stat(src)
+    text = open(src).read()
+    marker = 'def v_diff(a, sa, b, sb):'
+    body = text.index(marker)
+    minus = text.index('num(a) - num(b)', body)
+    with open(src, 'w') as f:
+        f.write(text[:minus] + 'num(a) + num(b)' + text[minus + len('num(a) - num(b)'):])
+    os.utime(src, ns=(st.st_atime_ns, st.st_mtime_ns))
+    second = subprocess.run([os.path.join(cp, 'analyse'), 'diff', '5\t0.3', '2\t0.4'], capture_output=True, text=True).stdout
+    same('tools/analyse: an edit of the same size and time is not hidden by the compiled cache', (first, second), ('3\t0.5\n', '7\t0.5\n'))
 
 shutil.rmtree(tmp)
 print('%d passed, %d failed' % (passed, failed))
