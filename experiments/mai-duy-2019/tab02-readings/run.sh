@@ -76,8 +76,6 @@ for A in $AS; do for pair in $PAIRS; do lattice_pair "$pair" 4; pair_runs "$A"; 
 }
 
 # ---- analysis helpers ----
-# fit NAME MODEL RHO BOX: dpd tcaf-fit of run NAME -> runs/NAME/tcaf_fit_MODEL.tsv (per shell) and .out
-fit() { tcaf_fit "$@"; }
 # fq NAME MODEL QUANTITY -> "value<TAB>stderr" of a fit
 fq() { tsv_lookup "$OUT/runs/$1/tcaf_fit_$2.out" "$3" tab02-readings; }
 # put QUANTITY "value<TAB>stderr"
@@ -116,7 +114,7 @@ for A in $AS; do
         rho_tot=$("$ANALYSE" rho-total "$rho" "$(get $cr colloids | cut -f1)" "$L")
         # the density factors of readings (d) and (c)'s total density: 4 / rho and rho_tot / rho
         f_s=$("$ANALYSE" quotient 4 "$rho") f_t=$("$ANALYSE" quotient "$rho_tot" "$rho")
-        for m in two-mode integral; do fit $fr $m "$rho" "$L"; fit $cr $m "$rho" "$L"; done
+        for m in two-mode integral; do tcaf_fit $fr $m "$rho" "$L"; tcaf_fit $cr $m "$rho" "$L"; done
         # the estimators' eta(k -> 0) (exp: the run's own fit, errors from blocks) and the suspension's
         for sys in free constrained; do
             r=${sys}_a${A}_$tag
@@ -155,10 +153,10 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 bfc=$OUT/runs/fig02_free_a${A}_$tag/curve.tsv
                 curve "$OUT/runs/fig02_free_a${A}_$tag/tcaf_eta.tsv" "$OUT/runs/freehk_a${A}_$tag/tcaf_eta.tsv" > "$bfc"
-                fit fig02_constrained_a${A}_$tag integral "$(get fig02_constrained_a${A}_$tag tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit fig02_constrained_a${A}_$tag integral "$(get fig02_constrained_a${A}_$tag tcaf_mass_density | cut -f1)" "$L"
             fi
-            fit $br integral "$(get $br tcaf_mass_density | cut -f1)" "$L"
-            fit $br two-mode "$(get $br tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $br integral "$(get $br tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $br two-mode "$(get $br tcaf_mass_density | cut -f1)" "$L"
             put reading_b_eta_eff_a${A}_$tag "$(fq $br integral eta_k0)"
             put eta_k0_bodies_two_mode_a${A}_$tag "$(fq $br two-mode eta_k0)"
             # the same trajectory's particle current (quick: this pair's; paper: fig02's)
@@ -167,8 +165,8 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 # fig02's three runs by each estimator, and its free minus constrained by them
                 f2=fig02_free_a${A}_$tag c2r=fig02_constrained_a${A}_$tag
-                fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"
-                fit $c2r two-mode "$(get $c2r tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit $c2r two-mode "$(get $c2r tcaf_mass_density | cut -f1)" "$L"
                 put fig02_eta_k0_free_exp_a${A}_$tag "$(get $f2 tcaf_eta_k0)"
                 put fig02_eta_k0_free_integral_a${A}_$tag "$(fq $f2 integral eta_k0)"
                 put fig02_eta_k0_constrained_exp_a${A}_$tag "$(get $c2r tcaf_eta_k0)"
@@ -223,7 +221,7 @@ for kind in propagated bound; do
         lattice_pair "$pair" 4
         for sys in free constrained; do
             r=${sys}_a3.53_$tag
-            fit $r exp "$(get $r tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $r exp "$(get $r tcaf_mass_density | cut -f1)" "$L"
             "$ANALYSE" log-ratios $col "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/runs/$r/tcaf_fit_exp.tsv"
         done
     done | "$ANALYSE" geometric-mean "exp_se_${kind}_over_blocks_a3.53" $kind >> "$OUT/summary.tsv"
