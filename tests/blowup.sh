@@ -5,7 +5,8 @@
 # checkpoint, the trajectory's .part file) and an INCOMPLETE marker that records
 # the reason. Cases: inertial fluid at far too large a dt (kinetic temperature),
 # spins with far too small an inertia (rotational temperature), a massless (m = 0)
-# colloid with far too stiff springs (displacement per step). Controls: the same
+# colloid with far too stiff springs and an m = 0 fluid particle with nearly collinear neighbours
+# (displacement per step). Controls: the same
 # scenes at a small dt complete (so each check has power). The default limit: the fluid at
 # dt = 0.15 (12.8 kBT) stops on its thermal temperature, while a driven start-up flow whose
 # whole-system kinetic temperature is 13 kBT completes. Pairs at r -> 0: two
@@ -115,6 +116,42 @@ control spins-ok "$tmp/spins.cfg"
 blowup spins "$tmp/spins.cfg" "rotational temperature" --set 'types.[0].inertia=0.001'
 control colloid-ok "$tmp/colloid.cfg"
 blowup colloid "$tmp/colloid.cfg" "largest displacement per step" --set colloids2d.H=1e6 --set dt=0.05
+# an m = 0 fluid particle whose few neighbours within rc lie nearly on one line: its friction block
+# (the sum of gamma w_D e e^T) is almost rank one, so the force balance sets its velocity across that
+# line only through the small misalignment. Phan-Thien et al.'s own channel and dt (sec3-com-drift's
+# scene), random start, seed 4: at step 2 one particle has three neighbours within rc at nearly one
+# direction and gets |v| = 1852 across it, a displacement of 9.26 in one step (the exact solve, not
+# the iteration: Scheme 1, PCG to 1e-12 and Scheme 2 agree or fail there). Stopped; seed 1 starts.
+# The same edge at the start, in a scene made for it: one m = 0 particle between three frozen ones
+# on a line, the outer two off it by delta (transverse friction ~ delta^2, transverse random force
+# ~ delta: |v| ~ 1 / delta). At delta = 1e-5 the first solve gives a jump of about 2900, which the
+# run made unseen before the check after the first solve (it was left behind by its neighbours,
+# isolated, v = 0 from then on, and the run completed); now it stops at step 0. Controls: delta =
+# 0.1 completes; delta = 0, an exactly rank-one block, takes the pseudo-inverse (no motion across
+# the line) and completes.
+line_scene() {   # line_scene DELTA: the scene on stdout
+    cat <<CFG
+dimension = 2;
+box = [6.0, 6.0];
+dt = 0.005;
+seed = 3;
+steps = 20;
+types = ( { name = "p"; positions = ( [3.0, 3.0] ); },
+          { name = "wall"; frozen = true; positions = ( [2.4, $(awk -v d="$1" 'BEGIN { printf "%.12f", 3 + d }')], [3.6, 3.0], [3.8, $(awk -v d="$1" 'BEGIN { printf "%.12f", 3 - d }')] ); } );
+pairs = ( { types = ["p", "p"]; a = 18.5; gamma = 4.5; s = 0.5; },
+          { types = ["p", "wall"]; a = 18.5; gamma = 4.5; s = 0.5; },
+          { types = ["wall", "wall"]; a = 0.0; gamma = 0.0; interact = false; } );
+overdamped = { solver = "pcg"; stop = "residual"; tolerance = 1e-10; };
+CFG
+}
+line_scene 0.1 > "$tmp/line-0.1.cfg"; line_scene 0 > "$tmp/line-0.cfg"; line_scene 1e-5 > "$tmp/line-1e-5.cfg"
+control m0-line-0.1-ok "$tmp/line-0.1.cfg"
+control m0-line-exact-ok "$tmp/line-0.cfg"
+out=$tmp/m0-line-start; "$DPD" run "$tmp/line-1e-5.cfg" --out "$out" --quiet 2>"$tmp/m0-line-start.err"; st=$?
+stopped m0-line-start "$out" $st 0 "largest displacement per step" "too high"
+com=experiments/phan-thien-2016/sec3-com-drift/com.cfg
+control m0-start-ok "$com" --set seed=1 --set equilibration=0 --set steps=3
+blowup m0-collinear "$com" "largest displacement per step" --set seed=4 --set equilibration=0 --set steps=3
 
 # a non-finite position or velocity stops the run on the step it appears (issue 24, bug 3; before,
 # a nan position was dropped from every pair and kept by the wrap, and the run completed).

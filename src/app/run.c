@@ -290,7 +290,10 @@ static int run_start(Run *r)
     if (r->resumed) {
         /* forces, v_pred and the m = 0 velocities of this step come from the checkpoint */
     } else if (MOD_ON(r->rc.overdamped)) {
+        /* the first move uses these velocities: checked as every later solve is (a particle whose
+         * neighbours start nearly on one line would otherwise jump unseen and leave them behind) */
         status = solve_velocities(r);
+        if (!status) status = run_stop_if_unstable(r, 0);
     } else {
         compute_forces(r, -1, NULL);   /* colloid particles start on their sites */
     }
