@@ -19,7 +19,7 @@ plot PAPER_POINTS("^torque_ratio_row") u ($1 + 0.15):2:3:4 w yerrorbars ls PAPER
 if (gap) {
     set xlabel "l (12^3 box, u = 0.3)"; set xrange [0.85:2.65]; set xtics 0.25
     set ylabel "drag per sphere / eq. 23"; set y2label "fluid density in the gap / bulk"
-    set y2tics; set ytics nomirror; set offsets 0, 0, graph 0.35, graph 0.05
+    set y2tics; set ytics nomirror; set y2range [0:1.6]; set offsets 0, 0, graph 0.35, graph 0.05
     plot res.'/gap_scan.tsv' u 1:5:6 skip 1 w yerrorbars ls OURS t "drag / eq. 23", \
          res.'/gap_scan.tsv' u 1:7:8 skip 1 axes x1y2 w yerrorlines lc rgb 'gray40' pt 6 ps 2 t "gap density (ball of 0.25)"
 }
