@@ -216,7 +216,7 @@ for W in "${ws[@]}"; do
     prev=$W
 done
 read -r v se < <("$ANALYSE" half-pair "$(sget "$T01" cv_noise_total)")
-est_row "fig01 torque" "Green-Kubo (Einstein form): total torque's variance x time / 2 kBT" "10^3, seven spheres at rest, 3 components, 24 x 10 t.u. (tab01 cv runs)" \
+est_row "fig01 torque" "Green-Kubo (Einstein form): total torque's variance x time / 2 kBT" "10^3, seven spheres at rest, 3 components, $(ls -d "$T01"/runs/cv* | wc -l) x 10 t.u. (tab01 cv runs)" \
     $v $se $(cat "$T01"/runs/cv*/summary.tsv | rcpu /dev/stdin $OLD) \
     "friction over eq. 18: $("$ANALYSE" fmt "%.3f +- %.3f" "$(get . gk_rotational_friction_over_eq18)") (driven, Omega = -0.4: $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$F01" torque_ratio_gS5.5)"))" no
 vr=$(get . twin_rot_variance_ratio_0.25_0.5 | cut -f1)
