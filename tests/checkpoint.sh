@@ -133,7 +133,23 @@ rm -rf "$tmp/trunc"
 pid=$!; for _ in $(seq 6000); do [ -e "$tmp/trunc/checkpoint.dpd" ] && break; kill -0 $pid 2>/dev/null || break; sleep 0.01; done
 kill -TERM $pid; wait $pid
 cp -r "$tmp/trunc" "$tmp/foreign"
+# dpd checkpoint-info: how far the interrupted run got, as the file says it (the step read directly
+# at its offset 24, after the 24-byte header; the time, step x dt; the particles, the header's count)
+info() { "$DPD" checkpoint-info "$1" 2>/dev/null | awk -F'\t' -v q="$2" '$1 == q { print $2 }'; }
+raw_step=$(od -An -t u8 -j 24 -N 8 "$tmp/trunc/checkpoint.dpd" | tr -d ' ')
+raw_n=$(od -An -t u4 -j 20 -N 4 "$tmp/trunc/checkpoint.dpd" | tr -d ' ')
+check "checkpoint-info: the step ($(info "$tmp/trunc" step), where SIGTERM stopped it) is the file's" \
+    test "$(info "$tmp/trunc" step)" = "$raw_step" -a "$raw_step" -gt 0
+check "checkpoint-info: the time is step x dt, the particles the header's" \
+    awk -v t="$(info "$tmp/trunc/checkpoint.dpd" time)" -v s="$raw_step" -v dt="$(awk '/^dt/ { gsub(/[^0-9.e-]/, "", $3); print $3 }' "$scene")" \
+        -v n="$(info "$tmp/trunc" particles)" -v rn="$raw_n" 'BEGIN { exit !(t > 0 && (t - s * dt) ^ 2 < 1e-18 && n == rn && n > 0) }'
+"$DPD" checkpoint-info "$tmp" 2>"$tmp/err"; st=$?
+check "checkpoint-info: no checkpoint there, status 2, named" bash -c "[ $st -eq 2 ] && grep -q 'no checkpoint $tmp/checkpoint.dpd' '$tmp/err'"
+"$DPD" checkpoint-info "$scene" 2>"$tmp/err"; st=$?
+check "checkpoint-info: a scene file is not a checkpoint, status 2" bash -c "[ $st -eq 2 ] && grep -q 'is not a dpd checkpoint' '$tmp/err'"
 truncate -s 1000 "$tmp/trunc/checkpoint.dpd"
+"$DPD" checkpoint-info "$tmp/trunc" 2>"$tmp/err"; st=$?
+check "checkpoint-info: a truncated checkpoint, status 2, corrupt" bash -c "[ $st -eq 2 ] && grep -q 'checkpoint.dpd is corrupt' '$tmp/err'"
 "$DPD" run "$scene" --out "$tmp/trunc" --quiet --resume 2>"$tmp/err"; st=$?
 check "truncated checkpoint: status 2, named, no result" test $st -eq 2 -a ! -e "$tmp/trunc/summary.tsv"
 check "truncated checkpoint: message" grep -q 'checkpoint.dpd is corrupt' "$tmp/err"

@@ -9,6 +9,8 @@
 #include "lengthscale.h"
 #include "poiseuille.h"
 #include "transverse_relaxation.h"
+#include "checkpoint.h"
+#include <sys/stat.h>
 
 #ifndef DPD_GIT
 #define DPD_GIT "unknown"
@@ -29,6 +31,9 @@ static void usage(FILE *f)
         "      seconds after the last one; --resume continues from it, bit for bit;\n"
         "      --dry-run sets the scene up and prints its particles and steps (the cost\n"
         "      of a run is about particles x steps), writing nothing\n"
+        "  dpd checkpoint-info DIR|FILE\n"
+        "      the step, time, particle count and format of a run's checkpoint (DIR/checkpoint.dpd),\n"
+        "      its checksum verified, as quantity/value rows: how far an interrupted run got\n"
         "  dpd params --eta ETA --Sc SC [--dim 3] [--n 4] [--rc 1.5] [--m 1] [--kBT 1]\n"
         "      s and gamma that impose a viscosity and a Schmidt number (Mai-Duy et al.\n"
         "      2019, eqs 14-21), as quantity/value/stderr rows\n"
@@ -90,6 +95,26 @@ static int cmd_params(int argc, char **argv)
     return 0;
 }
 
+/* dpd checkpoint-info DIR|FILE: what the checkpoint says of itself (checkpoint.h CheckpointInfo).
+ * 0, 1 (usage) or 2 (no checkpoint there, or not a sound one). */
+static int cmd_checkpoint_info(int argc, char **argv)
+{
+    if (argc != 1) { fprintf(stderr, "dpd checkpoint-info: need one run directory or checkpoint file\n"); return 1; }
+    char path[4200];
+    struct stat st;
+    if (stat(argv[0], &st) == 0 && S_ISDIR(st.st_mode)) snprintf(path, sizeof path, "%s/%s", argv[0], CHECKPOINT_FILE);
+    else snprintf(path, sizeof path, "%s", argv[0]);
+    CheckpointInfo ci;
+    char err[1400];
+    if (checkpoint_info(path, &ci, err, sizeof err)) { fprintf(stderr, "dpd checkpoint-info: %s\n", err); return 2; }
+    printf("quantity\tvalue\n");
+    printf("step\t%llu\n", (unsigned long long)ci.step);
+    printf("time\t%.10g\n", ci.time);
+    printf("particles\t%u\n", (unsigned)ci.particles);
+    printf("format\t%u\n", (unsigned)ci.version);
+    return 0;
+}
+
 /* The options of dpd run that take a value. */
 static int takes_value(const char *a)
 {
@@ -109,6 +134,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "wavelengths")) return cmd_wavelengths(argc - 2, argv + 2);
     if (!strcmp(argv[1], "tcaf-fit")) return cmd_tcaf_fit(argc - 2, argv + 2);
     if (!strcmp(argv[1], "fit-poiseuille")) return poiseuille_command(argc - 2, argv + 2);
+    if (!strcmp(argv[1], "checkpoint-info")) return cmd_checkpoint_info(argc - 2, argv + 2);
     if (strcmp(argv[1], "run")) { fprintf(stderr, "dpd: unknown command '%s'\n", argv[1]); usage(stderr); return 1; }
     RunOptions opt = {.outdir = "out"};
     int rc = 1;

@@ -222,40 +222,74 @@ int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, cons
     return 0;
 }
 
-int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborList *nl,
-                    Measure *m, CheckpointExtra *x, char *err, size_t errlen)
+/* The content of the checkpoint file at path, its checksum verified and stripped: 0 (*buf malloc'd,
+ * *len its bytes), 1 (no such file) or -1 with err set. */
+static int read_verified(const char *path, char **buf, size_t *len, char *err, size_t errlen)
 {
-    char path[1100];
-    snprintf(path, sizeof path, "%s/%s", dir, CHECKPOINT_FILE);
     FILE *f = fopen(path, "rb");
     if (!f) {
         if (errno == ENOENT) return 1;
         snprintf(err, errlen, "cannot open the checkpoint %s: %s", path, strerror(errno));
         return -1;
     }
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *mem = open_memstream(&buf, &len);
+    *buf = NULL;
+    *len = 0;
+    FILE *mem = open_memstream(buf, len);
     if (!mem) { fclose(f); snprintf(err, errlen, "out of memory reading %s", path); return -1; }
     char chunk[65536];
     size_t got;
     while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) fwrite(chunk, 1, got, mem);
     const int rerr = ferror(f);
     fclose(f);
-    if (fclose(mem) || rerr) { free(buf); snprintf(err, errlen, "cannot read the checkpoint %s", path); return -1; }
+    if (fclose(mem) || rerr) { free(*buf); snprintf(err, errlen, "cannot read the checkpoint %s", path); return -1; }
     uint64_t sum;
-    if (len < sizeof sum + 8) {
-        free(buf);
-        snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, len);
+    if (*len < 8 || memcmp(*buf, MAGIC, 8)) {   /* another file: no advice to delete it */
+        free(*buf);
+        snprintf(err, errlen, "%s is not a dpd checkpoint", path);
         return -1;
     }
-    memcpy(&sum, buf + len - sizeof sum, sizeof sum);
-    len -= sizeof sum;
-    if (checkpoint_hash(buf, len, 0) != sum) {
-        free(buf);
+    if (*len < sizeof sum + 8) {
+        free(*buf);
+        snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, *len);
+        return -1;
+    }
+    memcpy(&sum, *buf + *len - sizeof sum, sizeof sum);
+    *len -= sizeof sum;
+    if (checkpoint_hash(*buf, *len, 0) != sum) {
+        free(*buf);
         snprintf(err, errlen, "checkpoint %s is corrupt (checksum mismatch); delete it to start afresh", path);
         return -1;
     }
+    return 0;
+}
+
+int checkpoint_info(const char *path, CheckpointInfo *ci, char *err, size_t errlen)
+{
+    char *buf;
+    size_t len;
+    const int got = read_verified(path, &buf, &len, err, errlen);
+    if (got == 1) snprintf(err, errlen, "no checkpoint %s", path);
+    if (got) return -1;
+    Io io = {.reading = 1, .in = (const unsigned char *)buf, .len = len};
+    uint64_t h = 0;
+    char magic[8] = {0};
+    header(&io, &h, &ci->version, &ci->particles, magic);
+    io_bytes(&io, &ci->step, sizeof ci->step, "step");   /* system_io's first two fields */
+    io_bytes(&io, &ci->time, sizeof ci->time, "time");
+    free(buf);
+    if (io.bad || memcmp(magic, MAGIC, 8)) { snprintf(err, errlen, "%s is not a dpd checkpoint", path); return -1; }
+    return 0;
+}
+
+int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborList *nl,
+                    Measure *m, CheckpointExtra *x, char *err, size_t errlen)
+{
+    char path[1100];
+    snprintf(path, sizeof path, "%s/%s", dir, CHECKPOINT_FILE);
+    char *buf;
+    size_t len;
+    const int got = read_verified(path, &buf, &len, err, errlen);
+    if (got) return got;
     Io io = {.reading = 1, .in = (const unsigned char *)buf, .len = len};
     uint64_t h = 0;
     uint32_t version = 0, n = 0;

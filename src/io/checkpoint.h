@@ -55,6 +55,13 @@ int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, cons
 int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborList *nl,
                     Measure *m, CheckpointExtra *x, char *err, size_t errlen);
 
+/* What a checkpoint file says of itself, without the scene it was written for: its format version,
+ * particle count, and the step and time at which it was written (for progress reports: dpd
+ * checkpoint-info, tools/in-flight). Its checksum is verified. 0, or -1 with err set (no such file,
+ * not a dpd checkpoint, truncated, corrupt). */
+typedef struct { uint32_t version, particles; uint64_t step; double time; } CheckpointInfo;
+int checkpoint_info(const char *path, CheckpointInfo *ci, char *err, size_t errlen);
+
 /* The final state by stable id, one row per particle: id, x, y, z (wrapped),
  * image counters, vx, vy, vz (10 columns, malloc'd; NULL if out of memory).
  * Stored in run.h5 as /results/final_state, so that two runs can be compared
