@@ -12,28 +12,20 @@ cd "$(dirname "$0")/.."
 tool=$PWD/tools/in-flight
 root=$tmp/tree; exp=$root/experiments/p/e; runs=$root/results/p/e/.paper.partial/runs
 mkdir -p "$exp" "$runs"
-cat > "$exp/fluid.cfg" <<'CFG'
-dimension = 3;
-box = [5.0, 5.0, 5.0];
-dt = 0.01;
-seed = 7;
-equilibration = 10;
-steps = 200;
-types = ( { name = "w"; density = 3.0; } );
-pairs = ( { types = ["w", "w"]; a = 25.0; gamma = 4.5; } );
-CFG
+cp tests/good-scene.cfg "$exp/fluid.cfg"   # a small fluid
 # record NAME ARG...: a simulation's recorded command, as tools/run-simulation keeps it
 record() { local d=$runs/$1; shift; mkdir -p "$d"; printf '%s\n' fluid.cfg "$@" > "$d/.args"; printf '%s\n' "$exp" > "$d/.cwd"; }
 # stopped: interrupted by SIGTERM once it wrote a checkpoint (steps raised so that it cannot end first)
-record stopped --set steps=1000000
-(cd "$exp" && exec "$DPD" run fluid.cfg --set steps=1000000 --out "$runs/stopped" --quiet --checkpoint-every 20) 2>/dev/null &
+long=(--set equilibration=10 --set steps=1000000)
+record stopped "${long[@]}"
+(cd "$exp" && exec "$DPD" run fluid.cfg "${long[@]}" --out "$runs/stopped" --quiet --checkpoint-every 20) 2>/dev/null &
 pid=$!; wait_for "$runs/stopped/checkpoint.dpd" $pid; sleep 0.2; kill -TERM $pid; wait $pid
 # running: the same, left running while the tool looks
-record running --set steps=1000000
-(cd "$exp" && exec "$DPD" run fluid.cfg --set steps=1000000 --out "$runs/running" --quiet --checkpoint-every 20) 2>/dev/null &
+record running "${long[@]}"
+(cd "$exp" && exec "$DPD" run fluid.cfg "${long[@]}" --out "$runs/running" --quiet --checkpoint-every 20) 2>/dev/null &
 rpid=$!; wait_for "$runs/running/checkpoint.dpd" $rpid
 # queued: recorded, never started; finished: has its summary; no-args: planned, nothing recorded yet
-record queued --set seed=9
+record queued --set equilibration=10 --set steps=200
 record finished; : > "$runs/finished/summary.tsv"
 mkdir -p "$runs/no-args"
 # another tier's: quick
