@@ -51,6 +51,7 @@ printf 'x' | dd of="$runs/stopped/checkpoint.dpd" bs=1 seek=100 conv=notrunc 2>/
 DPD_ROOT=$root DPD_BIN=$DPD "$tool" paper > /dev/null 2> "$tmp/err"; st=$?
 if [ $st -eq 1 ] && grep -q 'stopped/checkpoint.dpd is corrupt' "$tmp/err"; then ok "a corrupt checkpoint: exit 1, named"; else bad "corrupt" "$st: $(cat "$tmp/err")"; fi
 # nothing in flight: the header alone
+mkdir -p "$tmp/empty"
 DPD_ROOT=$tmp/empty DPD_BIN=$DPD "$tool" > "$tmp/out" 2>&1; st=$?
 if [ $st -eq 0 ] && [ "$(wc -l < "$tmp/out")" -eq 1 ]; then ok "nothing in flight: the header alone"; else bad "empty" "$st: $(cat "$tmp/out")"; fi
 echo "$pass passed, $fail failed"

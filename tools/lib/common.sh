@@ -13,6 +13,14 @@ BANDS_AWK="$_dpd_lib_dir/bands.awk"
 # the tier and the simulator binary's sha256; tools/run-experiment resumes only with the same one
 partial_stamp() { { echo "tier $1"; sha256sum "$2" | cut -c1-64; } | sha256sum | cut -c1-64; }
 die() { echo "$(basename "$0"): $*" >&2; exit 2; }
+# recorded_size DIR DPD: `DPD run --dry-run` of the simulation recorded in run directory DIR (its scene
+# and arguments, one per line in DIR/.args, relative to the directory in DIR/.cwd): the particles,
+# equilibration and steps rows on stdout, and its status (tools/plan, tools/cost, tools/in-flight)
+recorded_size() {
+    local a
+    mapfile -t a < "$1/.args"
+    (cd "$(cat "$1/.cwd")" && "$2" run "${a[0]}" --dry-run "${a[@]:1}")
+}
 
 # normalise an experiment id: strip experiments/ or results/ prefix, trailing /
 norm_id() {
