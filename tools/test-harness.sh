@@ -1103,6 +1103,9 @@ else bad "SIGKILLed make: simulations did not start" "$root/make.out"; fi
 sq=$root/fake-slurm; mkdir -p "$sq/bin"
 cat > "$sq/bin/sbatch" <<'EOF2'
 #!/usr/bin/env bash
+# two simulations submit at once: the job number is read and written under a lock, or both read
+# a half-written file and one gets job 1, which no state file names (it then runs for ever)
+exec 9> "$FAKE_SQ/next.lock"; flock 9
 n=$(( $(cat "$FAKE_SQ/next" 2>/dev/null || echo 100) + 1 )); echo $n > "$FAKE_SQ/next"
 for a in "$@"; do case $a in --job-name=*) echo "${a#--job-name=}" > "$FAKE_SQ/$n.name" ;; esac; done
 echo "sbatch $n" >> "$FAKE_LOG"; echo "$n"
