@@ -1156,6 +1156,40 @@ T "cost class: shear rate 0 is no shear" 0 "$cc" class "$root/one.cfg" --set she
 sed 's/s = 0.42; //' "$root/one.cfg" > "$root/std.cfg"
 T "cost class: s = 2" 0 "$cc" class "$root/std.cfg"; has "cost class: standard" '^standard$'
 
+# tools/cost rates: a committed run's CPU is brought to the scale of the binary bench/speedup.tsv
+# measures against. A git history base -> new -> later, and a side branch off base: speedup.tsv names
+# new (with -dirty, as bench.sh writes it) and pow's factor 0.5. Four runs of one pow scene, 100 CPU s
+# for 1000 particle-steps each: made at base (0.1 per particle-step), at new and at later
+# (descendants: 0.1 / 0.5 = 0.2), and on the side branch (not a descendant: 0.1); and one at later whose
+# scene its analysis made (not in the experiment: kept at 0.1). Each run its own experiment, so the
+# rate of each is printed alone.
+CR=$root/cost-git; rm -rf "$CR"; mkdir -p "$CR/tools/lib" "$CR/bench"
+cp "$tools/cost" "$CR/tools/"; cp "$tools/lib/common.sh" "$CR/tools/lib/"
+gitq() { git -C "$CR" -c user.name=t -c user.email=t@t -c init.defaultBranch=main "$@" >/dev/null; }
+gitq init; gitq commit --allow-empty -m base; c_base=$(git -C "$CR" rev-parse HEAD)
+gitq commit --allow-empty -m new; c_new=$(git -C "$CR" rev-parse HEAD)
+gitq commit --allow-empty -m later; c_later=$(git -C "$CR" rev-parse HEAD)
+gitq checkout -b side "$c_base"; gitq commit --allow-empty -m side; c_side=$(git -C "$CR" rev-parse HEAD)
+printf 'class\tcpu_time_new_over_base\trange\tscene\npow\t0.5\t0.5-0.5\ts.cfg\ndate, commits\t2026-01-01\t%s-dirty\n' "$c_new" > "$CR/bench/speedup.tsv"
+costrun() { # costrun EXP COMMIT SCENE
+    local e=$CR/experiments/c/$1 r=$CR/results/c/$1/paper/runs/a
+    mkdir -p "$e" "$r"; cp "$root/one.cfg" "$e/s.cfg"
+    printf '%s\n' "$3" > "$r/.args"
+    printf 'key\tvalue\ngit_commit\t%s\n' "$2" > "$r/provenance.tsv"
+    printf 'quantity\tvalue\tstderr\nparticles\t10\t0\nsteps\t100\t0\ncpu_seconds\t100\t0\n' > "$r/summary.tsv"
+    cp "$r/summary.tsv" "$CR/results/c/$1/paper/summary.tsv"
+}
+costrun at-base "$c_base" s.cfg; costrun at-new "$c_new-dirty" s.cfg; costrun at-later "$c_later" s.cfg
+costrun at-side "$c_side" s.cfg; costrun made "$c_later" made-by-analysis.cfg
+T "cost rates: a git history with bench/speedup.tsv" 0 "$CR/tools/cost" rates
+rate_of() { awk -F'\t' -v e="c/$1" '$1 == e { print $4 }' "$root/out"; }
+for x in "at-base 0.1" "at-new 0.2" "at-later 0.2" "at-side 0.1" "made 0.1"; do
+    read -r e want <<< "$x"
+    [ "$(rate_of "$e")" = "$want" ] && ok "cost rates: run made at $e: $want CPU-s per particle-step" || bad "cost rates: $e: $(rate_of "$e"), wanted $want" "$root/out"
+done
+T "cost rates: COST_SPEEDUP=0" 0 env COST_SPEEDUP=0 "$CR/tools/cost" rates
+[ "$(rate_of at-later)" = 0.1 ] && ok "cost rates: COST_SPEEDUP=0, no scaling" || bad "cost rates: COST_SPEEDUP=0: $(rate_of at-later)" "$root/out"
+
 # tools/progress: the line of make figures / make reproduce from a projection, the plans and the ledger.
 # A: three projected simulations (100, 100, 200 CPU s), of which a1 and a2 are planned (a3 was kept
 # from an earlier attempt); B: two (50, 50). a1 finishes after two attempts, 150 CPU s, 50 s after the
