@@ -90,6 +90,8 @@ mkexp x/nores <<< "$(tab q quick claim 0 1 - - - fixture)"
 mkexp x/incomplete <<< "$(tab q quick claim 0 1 - - - fixture)"
 mkres x/incomplete quick 6 <<< "$(tab q 0.5 0)"
 touch "$root/results/x/incomplete/quick/INCOMPLETE"
+# a method study: no bands.tsv, a committed paper tier (no claims, not "not run")
+mkdir -p "$root/experiments/x/method"; mkres x/method paper 7200 <<< "$(tab m 1 0)"
 mkexp x/wide <<EOF2
 $(tab tight quick claim 0.9 1.1 - - 1 'band 0.2 wide, error 0.5: unresolved')
 $(tab zero quick gate 0 0 3 1 0 'an exact gate: |0.1| <= 3 x 0.5, se 0.5 <= resolution 1')
@@ -367,7 +369,7 @@ if [ -f "$G" ]; then
     # 4321.5 s = 1.20 h; 4321.5 + 2 (quick) = 4323.5; 4321.5 + 7 = 4328.5 s = 1.20 h
     in_file "paper-filter: CPU-hours" "$G" '; hours 1.2; '
     in_file "paper-filter: CPU of several experiments summed, a tier other than paper marked" "$G" '; total 4324 (quick tier) s, 1.2 h\.$'
-    in_file "paper-filter: one sentence per paper from the verdicts" "$G" '^- \*\*x\*\*: 2 of 13 experiments reproduce (\[Re\]), 1 in part (\[~Re\]), 2 not (\[¬Re\]), 2 undecided (unresolved), 1 invalid (a gate does not pass), 2 not run, 1 not yet built, '
+    in_file "paper-filter: one sentence per paper from the verdicts" "$G" '^- \*\*x\*\*: 2 of 14 experiments reproduce (\[Re\]), 1 in part (\[~Re\]), 2 not (\[¬Re\]), 2 undecided (unresolved), 1 invalid (a gate does not pass), 2 not run, 1 run without claims (a method study), 1 not yet built, '
     in_file "paper-filter: the summary's claims table" "$G" '^| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |$'
     in_file "paper-filter: a claim group's row, the experiment linked to its section, its verdict coloured" "$G" \
         '^| \[`x/y`\](#exp-x-y) \[\[Re\]\]{\.verdict \.pass} | \*\*eta\*\*: eta, "close to the input" | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | \[PASS\]{\.outcome \.pass} | none | paper | 1.2 |$'
@@ -376,6 +378,7 @@ if [ -f "$G" ]; then
         '^| \[`x/rule`\](#exp-x-rule) \[\[~Re\]\]{\.verdict \.partial} | \*\*all\*\*: every claim of the fixture | - | worst of 6: `out` 2.3 ± 0.1 | \[1, 2\] | \[2 PASS\]{\.outcome \.pass} \[1 FAIL\]{\.outcome \.fail} \[3 UNRESOLVED\]{\.outcome \.unresolved} | none | quick |'
     in_file "paper-filter: a gate that does not pass: invalid in the gates column" "$G" '^| `x/gates` \[invalid\]{\.verdict \.fail} | .* | \*\*invalid\*\* (2 / 3) | quick |'
     in_file "paper-filter: an experiment not run: one row" "$G" '^| `x/nores` \[not run\]{\.verdict \.other} | - | - | - | - | - | - | - | - |$'
+    in_file "paper-filter: a method study without bands: no claims, its tier and CPU" "$G" '^| `x/method` \[no claims\]{\.verdict \.other} | - | - | - | - | - | none | paper | 2 |$'
     in_file "paper-filter: the section's heading gets the anchor" "$G" '^## x/y: the fixture experiment as a card {#exp-x-y}$'
     in_file "paper-filter: a card's verdict line" "$G" '^\*\*Verdict:\*\* \[\[Re\]\]{\.verdict \.pass} (paper tier; claims 2 pass, 0 fail, 0 unresolved; gates none; 1.2 CPU-hours)$'
     in_file "paper-filter: a card's claims table" "$G" '^| \*\*eta\*\*: eta, "close to the input" | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | \[PASS\]{\.outcome \.pass} |$'
@@ -384,7 +387,7 @@ if [ -f "$G" ]; then
     in_file "paper-filter: bench file absent: not measured" "$G" '; not measured (run `make bench`); '
     in_file "paper-filter: bench row absent: not measured" "$G" '; not measured (run `make bench`)\.$'
     # x/y 4321.5 s + x/paperonly 7 s = 1.2024 h
-    in_file "paper-filter: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 1.20 h (2 experiments)\.$"
+    in_file "paper-filter: paper-tier CPU hours per paper from provenance" "$G" "^Paper tier, CPU time.*\`x\` 3.20 h (3 experiments)\.$"
     # every number of the summary table traced to the files: the CPU seconds to the tier's
     # provenance.tsv, the claim and gate counts to the bands evaluated on its summary.tsv
     # (lib/bands.awk); then every provenance CPU changed: every CPU cell follows

@@ -264,6 +264,17 @@ local function verdict_of(id)
     if not exists(ROOT .. '/experiments/' .. id) then
         return { tier = '-', verdict = 'not yet built', cp = 0, cf = 0, cu = 0, cm = 0, gp = 0, gt = 0, rp = 0, rt = 0, decide = '-', worst = '-', cpu = '-' }
     end
+    -- a method study without bands.tsv (tools/check lists only experiments with one): run, but no
+    -- claims to decide; its tier is the highest committed (before, the table said "not run")
+    if not exists(ROOT .. '/experiments/' .. id .. '/bands.tsv') then
+        for _, t in ipairs({ 'paper', 'reduced', 'quick' }) do
+            if valid_result(id, t) then
+                local cpu = provenance(id, t, 'cpu_seconds')
+                return { tier = t, verdict = 'no claims', cp = 0, cf = 0, cu = 0, cm = 0, gp = 0, gt = 0, rp = 0, rt = 0,
+                         decide = '-', worst = '-', cpu = cpu ~= '' and cpu or '-' }
+            end
+        end
+    end
     return { tier = '-', verdict = 'not run', cp = 0, cf = 0, cu = 0, cm = 0, gp = 0, gt = 0, rp = 0, rt = 0, decide = '-', worst = '-', cpu = '-' }
 end
 
@@ -443,7 +454,7 @@ local function paper_sentences(ids)
         local parts = { string.format('%d of %d experiments reproduce ([Re])', b.v['[Re]'] or 0, b.n) }
         local function add(key, what) if (b.v[key] or 0) > 0 then parts[#parts + 1] = string.format('%d %s', b.v[key], what) end end
         add('[~Re]', 'in part ([~Re])'); add('[¬Re]', 'not ([¬Re])'); add('unresolved', 'undecided (unresolved)')
-        add('invalid', 'invalid (a gate does not pass)'); add('not run', 'not run'); add('not yet built', 'not yet built')
+        add('invalid', 'invalid (a gate does not pass)'); add('not run', 'not run'); add('no claims', 'run without claims (a method study)'); add('not yet built', 'not yet built')
         add('missing', 'with a value missing'); add('bad bands', 'with malformed bands')
         out[#out + 1] = string.format('- **%s**: %s; of their %d claims %d pass, %d fail and %d are unresolved; %.3g CPU-hours.',
             p, table.concat(parts, ', '), b.cp + b.cf + b.cu, b.cp, b.cf, b.cu, b.cpu / 3600)
