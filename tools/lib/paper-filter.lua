@@ -364,6 +364,7 @@ local function row_ours(r)
 end
 local function row_band(r) return '[' .. r[5] .. ', ' .. r[6] .. ']' end
 local function row_distance(r)
+    if r[3] ~= '-' and not is_number(r[3]) then return -2 end   -- no finite value: worst only if none has one
     if r[10] == 'inf' then return math.huge end
     return is_number(r[10]) and awk_number(r[10]) or -1
 end
@@ -371,7 +372,8 @@ end
 -- one row per claim group of ID at TIER, in the order of its claims.tsv: the group's name,
 -- statement and paper number; its rows' outcomes counted (XFAIL is a FAIL, one already known);
 -- one row: our value, the band and the outcome; several: the counts, and the row farthest from its
--- band's centre (the worst, or for a group that passes the closest to an edge). Claims of no group
+-- band's centre (the worst, or for a group that passes the closest to an edge), among the rows with a
+-- finite value if any has one (the count of those without, nan or inf, said beside it). Claims of no group
 -- (claims.tsv broken: an error, reported) come last, one group each.
 local function group_rows(id, tier)
     local g = claim_groups(id)
@@ -408,6 +410,9 @@ local function group_rows(id, tier)
                 if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then row.outcome = row.outcome .. ' (×' .. r[15] .. ' run)' end
             else
                 row.ours = 'worst of ' .. #grp.rows .. ': `' .. worst[2] .. '` ' .. row_ours(worst)
+                local novalue = 0
+                for _, r in ipairs(grp.rows) do if r[3] ~= '-' and not is_number(r[3]) then novalue = novalue + 1 end end
+                if novalue > 0 and novalue < #grp.rows then row.ours = row.ours .. string.format(' (%d without a finite value)', novalue) end
                 row.band = row_band(worst)
                 local parts = {}
                 for _, o in ipairs({ 'PASS', 'FAIL', 'UNRESOLVED' }) do
@@ -465,7 +470,7 @@ end
 local CLAIMS_CAPTION = 'The paper\'s number as the paper prints it; ours ± its standard error; the band (the paper\'s'
     .. ' number with its tolerance); the outcome under the decision rule (pass: value ± 2 stderr inside the band; fail:'
     .. ' wholly outside; unresolved: neither). A group of several rows shows its counts and its worst row (the farthest'
-    .. ' from its band\'s centre).'
+    .. ' from its band\'s centre, among the rows with a finite value).'
 
 -- the claims table of the summary: per experiment one row per claim group, with its verdict, gates,
 -- tier and CPU-hours on its first row, and a link to its section
