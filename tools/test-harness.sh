@@ -81,12 +81,21 @@ EOF2
 mkexp x/nan <<EOF2
 $(tab vnan quick claim 0 1 - - - 'nan value')
 $(tab vinf quick claim 0 1 - - - 'inf value')
-$(tab vfin quick claim 0 1 - - - 'a finite value beside them: shown as the worst row')
+$(tab vfin quick claim 0 1 - - - 'a finite value beside them, failing too: shown as the worst row')
 EOF2
 mkres x/nan quick 5 <<EOF2
 $(tab vnan nan 0.1)
 $(tab vinf inf 0)
-$(tab vfin 0.5 0.1)
+$(tab vfin 1.5 0.1)
+EOF2
+# a group's worst row sets its outcome: an unresolved row near the centre before a pass near an edge
+mkexp x/rank <<EOF2
+$(tab p quick claim 0 10 - - - 'passes near an edge')
+$(tab u quick claim 0 10 - - - 'unresolved at the centre')
+EOF2
+mkres x/rank quick 1 <<EOF2
+$(tab p 9.5 0.1)
+$(tab u 5 3)
 EOF2
 mkexp x/nores <<< "$(tab q quick claim 0 1 - - - fixture)"
 mkexp x/incomplete <<< "$(tab q quick claim 0 1 - - - fixture)"
@@ -371,7 +380,7 @@ if [ -f "$G" ]; then
     # 4321.5 s = 1.20 h; 4321.5 + 2 (quick) = 4323.5; 4321.5 + 7 = 4328.5 s = 1.20 h
     in_file "paper-filter: CPU-hours" "$G" '; hours 1.2; '
     in_file "paper-filter: CPU of several experiments summed, a tier other than paper marked" "$G" '; total 4324 (quick tier) s, 1.2 h\.$'
-    in_file "paper-filter: one sentence per paper from the verdicts" "$G" '^- \*\*x\*\*: 2 of 14 experiments reproduce (\[Re\]), 2 in part (\[~Re\]), 1 not (\[¬Re\]), 2 undecided (unresolved), 1 invalid (a gate does not pass), 2 not run, 1 run without claims (a method study), 1 not yet built, '
+    in_file "paper-filter: one sentence per paper from the verdicts" "$G" '^- \*\*x\*\*: 2 of 15 experiments reproduce (\[Re\]), 1 in part (\[~Re\]), 2 not (\[¬Re\]), 3 undecided (unresolved), 1 invalid (a gate does not pass), 2 not run, 1 run without claims (a method study), 1 not yet built, '
     in_file "paper-filter: the summary's claims table" "$G" '^| experiment | claim | paper | ours | band | outcome | gates | tier | CPU-h |$'
     in_file "paper-filter: a claim group's row, the experiment linked to its section, its verdict coloured" "$G" \
         '^| \[`x/y`\](#exp-x-y) \[\[Re\]\]{\.verdict \.pass} | \*\*eta\*\*: eta, "close to the input" | 29.08 | 30.9 ± 0.3 | \[28.5, 32.5\] | \[PASS\]{\.outcome \.pass} | none | paper | 1.2 |$'
@@ -380,7 +389,8 @@ if [ -f "$G" ]; then
         '^| \[`x/rule`\](#exp-x-rule) \[\[~Re\]\]{\.verdict \.partial} | \*\*all\*\*: every claim of the fixture | - | worst of 6: `out` 2.3 ± 0.1 | \[1, 2\] | \[2 PASS\]{\.outcome \.pass} \[1 FAIL\]{\.outcome \.fail} \[3 UNRESOLVED\]{\.outcome \.unresolved} | none | quick |'
     in_file "paper-filter: a gate that does not pass: invalid in the gates column" "$G" '^| `x/gates` \[invalid\]{\.verdict \.fail} | .* | \*\*invalid\*\* (2 / 3) | quick |'
     in_file "paper-filter: an experiment not run: one row" "$G" '^| `x/nores` \[not run\]{\.verdict \.other} | - | - | - | - | - | - | - | - |$'
-    in_file "paper-filter: a group's worst row is one with a value; those without are counted" "$G" '^| `x/nan` \[\[~Re\]\]{\.verdict \.partial} | \*\*all\*\*: every claim of the fixture | - | worst of 3: `vfin` 0.5 ± 0.1 (2 without a finite value) | \[0, 1\] | \[1 PASS\]{\.outcome \.pass} \[2 FAIL\]{\.outcome \.fail} | none | quick |'
+    in_file "paper-filter: a group's worst row is one with a finite value; those without are counted" "$G" '^| `x/nan` \[\[¬Re\]\]{\.verdict \.fail} | \*\*all\*\*: every claim of the fixture | - | worst of 3: `vfin` 1.5 ± 0.1 (2 without a finite value) | \[0, 1\] | \[3 FAIL\]{\.outcome \.fail} | none | quick |'
+    in_file "paper-filter: a group's worst row is one of its worst outcome (unresolved before a pass nearer an edge)" "$G" '^| `x/rank` \[unresolved\]{\.verdict \.unresolved} | \*\*all\*\*: every claim of the fixture | - | worst of 2: `u` 5 ± 3 | \[0, 10\] | \[1 PASS\]{\.outcome \.pass} \[1 UNRESOLVED\]{\.outcome \.unresolved} | none | quick |'
     in_file "paper-filter: a method study without bands: no claims, its tier and CPU" "$G" '^| `x/method` \[no claims\]{\.verdict \.other} | - | - | - | - | - | none | paper | 2 |$'
     in_file "paper-filter: the section's heading gets the anchor" "$G" '^## x/y: the fixture experiment as a card {#exp-x-y}$'
     in_file "paper-filter: a card's verdict line" "$G" '^\*\*Verdict:\*\* \[\[Re\]\]{\.verdict \.pass} (paper tier; claims 2 pass, 0 fail, 0 unresolved; gates none; 1.2 CPU-hours)$'

@@ -369,11 +369,21 @@ local function row_distance(r)
     return is_number(r[10]) and awk_number(r[10]) or -1
 end
 
+-- the outcome's rank for a group's worst row: a failing row before an unresolved one before a pass
+-- (so the row shown is one that sets the group's outcome), anything else (missing, malformed) first
+local OUTCOME_RANK = { PASS = 1, UNRESOLVED = 2, FAIL = 3, XFAIL = 3 }
+local function worse_than(r, w)
+    local a, b = OUTCOME_RANK[r[9]] or 4, OUTCOME_RANK[w[9]] or 4
+    if a ~= b then return a > b end
+    return row_distance(r) > row_distance(w)
+end
+
 -- one row per claim group of ID at TIER, in the order of its claims.tsv: the group's name,
 -- statement and paper number; its rows' outcomes counted (XFAIL is a FAIL, one already known);
--- one row: our value, the band and the outcome; several: the counts, and the row farthest from its
--- band's centre (the worst, or for a group that passes the closest to an edge), among the rows with a
--- finite value if any has one (the count of those without, nan or inf, said beside it). Claims of no group
+-- one row: our value, the band and the outcome; several: the counts, and the worst row: of the
+-- worst outcome (worse_than), the one farthest from its band's centre (for a group that passes, the
+-- closest to an edge), among the rows with a finite value if any has one (the count of those
+-- without, nan or inf, said beside it). Claims of no group
 -- (claims.tsv broken: an error, reported) come last, one group each.
 local function group_rows(id, tier)
     local g = claim_groups(id)
@@ -398,7 +408,7 @@ local function group_rows(id, tier)
                     if not c[o .. '?'] then others[#others + 1] = o end
                     c[o .. '?'] = (c[o .. '?'] or 0) + 1
                 end
-                if not worst or row_distance(r) > row_distance(worst) then worst = r end
+                if not worst or worse_than(r, worst) then worst = r end
             end
             local row = { name = grp.name, statement = grp.statement, paper = grp.paper, n = #grp.rows, counts = c }
             if #grp.rows == 1 then
@@ -470,7 +480,7 @@ end
 local CLAIMS_CAPTION = 'The paper\'s number as the paper prints it; ours ± its standard error; the band (the paper\'s'
     .. ' number with its tolerance); the outcome under the decision rule (pass: value ± 2 stderr inside the band; fail:'
     .. ' wholly outside; unresolved: neither). A group of several rows shows its counts and its worst row (the farthest'
-    .. ' from its band\'s centre, among the rows with a finite value).'
+    .. ' from its band\'s centre among those of the worst outcome with a finite value).'
 
 -- the claims table of the summary: per experiment one row per claim group, with its verdict, gates,
 -- tier and CPU-hours on its first row, and a link to its section
