@@ -117,6 +117,14 @@ for r in $ROWS; do
     t=$(for n in $(row_runs $r); do get $n steps; done | "$ANALYSE" production-time $(eq_steps))
     emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $((B * $(row_runs $r | wc -w))))
 done
+# row 3's replicas one by one (paper tier): each run's torque over eq. 23 alone (paper.md's second look
+# at the row's estimate, which does not reproduce)
+if [ "$TIER" = paper ]; then
+    read -r _ Tth3 < <(eq23 $(row_l 3) $U)
+    for n in $(row_runs 3); do
+        emit "torque_ratio_row3_$n" "$("$ANALYSE" ratio "$("$ANALYSE" column-mean "$OUT/runs/$n/sphere_blocks.tsv" 3)" "$Tth3	0")"
+    done
+fi
 # the harder drive's linear response (reduced tier): the antisymmetric torque and the drag per sphere
 # per unit u at each u, their ratios between successive u (banded: 1.2 against 0.6), the torque's
 # noise at each u (does it grow with u?) and the fluid's temperature (heating by the drive)
