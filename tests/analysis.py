@@ -594,7 +594,6 @@ same('fmt: a pair gives two arguments', A.COMMANDS['fmt'](['%.2f +- %.2f', '1.23
 same('half-pair: v / 2 and se / 2', A.COMMANDS['half-pair'](['3\t0.5']), ['1.5 0.25'])
 same('drive_projection: the torque linear in u', A.drive_projection('0.1', '0.01', '0.6', '5'), '0.2 0.01 5')
 
-same('speed_factor: the class\'s factor, 1 without one', [A.speed_factor(tsv('sp.tsv', 'class\tf\nrot\t1.5\n'), c) for c in ('rot', 'none')], ['1.5', '1'])
 rc = A.run_cost(tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), tsv('rcs.tsv', 'quantity\tvalue\nsteps\t5000\t0\ncpu_seconds\t100\t0\n'), '2',
                 ['--set', 'equilibration=3000'])
 same('run_cost: production and equilibration CPU in the ratio of their steps (the arguments\' equilibration first), and the time', rc, '80\t120\t20')

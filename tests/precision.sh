@@ -66,6 +66,8 @@ if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims.tsv" >
     check edge cpu_h_ours inf "a value on the edge is decided by no run length"
     check eq cpu_h_paper 0.712 "7200 s x 0.5 = 1 h, of which 0.8 h production: 0.8 h x (0.04 / 0.05)^2 + 0.2 h of equilibration, once"
     check eq prod_time_now 80 "8000 production steps x dt 0.01"
+    [ "$(col inside experiment@tier)" = pan-2008/fake@reduced ] && ok "the row names its committed tier" ||
+        bad "the row names its committed tier" "got '$(col inside experiment@tier)'"
 else
     bad "precision.sh on the synthetic tree" "$(cat "$tmp/err")"
 fi
@@ -92,6 +94,30 @@ if PRECISION_REL=0.005 DPD_ROOT=$t experiments/methods/pan-estimators/precision.
 else
     bad "precision.sh PRECISION_REL=0.005" "$(cat "$tmp/err")"
 fi
+# runs named by a pattern, and a run whose binary has bench/speedup.tsv's speed-up already (its
+# provenance commit descends from the commit measured there as new: tools/cost run-factor) counted at
+# its own CPU, the older run at its class's factor: a synthetic history P0 -> A (new) -> B
+h=$tmp/hist; mkdir -p "$h"
+git -C "$h" init -q && git -C "$h" config user.email t@t && git -C "$h" config user.name t
+for c in P0 A B; do git -C "$h" commit -q --allow-empty -m $c; done
+cA=$(git -C "$h" rev-parse --short=7 HEAD~1) cB=$(git -C "$h" rev-parse --short=7 HEAD) cP=$(git -C "$h" rev-parse --short=7 HEAD~2)
+cp -a "$h/.git" "$t/.git"
+printf 'date, commits\t2026-12-04\t%s-dirty\tbase dpd %s\n' "$cA" "$cP" >> "$t/bench/speedup.tsv"
+band glob 0.9 1.1 1.0
+printf 'glob\t1.0\t0.02\n' >> "$res/summary.tsv"
+run g_1 3600 10000; run g_2 3600 10000
+printf 'git_commit\t%s-dirty\n' "$cB" > "$res/runs/g_1/provenance.tsv"
+printf 'git_commit\t%s\n' "$cP" > "$res/runs/g_2/provenance.tsv"
+printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	glob	g_*	" > "$t/claims3.tsv"
+if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims3.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+    check glob cpu_h_paper 0.24 "g_* is g_1 and g_2: (1 h x 1 + 1 h x 0.5) x (0.02 / 0.05)^2; g_1 (commit B) has the speed-up, g_2 (P0) not"
+    check glob longest_sim_h_paper 0.12 "two runs share it"
+else
+    bad "precision.sh with a run pattern and a sped-up binary's run" "$(cat "$tmp/err")"
+fi
+rm -rf "$t/.git"
+printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	glob	h_*	" > "$t/claims4.tsv"
+refuse "a pattern that matches no committed run refused" "h_\\*" env DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims4.tsv"
 # a claim without a paper band is refused, naming it
 printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	nosuch	r1	" > "$t/bad.tsv"
 refuse "a claim without a band or value refused" "nosuch" env DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/bad.tsv"

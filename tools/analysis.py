@@ -2738,18 +2738,6 @@ def drive_projection(T, se, u, c):
     return cfmt('%.6g %.4g %.6g', num(T) * num(u) / 0.3, se, c)
 
 
-def speed_factor(path, cls):
-    """the speed factor of a cost class in bench/speedup.tsv (its last row), 1 if none"""
-    v = ''
-    try:
-        for r in rows(path):
-            if fld(r, 1) == cls:
-                v = fld(r, 2)
-    except OSError:
-        return '1'
-    return '1' if v == '' else v
-
-
 def run_cost(scene, summary, fac, args):
     """precision.sh: a committed run's production and equilibration CPU seconds (its cpu_seconds x
     the speed factor FAC, split in the ratio of production to equilibration steps) and its
@@ -2901,7 +2889,6 @@ PE_COMMANDS = {
     # with-variance-se X DOF -> x and its stderr as a variance from DOF + 1 blocks, x sqrt(2 / DOF), as awk prints it
     'with-variance-se': lambda a: [a[0] + ' ' + astr(num(a[0]) * sqrt(2 / num(a[1])))],
     'drive-projection': lambda a: [drive_projection(*a[:4])],
-    'speed-factor': lambda a: [speed_factor(a[0], a[1])],
     # run-cost SCENE SUMMARY FACTOR ARG...
     'run-cost': lambda a: [run_cost(a[0], a[1], a[2], a[3:])],
     'paper-band': lambda a: (lambda b: [b] if b is not None else [])(paper_band(a[0], a[1])),

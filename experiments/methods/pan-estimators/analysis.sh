@@ -5,6 +5,13 @@ up() { upstream "pan-2008/$1@$2"; }
 FV=$(up fluid-viscosity paper) EQ16=$(up eq16-effective-radius reduced) F01=$(up fig01-torque-calibration reduced)
 F02=$(up fig02-drag-calibration reduced) T01=$(up tab01-couette-torque reduced) T02=$(up tab02-poiseuille reduced)
 T03=$(up tab03-two-spheres reduced) F03=$(up fig03-chain-rotation reduced)
+# the best committed tier of each (paper where committed, else reduced): what ours-against-Pan's and
+# Table 3's 30^3 rows read, as the precision tables do (claim-runs.tsv, entries.tsv); the estimator
+# rows and ladders below keep the reduced runs they name
+best() { local d; d=$(upstream_if "pan-2008/$1@paper") || return 1; [ -n "$d" ] && echo "$d" || up "$1" reduced; }
+B_EQ16=$(best eq16-effective-radius) B_F01=$(best fig01-torque-calibration) B_F02=$(best fig02-drag-calibration)
+B_T01=$(best tab01-couette-torque) B_T02=$(best tab02-poiseuille) B_T03=$(best tab03-two-spheres)
+tier_of() { basename "$1"; }
 # sget DIR QUANTITY -> "value<TAB>stderr" of a summary (an upstream result's or one of its runs')
 sget() { tsv_lookup "$1/summary.tsv" "$2" pan-estimators; }
 # speed factor of the committed pan-2008 runs (made by binaries of b789431's speed; tools/cost's class
@@ -29,6 +36,13 @@ DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/claim-runs.tsv" > "$OUT/precision
 # prints from a simulation (entries.tsv), in the paper's box at the paper's drive; totals per source
 PRECISION_REL=0.005 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/entries.tsv" > "$OUT/half_percent.tsv"
 "$ANALYSE" half-percent-totals "$OUT/half_percent.tsv" >> "$OUT/summary.tsv"
+# the entries that dominate it (paper.md names them): Table 3's torques and Table 2's row-1 torque, the
+# CPU-hours at the paper's values (a projection: no stderr)
+for q in tab03-two-spheres:torque_row1 tab03-two-spheres:torque_row2 tab03-two-spheres:torque_row3 tab02-poiseuille:torque_row1; do
+    e=pan-2008/${q%%:*} n=${q#*:}
+    t=$(awk -F'\t' -v e=$e '$1 == e { print $2; exit }' "$HERE/entries.tsv")   # (its committed tier)
+    emit "half_percent_cpu_hours_${q%%-*}_$n" "$("$ANALYSE" cols-where "$OUT/half_percent.tsv" 1=$e@$t,2=$n 13)" 0
+done
 
 # ------------------------------------------------------------------ 2a. the rotation ladder (stronger drive)
 # torque over eq. 18 at each Omega, the noise (variance of the mean x production time), the relative
@@ -113,14 +127,14 @@ twins rot torque_on_colloid_z W0.0 W-0.4 W-0.004 "$sr" "$pr"
 # drag per sphere over eq. 23 at the same u, against the leading periodic-array correction for two
 # spheres per cell, 1 / (1 - 2 x 2.837297 R / L) (the partner's images and the sphere's own, each
 # -2.837297 F / (6 pi mu L) at the sphere: the Yeh-Hummer / Hasimoto constant), in 12^3 (this
-# experiment, l = 1, u = 0.3) and 30^3 (tab03's committed rows)
+# experiment, l = 1, u = 0.3) and 30^3 (tab03's committed rows, its best tier)
 eq23F() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R | cut -d' ' -f1; }
 lattice2() { "$ANALYSE" pair-periodic-factor $1 $R; }
 printf 'L\tl\tu\tdrag\tdrag_se\tdrag_over_eq23\tse\tperiodic_prediction\tover_prediction\tse\tpan_over_eq23\n' > "$OUT/pair_boxes.tsv"
 pan_F() { case $1 in 2.0) echo 4.861;; 1.5) echo 4.857;; 1.0) echo 4.863;; esac; }
 for r in 1 2 3; do
     l=$(case $r in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac)
-    "$ANALYSE" pair-box-row 30 $l 0.3 "$(sget "$T03" drag_row$r)" $(eq23F $l 0.3) $(lattice2 30) $(pan_F $l) >> "$OUT/pair_boxes.tsv"
+    "$ANALYSE" pair-box-row 30 $l 0.3 "$(sget "$B_T03" drag_row$r)" $(eq23F $l 0.3) $(lattice2 30) $(pan_F $l) >> "$OUT/pair_boxes.tsv"
 done
 for p in $PAIR12; do
     u=${p%%:*}
@@ -130,7 +144,7 @@ for p in $PAIR12; do
     emit "pair12_drag_over_periodic_u$u" $("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 9 10)
     emit "pair12_torque_u$u" $(column_mean_se "$OUT/runs/pair12_u$u/sphere_blocks.tsv" 3)
     # the box ratio: l = 1's drag per sphere in 12^3 over 30^3, both at u = 0.3, against the prediction
-    emit pair_drag_L12_over_L30 "$("$ANALYSE" ratio "$("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 4 5)" "$(sget "$T03" drag_row3)")"
+    emit pair_drag_L12_over_L30 "$("$ANALYSE" ratio "$("$ANALYSE" cols-where "$OUT/pair_boxes.tsv" 1=12,3=$u 4 5)" "$(sget "$B_T03" drag_row3)")"
     "$ANALYSE" periodic-ratio-row $(lattice2 12) $(lattice2 30) >> "$OUT/summary.tsv"
 done
 "$ANALYSE" pair30-rows "$OUT/pair_boxes.tsv" >> "$OUT/summary.tsv"
@@ -142,7 +156,8 @@ done
 # come from the images' velocity gradients, of relative order (l / L)^3. So T / F would not depend
 # on the box, and Table 3's torque in 30^3 would be (T / F) from a small box times the 30^3 drag,
 # at a fraction of the cost. Tested: l = 1, u = 0.6 in 8^3 and 12^3 (12^3: this experiment's run and
-# the committed ladder's u = 0.6 run, weighted by their errors); 30^3 at u = 0.3 (tab03 row 3).
+# the committed ladder's u = 0.6 run, weighted by their errors); 30^3 at u = 0.3 (tab03 row 3, its best
+# tier's runs).
 tf() {   # FILE(S) of sphere_blocks -> "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se" (runs weighted by their errors)
     "$ANALYSE" torque-over-drag "$@"
 }
@@ -150,7 +165,7 @@ if [ -n "$PAIRBOX" ]; then
     printf 'L\tu\tT_over_F\tse\tdrag\tdrag_se\ttorque\ttorque_se\tperiodic_prediction_drag\n' > "$OUT/torque_over_drag.tsv"
     tf8=$(tf "$OUT/runs/pairbox_L8_u0.6/sphere_blocks.tsv")
     tf12=$(tf "$OUT/runs/pairbox_L12_u0.6/sphere_blocks.tsv" "$T03/runs/lr_u0.6/sphere_blocks.tsv")
-    tf30=$(tf "$T03/runs/row3/sphere_blocks.tsv")
+    tf30=$(tf "$B_T03"/runs/row3*/sphere_blocks.tsv)   # (the paper tier: row 3's three replicas)
     printf '8\t0.6\t%s\t%s\n12\t0.6\t%s\t%s\n30\t0.3\t%s\t%s\n' "$tf8" $(lattice2 8) "$tf12" $(lattice2 12) "$tf30" $(lattice2 30) >> "$OUT/torque_over_drag.tsv"
     emit tf_L8_u0.6 $(echo "$tf8" | cut -f1,2)
     emit tf_L12_u0.6 $(echo "$tf12" | cut -f1,2)
@@ -159,34 +174,37 @@ if [ -n "$PAIRBOX" ]; then
     # Table 3's row 3 torque in 30^3 from (T / F) of 12^3 times the 30^3 drag (u = 0.3; the ratio is
     # linear in u within the ladder's 6 %), over eq. 23, beside the plain 30^3 average
     T23=$("$ANALYSE" two-sphere-theory 1.0 0.3 $MU $R | cut -d' ' -f2)
-    "$ANALYSE" tf-torque "$tf12" "$(sget "$T03" drag_row3)" $T23 >> "$OUT/summary.tsv"
+    "$ANALYSE" tf-torque "$tf12" "$(sget "$B_T03" drag_row3)" $T23 >> "$OUT/summary.tsv"
 fi
 
 # ------------------------------------------------------------------ 4. ours against Pan's simulated values
-# every number the paper prints from its simulations, ours beside it (the committed tiers), the ratio
+# every number the paper prints from its simulations, ours beside it (each experiment's best committed
+# tier, named in the first column), the ratio
 # and the difference in our stderrs; and each against its theory, ours and Pan's
 pan_compare() {
     printf 'experiment\trow\tquantity\tpan_sim\tours\tours_se\tours_over_pan\tse\tsigmas\tpan_over_theory\tours_over_theory\tse\n'
     # row DIR QUANTITY PAN PAN_THEORY OURS_RATIO_QUANTITY (the ratio of ours to our own theory value)
-    # (PAN_THEORY and OURS_RATIO_QUANTITY "-": no theory value)
+    # (PAN_THEORY and OURS_RATIO_QUANTITY "-": no theory value); the experiment is labelled with its tier
     row() { local d=$1 q=$2 p=$3 pt=$4 rq=$5 lab=$6 rr="-	-"
         [ "$rq" = - ] || rr=$(sget "$d" "$rq")
-        "$ANALYSE" pan-compare-row "$lab" $q $p $pt "$(sget "$d" "$q")" "$rr"; }
-    row "$F01" torque_ratio_gS5.5 1.013 1 torque_ratio_gS5.5 "fig01	Omega -0.4"
-    row "$F02" u_gC3.5 0.2986 - u_ratio_eq19_gC3.5 "fig02	gC 3.5"
-    row "$EQ16" D_colloid 0.0533 - - "eq16	10^3"
-    row "$EQ16" D_colloid_extrapolated 0.0533 - - "eq16	1/L -> 0"
+        "$ANALYSE" pan-compare-row "${lab/	/ ($(tier_of "$d"))	}" $q $p $pt "$(sget "$d" "$q")" "$rr"; }
+    # fig01 at Pan's Omega = -0.4: the paper tier's own run there (its banded ratio is at Omega = -2)
+    local w=torque_ratio_gS5.5; [ "$(tier_of "$B_F01")" = paper ] && w=torque_ratio_gS5.5_W-0.4
+    row "$B_F01" $w 1.013 1 $w "fig01	Omega -0.4"
+    row "$B_F02" u_gC3.5 0.2986 - u_ratio_eq19_gC3.5 "fig02	gC 3.5"
+    row "$B_EQ16" D_colloid 0.0533 - - "eq16	10^3"
+    row "$B_EQ16" D_colloid_extrapolated 0.0533 - - "eq16	1/L -> 0"
     local i
     for i in 1 2 3 4; do
-        row "$T01" torque_row$i $(echo "0.3675 0.7540 0.7289 1.0659" | cut -d' ' -f$i) $(echo "0.3750 0.7500 0.7500 1.1251" | cut -d' ' -f$i) torque_ratio_row$i "tab01	$i"
+        row "$B_T01" torque_row$i $(echo "0.3675 0.7540 0.7289 1.0659" | cut -d' ' -f$i) $(echo "0.3750 0.7500 0.7500 1.1251" | cut -d' ' -f$i) torque_ratio_row$i "tab01	$i"
     done
     for i in 1 2 3; do
-        row "$T02" drag_row$i $(echo "4.4881 9.689 18.881" | cut -d' ' -f$i) $(echo "5.114 10.230 20.463" | cut -d' ' -f$i) drag_ratio_row$i "tab02	$i"
-        row "$T02" torque_row$i $(echo "0.0838 0.163 0.313" | cut -d' ' -f$i) $(echo "0.0786 0.157 0.315" | cut -d' ' -f$i) torque_ratio_row$i "tab02	$i"
+        row "$B_T02" drag_row$i $(echo "4.4881 9.689 18.881" | cut -d' ' -f$i) $(echo "5.114 10.230 20.463" | cut -d' ' -f$i) drag_ratio_row$i "tab02	$i"
+        row "$B_T02" torque_row$i $(echo "0.0838 0.163 0.313" | cut -d' ' -f$i) $(echo "0.0786 0.157 0.315" | cut -d' ' -f$i) torque_ratio_row$i "tab02	$i"
     done
     for i in 1 2 3; do
-        row "$T03" drag_row$i $(echo "4.861 4.857 4.863" | cut -d' ' -f$i) $(echo "5.100 5.089 5.185" | cut -d' ' -f$i) drag_ratio_row$i "tab03	$i"
-        row "$T03" torque_row$i $(echo "0.0253 0.0451 0.113" | cut -d' ' -f$i) $(echo "0.0261 0.0463 0.106" | cut -d' ' -f$i) torque_ratio_row$i "tab03	$i"
+        row "$B_T03" drag_row$i $(echo "4.861 4.857 4.863" | cut -d' ' -f$i) $(echo "5.100 5.089 5.185" | cut -d' ' -f$i) drag_ratio_row$i "tab03	$i"
+        row "$B_T03" torque_row$i $(echo "0.0253 0.0451 0.113" | cut -d' ' -f$i) $(echo "0.0261 0.0463 0.106" | cut -d' ' -f$i) torque_ratio_row$i "tab03	$i"
     done
 }
 pan_compare > "$OUT/pan_compare.tsv"

@@ -26,23 +26,21 @@ set -euo pipefail
 root=${DPD_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)}
 here=$root/experiments/methods/pan-estimators
 claims=${1:-$here/claim-runs.tsv}
-speed=$root/bench/speedup.tsv
 ANALYSE=$root/tools/analyse   # the analysis layer (tools/analysis.py)
 
-# run_cost DIR EXPDIR -> "prod_cpu_s<TAB>eq_cpu_s<TAB>prod_time_units" of one committed run, its CPU
-# scaled by its class factor; equilibration and dt from its arguments, else its scene
+# run_cost DIR EXP -> "prod_cpu_s<TAB>eq_cpu_s<TAB>prod_time_units" of one committed run, its CPU on
+# this build's scale (tools/cost run-factor: its class's factor, or 1 for a run whose binary has the
+# speed-up already); equilibration and dt from its arguments, else its scene
 run_cost() {
-    local dir=$1 expdir=$2 scene cls fac
+    local dir=$1 exp=$2 fac
     mapfile -t a < "$dir/.args"
-    scene=$expdir/${a[0]}
-    cls=$(cd "$expdir" && "$root/tools/cost" class "${a[@]}")
-    fac=$("$ANALYSE" speed-factor "$speed" "$cls")
-    "$ANALYSE" run-cost "$scene" "$dir/summary.tsv" "$fac" "${a[@]:1}"
+    fac=$("$root/tools/cost" run-factor "$exp" "$dir")
+    "$ANALYSE" run-cost "$root/experiments/$exp/${a[0]}" "$dir/summary.tsv" "$fac" "${a[@]:1}"
 }
 
 out=$(mktemp); trap 'rm -f "$out"' EXIT
 {
-printf 'experiment\tquantity\tlo\thi\tpaper\tvalue\tse\tverdict_now\tse_decides_paper\tse_decides_ours\tprod_time_now\tcpu_h_now\tcpu_h_paper\tcpu_h_ours\tlongest_sim_h_paper\tnote\n'
+printf 'experiment@tier\tquantity\tlo\thi\tpaper\tvalue\tse\tverdict_now\tse_decides_paper\tse_decides_ours\tprod_time_now\tcpu_h_now\tcpu_h_paper\tcpu_h_ours\tlongest_sim_h_paper\tnote\n'
 while IFS= read -r line; do
     # fields split at tabs, empty ones kept (a tab in IFS would merge them)
     IFS=$'\037' read -r exp tier q groups note paper_value <<< "$(printf '%s' "$line" | tr '\t' '\037')"
@@ -58,16 +56,28 @@ while IFS= read -r line; do
     for g in "${gs[@]}"; do
         runs=${g%%|*} relq=${g#*|}; [ "$relq" = "$g" ] && relq=-
         pc=0 ec=0 tu=0
-        for r in ${runs//,/ }; do
-            read -r p e t < <(run_cost "$res/runs/$r" "$expdir")
+        # the group's runs: names, each a committed run, or shell patterns (row1r*: the replicas
+        # committed, maybe none); a group of no run is refused
+        names=""
+        IFS=',' read -ra toks <<< "$runs"
+        for tok in "${toks[@]}"; do
+            case $tok in
+                *[*?[]*) names="$names $(cd "$res/runs" 2>/dev/null && { compgen -G "$tok" || true; } | LC_ALL=C sort | tr '\n' ' ')" ;;
+                *) [ -s "$res/runs/$tok/.args" ] || { echo "precision.sh: $exp $q: no committed run $res/runs/$tok" >&2; exit 1; }
+                   names="$names $tok" ;;
+            esac
+        done
+        [ -n "${names// /}" ] || { echo "precision.sh: $exp $q: no committed run matches $runs in $res/runs" >&2; exit 1; }
+        for r in $names; do
+            read -r p e t < <(run_cost "$res/runs/$r" "$exp")
             pc=$("$ANALYSE" plus $pc $p); ec=$("$ANALYSE" plus $ec $e)
             tu=$("$ANALYSE" plus $tu $t)
         done
         # the group's share of the claim's error: the whole se, or the relative error of one summary quantity
         rel=-; [ "$relq" != - ] && rel=$("$ANALYSE" rel-error-of "$res/summary.tsv" "$relq")
-        parts="$parts $pc:$ec:$tu:$rel:$(echo "$runs" | tr ',' ' ' | wc -w)"
+        parts="$parts $pc:$ec:$tu:$rel:$(echo $names | wc -w)"
     done
-    "$ANALYSE" precision-row "${PRECISION_REL:-}" "$(printf '%s\t%s\t%s\t%s\t%s\t%s' "$exp" "$q" "$band" "$vs" "$parts" "${note:-}")"
+    "$ANALYSE" precision-row "${PRECISION_REL:-}" "$(printf '%s\t%s\t%s\t%s\t%s\t%s' "$exp@$tier" "$q" "$band" "$vs" "$parts" "${note:-}")"
 done < "$claims"
 } > "$out"
 cat "$out"   # written only when every claim was found: a failure leaves no table

@@ -18,6 +18,13 @@ needs any pan-2008/fig03-chain-rotation@reduced
 needs any pan-2008/tab01-couette-torque@reduced
 needs any pan-2008/tab02-poiseuille@reduced
 needs any pan-2008/tab03-two-spheres@reduced
+# the best committed tier where it is the paper's (analysis.sh best; tab02's until its paper tier lands)
+needs any pan-2008/eq16-effective-radius@paper
+needs any pan-2008/fig01-torque-calibration@paper
+needs any pan-2008/fig02-drag-calibration@paper
+needs any pan-2008/tab01-couette-torque@paper
+needs any pan-2008/tab02-poiseuille@paper
+needs any pan-2008/tab03-two-spheres@paper
 HERE=$DPD_ROOT/experiments/methods/pan-estimators
 FIG01=$DPD_ROOT/experiments/pan-2008/fig01-torque-calibration
 TAB03=$DPD_ROOT/experiments/pan-2008/tab03-two-spheres
