@@ -41,17 +41,25 @@ printf '%s\n' "experiment	tier	quantity	groups	note" \
     "pan-2008/fake	reduced	edge	r1	" \
     "pan-2008/fake	reduced	eq	r4	" > "$t/claims.tsv"
 
-if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
-    col() { awk -F'\t' -v q="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) k[$i] = i; next } $2 == q { print $k[c] }' "$tmp/p.tsv"; }
-    near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; exit !(d <= 1e-3 * (b < 0 ? -b : b) + 1e-12 && -d <= 1e-3 * (b < 0 ? -b : b) + 1e-12) }'; }
-    check() {   # QUANTITY COLUMN EXPECTED WHY
-        local v; v=$(col "$1" "$2")
-        if [ "$3" = inf ] || [ "$3" = PASS ] || [ "$3" = FAIL ] || [ "$3" = UNRESOLVED ] || [ "$3" = - ]; then
-            [ "$v" = "$3" ] && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
-        else
-            near "$v" "$3" && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
-        fi
-    }
+# the table's column C of quantity Q; check QUANTITY COLUMN EXPECTED WHY (numbers to 0.1 %)
+col() { awk -F'\t' -v q="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) k[$i] = i; next } $2 == q { print $k[c] }' "$tmp/p.tsv"; }
+near() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; exit !(d <= 1e-3 * (b < 0 ? -b : b) + 1e-12 && -d <= 1e-3 * (b < 0 ? -b : b) + 1e-12) }'; }
+check() {
+    local v; v=$(col "$1" "$2")
+    if [ "$3" = inf ] || [ "$3" = PASS ] || [ "$3" = FAIL ] || [ "$3" = UNRESOLVED ] || [ "$3" = - ]; then
+        [ "$v" = "$3" ] && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
+    else
+        near "$v" "$3" && ok "$1 $2 = $3 ($4)" || bad "$1 $2" "got '$v', want $3 ($4)"
+    fi
+}
+# precision NAME CLAIMS [VAR=VALUE...]: precision.sh on the synthetic tree into $tmp/p.tsv; a failure
+# is the check NAME's
+precision() {
+    local name=$1 claims=$2; shift 2
+    env DPD_ROOT=$t "$@" experiments/methods/pan-estimators/precision.sh "$claims" > "$tmp/p.tsv" 2> "$tmp/err" && return 0
+    bad "$name" "$(cat "$tmp/err")"; return 1
+}
+if precision "precision.sh on the synthetic tree" "$t/claims.tsv"; then
     check inside verdict_now PASS "1.05 +- 0.04 inside [0.9, 1.1]"
     check inside se_decides_paper 0.05 "paper 1.0: 0.1 from either edge, halved"
     check inside se_decides_ours 0.025 "1.05: 0.05 from 1.1, halved"
@@ -68,8 +76,6 @@ if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims.tsv" >
     check eq prod_time_now 80 "8000 production steps x dt 0.01"
     [ "$(col inside experiment@tier)" = pan-2008/fake@reduced ] && ok "the row names its committed tier" ||
         bad "the row names its committed tier" "got '$(col inside experiment@tier)'"
-else
-    bad "precision.sh on the synthetic tree" "$(cat "$tmp/err")"
 fi
 # issue 37's bands.tsv (a kind column; columns found by name; a gate row of the same name skipped)
 mkdir -p "$t/experiments/pan-2008/fake2" "$t/results/pan-2008/fake2/reduced/runs"
@@ -78,21 +84,17 @@ printf 'quantity\ttier\tkind\tlo\thi\tk_sigma\tresolution\tpaper\tsource\n' > "$
 printf 'inside\tpaper\tgate\t0\t9\t3\t-\t-\tset-up\ninside\tpaper\tclaim\t0.9\t1.1\t-\t-\t1.0\tsynthetic\n' >> "$t/experiments/pan-2008/fake2/bands.tsv"
 cp "$res/summary.tsv" "$t/results/pan-2008/fake2/reduced/"; cp -r "$res/runs/r1" "$t/results/pan-2008/fake2/reduced/runs/"
 printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake2	reduced	inside	r1	" > "$t/claims2.tsv"
-if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims2.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+if precision "precision.sh on issue 37's bands format" "$t/claims2.tsv"; then
     check inside se_decides_paper 0.05 "issue 37's format: the claim row's band, not the gate's"
     check inside cpu_h_ours 0.32 "issue 37's format: as before"
-else
-    bad "precision.sh on issue 37's bands format" "$(cat "$tmp/err")"
 fi
 # the relative mode (item 5): a stderr of 0.5 % of the paper's value and of ours, no band needed
 printf '%s\n' "experiment	tier	quantity	groups	note	paper" "pan-2008/fake	reduced	inside	r1		1.0" > "$t/entries.tsv"
-if PRECISION_REL=0.005 DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/entries.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+if precision "precision.sh PRECISION_REL=0.005" "$t/entries.tsv" PRECISION_REL=0.005; then
     check inside se_decides_paper 0.005 "0.5 % of the paper's 1.0"
     check inside cpu_h_paper 8 "0.5 h x (0.02 / 0.005)^2"
     check inside cpu_h_ours 7.256 "0.5 h x (0.02 / 0.00525)^2"
     check inside verdict_now - "no band"
-else
-    bad "precision.sh PRECISION_REL=0.005" "$(cat "$tmp/err")"
 fi
 # runs named by a pattern, and a run whose binary has bench/speedup.tsv's speed-up already (its
 # provenance commit descends from the commit measured there as new: tools/cost run-factor) counted at
@@ -109,11 +111,9 @@ run g_1 3600 10000; run g_2 3600 10000
 printf 'git_commit\t%s-dirty\n' "$cB" > "$res/runs/g_1/provenance.tsv"
 printf 'git_commit\t%s\n' "$cP" > "$res/runs/g_2/provenance.tsv"
 printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	glob	g_*	" > "$t/claims3.tsv"
-if DPD_ROOT=$t experiments/methods/pan-estimators/precision.sh "$t/claims3.tsv" > "$tmp/p.tsv" 2> "$tmp/err"; then
+if precision "precision.sh with a run pattern and a sped-up binary's run" "$t/claims3.tsv"; then
     check glob cpu_h_paper 0.24 "g_* is g_1 and g_2: (1 h x 1 + 1 h x 0.5) x (0.02 / 0.05)^2; g_1 (commit B) has the speed-up, g_2 (P0) not"
     check glob longest_sim_h_paper 0.12 "two runs share it"
-else
-    bad "precision.sh with a run pattern and a sped-up binary's run" "$(cat "$tmp/err")"
 fi
 rm -rf "$t/.git"
 printf '%s\n' "experiment	tier	quantity	groups	note" "pan-2008/fake	reduced	glob	h_*	" > "$t/claims4.tsv"

@@ -11,20 +11,14 @@
 # README.md: the question, the set-up and what was kept.
 . "$DPD_ROOT/tools/lib/exp.sh"
 needs any pan-2008/fluid-viscosity@paper
-needs any pan-2008/eq16-effective-radius@reduced
-needs any pan-2008/fig01-torque-calibration@reduced
-needs any pan-2008/fig02-drag-calibration@reduced
-needs any pan-2008/fig03-chain-rotation@reduced
-needs any pan-2008/tab01-couette-torque@reduced
-needs any pan-2008/tab02-poiseuille@reduced
-needs any pan-2008/tab03-two-spheres@reduced
-# the best committed tier where it is the paper's (analysis.sh best; tab02's until its paper tier lands)
-needs any pan-2008/eq16-effective-radius@paper
-needs any pan-2008/fig01-torque-calibration@paper
-needs any pan-2008/fig02-drag-calibration@paper
-needs any pan-2008/tab01-couette-torque@paper
-needs any pan-2008/tab02-poiseuille@paper
-needs any pan-2008/tab03-two-spheres@paper
+# committed pan-2008 results read as references (fixed tiers: needs.awk orders nothing by them): the
+# reduced tiers the estimator rows name, and the paper tiers where committed (analysis.sh best; tab02's
+# until its paper tier lands)
+for e in eq16-effective-radius fig01-torque-calibration fig02-drag-calibration fig03-chain-rotation \
+         tab01-couette-torque tab02-poiseuille tab03-two-spheres; do
+    needs any pan-2008/$e@reduced
+    needs any pan-2008/$e@paper
+done
 HERE=$DPD_ROOT/experiments/methods/pan-estimators
 FIG01=$DPD_ROOT/experiments/pan-2008/fig01-torque-calibration
 TAB03=$DPD_ROOT/experiments/pan-2008/tab03-two-spheres
