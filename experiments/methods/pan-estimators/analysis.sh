@@ -164,7 +164,7 @@ tf() {   # FILE(S) of sphere_blocks -> "T/F<TAB>se<TAB>F<TAB>F_se<TAB>T<TAB>T_se
 if [ -n "$PAIRBOX" ]; then
     printf 'L\tu\tT_over_F\tse\tdrag\tdrag_se\ttorque\ttorque_se\tperiodic_prediction_drag\n' > "$OUT/torque_over_drag.tsv"
     tf8=$(tf "$OUT/runs/pairbox_L8_u0.6/sphere_blocks.tsv")
-    tf12=$(tf "$OUT/runs/pairbox_L12_u0.6/sphere_blocks.tsv" "$T03/runs/lr_u0.6/sphere_blocks.tsv")
+    tf12=$(tf "$OUT/runs/pairbox_L12_u0.6/sphere_blocks.tsv" "$T03"/runs/lr_u0.6*/sphere_blocks.tsv)   # (the ladder's replicas too)
     tf30=$(tf "$B_T03"/runs/row3*/sphere_blocks.tsv)   # (the paper tier: row 3's three replicas)
     printf '8\t0.6\t%s\t%s\n12\t0.6\t%s\t%s\n30\t0.3\t%s\t%s\n' "$tf8" $(lattice2 8) "$tf12" $(lattice2 12) "$tf30" $(lattice2 30) >> "$OUT/torque_over_drag.tsv"
     emit tf_L8_u0.6 $(echo "$tf8" | cut -f1,2)
