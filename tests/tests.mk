@@ -31,7 +31,7 @@ $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 TEST_SCRIPTS := tests/checkpoint.sh tests/io_errors.sh tests/scene_errors.sh tests/blowup.sh \
   tests/h5md.sh tests/layers.sh tests/tcaf_fit.sh tests/precision.sh tests/bare.sh tests/skips.sh \
   tests/analysis.py tests/bands_diff.sh tests/fit_line.sh tests/claim_groups.sh tests/library_exits.sh \
-  tests/in_flight.sh
+  tests/in_flight.sh tests/version.sh
 SLOW_BINS := test_transverse_relaxation test_thermostat test_bonds test_msd test_rotation test_forces
 SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(notdir $(TEST_BINS)))
 SUITE_LOGS := $(BUILD)/tests/logs
