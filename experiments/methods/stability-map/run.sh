@@ -27,10 +27,14 @@ case $TIER in
     # A_LO, GAS_LO, ITER_GAS (paper): the far windows of the rule of 2026-12-03, evening (README
     # "The far windows"): a to 1e7 (dt_max ~ 1.8e-4 there: lower end 1e-5, 14 halvings, 0.07 %), the
     # gas to gamma = 1e6 (dt_max ~ 3e-7 at s = 0.5: lower end 1e-8, 13 halvings, 0.22 %)
+    # SEEDS_H, ITER_H (paper): the H family's seeds and halvings since the H extension (2026-12-06,
+    # README "The H extension"): 30 seeds (26 ... 55) and 12 halvings; the other families keep SEEDS
     quick) ITER=8 ITER_MASS=8 ITER_A=8 ITER_GAS=8 MASS_LO=1e-6 A_LO=1e-4 GAS_LO=1e-6 NSTEPS=200 NSTEPS_M0=100 SEEDS="1 2"
+           SEEDS_H="1 2" ITER_H=8
            GAMMAS_S2="4.5 450 4500" GAMMAS_S05="" GAS_GAMMAS="450 4500" AS="25 100 500"
            MASSES="1 0.1 0.01" HS="1000 10000 100000" ;;
     paper) ITER=9 ITER_MASS=12 ITER_A=14 ITER_GAS=13 MASS_LO=1e-7 A_LO=1e-5 GAS_LO=1e-8 NSTEPS=1000 NSTEPS_M0=500 SEEDS="26 27 28 29 30"
+           SEEDS_H=$(seq -s ' ' 26 55) ITER_H=12
            GAMMAS_S2="1 4.5 15 45 150 450 1500 4500" GAMMAS_S05="1 4.5 15 45 150 450 1500 4500" GAS_GAMMAS="150 450 800 1500 2500 4500 8000 15000 30000 100000 300000 1000000"
            AS="10 25 50 100 200 500 1000 2000 5000 10000 20000 30000 50000 70000 100000 200000 500000 1000000 2000000 5000000 10000000"
            MASSES="1 0.3 0.1 0.03 0.01 0.003 0.001 0.0003 0.0001 0.00003 0.00001" HS="100 1000 10000 30000 100000 300000 1000000" ;;
@@ -119,7 +123,7 @@ for a in $AS; do iter=$ITER_A bisect a_gamma4.5 a $a fluid3d.cfg $A_LO 1 $NSTEPS
 for m in $MASSES; do iter=$ITER_MASS bisect mass m $m fluid2d.cfg $MASS_LO 1 $NSTEPS --set "types.[0].mass=$m"; done
 bisect mass_m0 m 0 fluid2d-m0.cfg 1e-3 10 $NSTEPS_M0
 # 4. spring stiffness of the massless 2D colloid (m = 0)
-for H in $HS; do bisect spring_m0 H $H colloid2d-m0.cfg 1e-7 1 $NSTEPS_M0 --set colloids2d.H=$H; done
+for H in $HS; do SEEDS=$SEEDS_H iter=$ITER_H bisect spring_m0 H $H colloid2d-m0.cfg 1e-7 1 $NSTEPS_M0 --set colloids2d.H=$H; done
 # 5. pairs at r -> 0: two particles at the same position and 1e-12 apart, inertial and m = 0
 coincident_ok=0 coincident_n=0
 for sep in 0 1e-12; do for kind in inertial m0; do
