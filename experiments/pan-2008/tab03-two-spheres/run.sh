@@ -99,8 +99,8 @@ eq23() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R; }  # l u -> F_the T_the (eq.
 # sphere_blocks NAME [BLOCKS]: the two spheres' per-block drag and torque, B (or BLOCKS) blocks
 # (tools/lib/exp.sh two_sphere_blocks)
 sphere_blocks() { two_sphere_blocks "$1" "${2:-$B}"; }
-# row_blocks R: the sphere_blocks of row R's runs, one header
-row_blocks() { local n; echo "block	drag	torque"; for n in $(row_runs $1); do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
+# pooled_blocks NAME...: the sphere_blocks of these runs (replicas of equal length), one header
+pooled_blocks() { local n; echo "block	drag	torque"; for n in "$@"; do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
 # column_mean FILE COLUMN -> "mean<TAB>stderr" over the rows after the header
 column_mean() { "$ANALYSE" column-mean "$1" $2; }
 printf 'row\tl\tu\tu_se\tdrag\tdrag_se\tdrag_theory\tdrag_paper\ttorque\ttorque_se\ttorque_theory\ttorque_paper\n' > "$OUT/table3.data.tsv"
@@ -112,7 +112,7 @@ for r in $ROWS; do
     # drag per sphere (without the zero-mean random part) and the antisymmetric torque
     # (replicas of equal length: the blocks of all of them, each block an independent mean)
     for n in $(row_runs $r); do sphere_blocks $n; done
-    F=$(row_blocks $r | column_mean /dev/stdin 2) T=$(row_blocks $r | column_mean /dev/stdin 3)
+    F=$(pooled_blocks $(row_runs $r) | column_mean /dev/stdin 2) T=$(pooled_blocks $(row_runs $r) | column_mean /dev/stdin 3)
     read -r Fth Tth < <(eq23 $l $U)
     emit_drag_torque $r "$F" "$T" "$Fth" "$Tth" "$u"
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $r $l "$u" "$F" $Fth $(paper_F $r) "$T" $Tth $(paper_T $r) >> "$OUT/table3.data.tsv"
@@ -140,11 +140,9 @@ fi
 # noise at each u (does it grow with u?) and the fluid's temperature (heating by the drive)
 if [ "$TIER" = reduced ]; then
     printf 'u\tdrag\tdrag_se\ttorque\ttorque_se\ttorque_theory\tnoise\tnoise_se\ttemperature\ttemperature_se\n' > "$OUT/linear_response.tsv"
-    # lr_blocks U: the sphere_blocks of the drive's runs, one header (runs of equal length)
-    lr_blocks() { local n; echo "block	drag	torque"; for n in $(lr_runs $1); do tail -n +2 "$OUT/runs/$n/sphere_blocks.tsv"; done; }
     for u in $LR_U; do
         nr=0; for n in $(lr_runs $u); do sphere_blocks $n $LR_B; nr=$((nr + 1)); done
-        F=$(lr_blocks $u | column_mean /dev/stdin 2) T=$(lr_blocks $u | column_mean /dev/stdin 3)
+        F=$(pooled_blocks $(lr_runs $u) | column_mean /dev/stdin 2) T=$(pooled_blocks $(lr_runs $u) | column_mean /dev/stdin 3)
         read -r Fth Tth < <(eq23 $LR_l $u)
         emit "lr_drag_u$u" $F
         emit "lr_torque_u$u" $T
