@@ -923,8 +923,11 @@ T "run-experiment: interrupted before carrying" 1 RX FAKE_FAIL=b "$rx/tools/run-
 echo big > "$rx/results/t/e/.quick.partial/runs/a/run.h5"; echo big > "$rx/results/t/e/.quick.partial/runs/b/checkpoint.dpd"
 cp "$tools/../.gitignore" "$rx/.gitignore"
 T "carry-partial: refuses another binary" 1 env DPD_BIN="$rx/fake-dpd2" "$rx/tools/carry-partial" t/e quick
+printf 'the run.sh change of an extension\n' > "$rx/results/t/e/.quick.partial/extension.patch"
 T "carry-partial: stages the finished simulations" 0 env DPD_BIN="$rx/fake-dpd" "$rx/tools/carry-partial" t/e quick
 staged=$(git -C "$rx" diff --cached --name-only | tr '\n' ' ')
+case $staged in *.quick.partial/extension.patch*) ok "carry-partial: an extension's run.sh patch staged" ;; *) bad "carry-partial: extension.patch not staged: $staged" ;; esac
+in_file "carry-partial: RESUME.txt names the extension's patch" "$rx/results/t/e/.quick.partial/RESUME.txt" '^extension.patch: .*git apply'
 case $staged in
     *.quick.partial/.stamp*.quick.partial/RESUME.txt*runs/a/summary.tsv*) ok "carry-partial: stamp, RESUME.txt and the finished run staged" ;;
     *) bad "carry-partial: staged: $staged" ;;
@@ -941,6 +944,24 @@ T "carry-partial: resumed in a clone" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" F
 if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "carry-partial: the clone reran only the unfinished simulation"
 else bad "carry-partial: the clone ran: $(tr '\n' ' ' < "$log")"; fi
 in_file "carry-partial: the clone's result is complete" "$root/rx2/results/t/e/quick/summary.tsv" '^q_b	1.5	0.1$'
+# an extension carried as extension.patch (the run.sh change that declares its runs): refused until
+# the patch is applied, --reanalyse refused (it would discard the carried runs), kept through the
+# passes, left out of the result
+( cd "$rx" && printf '# the extension\n' >> experiments/t/e/run.sh && git diff experiments/t/e/run.sh > "$root/ext.patch" \
+    && git checkout -q experiments/t/e/run.sh )
+T "run-experiment: interrupted again (extension)" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+cp "$root/ext.patch" "$rx/results/t/e/.quick.partial/extension.patch"
+T "run-experiment: an unapplied extension.patch is refused" 1 RX "$rx/tools/run-experiment" t/e quick
+has "run-experiment: names the patch to apply" 'extension.patch is not applied'
+T "run-experiment: --reanalyse refused beside an extension" 1 RX "$rx/tools/run-experiment" t/e quick --reanalyse
+has "run-experiment: says the carried runs would be lost" 'extension in progress'
+in_file "run-experiment: the refusals kept the patch" "$rx/results/t/e/.quick.partial/extension.patch" 'the extension'
+git -C "$rx" apply "$root/ext.patch"
+T "run-experiment: resumes once the patch is applied" 0 RX "$rx/tools/run-experiment" t/e quick
+if [ ! -e "$rx/results/t/e/quick/extension.patch" ] && [ ! -e "$rx/results/t/e/.quick.partial" ]; then
+    ok "run-experiment: the result leaves the patch out"
+else bad "run-experiment: extension.patch left in the result or partial"; fi
+git -C "$rx" checkout -q experiments/t/e/run.sh
 
 # ---------------------------------------------------------------- verify-result
 # The analysis redone from the kept runs (no simulation): fresh while nothing
