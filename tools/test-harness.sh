@@ -962,6 +962,15 @@ if [ ! -e "$rx/results/t/e/quick/extension.patch" ] && [ ! -e "$rx/results/t/e/.
     ok "run-experiment: the result leaves the patch out"
 else bad "run-experiment: extension.patch left in the result or partial"; fi
 git -C "$rx" checkout -q experiments/t/e/run.sh
+# with another binary the carried runs are not used: it starts afresh from run.sh as it stands (make
+# reproduce on a new build) and keeps the patch beside the next partial
+T "run-experiment: interrupted again (extension, another binary)" 1 RX FAKE_FAIL=b "$rx/tools/run-experiment" t/e quick
+cp "$root/ext.patch" "$rx/results/t/e/.quick.partial/extension.patch"
+T "run-experiment: another binary beside an extension runs afresh" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd2" FAKE_LOG="$log" "$rx/tools/run-experiment" t/e quick
+if [ -f "$rx/results/t/e/.quick.partial/extension.patch" ] && [ ! -e "$rx/results/t/e/quick/extension.patch" ]; then
+    ok "run-experiment: the unapplied patch kept beside the next partial, not in the result"
+else bad "run-experiment: the unapplied patch lost or in the result"; fi
+rm -rf "$rx/results/t/e/.quick.partial"
 
 # ---------------------------------------------------------------- verify-result
 # The analysis redone from the kept runs (no simulation): fresh while nothing
