@@ -939,6 +939,9 @@ esac
 in_file "carry-partial: RESUME.txt names the binary's commit" "$rx/results/t/e/.quick.partial/RESUME.txt" 'built from commit fake1'
 ( cd "$rx" && git add .gitignore experiments tools && git -c user.name=t -c user.email=t@t commit -qm carry ) >/dev/null 2>&1
 rm -rf "$root/rx2"; git clone -q "$rx" "$root/rx2" 2>/dev/null
+T "carry-partial: an interrupted resume in a clone" 1 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" FAKE_FAIL=b "$root/rx2/tools/run-experiment" t/e quick
+if git -C "$root/rx2" diff --quiet -- results; then ok "carry-partial: the interrupted resume kept every carried file (RESUME.txt too)"
+else bad "carry-partial: the interrupted resume changed carried files: $(git -C "$root/rx2" diff --name-status -- results | tr '\n' ' ')"; fi
 : > "$log"
 T "carry-partial: resumed in a clone" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" FAKE_LOG="$log" "$root/rx2/tools/run-experiment" t/e quick
 if [ "$(tr '\n' ' ' < "$log")" = "b resume=1 " ]; then ok "carry-partial: the clone reran only the unfinished simulation"
