@@ -1238,6 +1238,32 @@ for x in "at-base 0.1" "at-new 0.2" "at-later 0.2" "at-side 0.1" "made 0.1"; do
 done
 T "cost rates: COST_SPEEDUP=0" 0 env COST_SPEEDUP=0 "$CR/tools/cost" rates
 [ "$(rate_of at-later)" = 0.1 ] && ok "cost rates: COST_SPEEDUP=0, no scaling" || bad "cost rates: COST_SPEEDUP=0: $(rate_of at-later)" "$root/out"
+# tools/cost estimate and table: a planned run of at-later's pow scene, 10 particles for 10 steps
+# (a fake simulator's dry run), at the rate 0.2 times pow's factor 0.5: 10 CPU s; a run of a scene
+# of the experiment 'made' without a committed rate for it takes the experiment's (0.1 x 0.5 x 100);
+# one whose scene does not set up is named in the table's note, not counted
+printf '#!/bin/sh\nfor a; do [ "$a" = --dry-run ] && { [ -f "$2" ] || exit 2; printf "particles\\t10\\nequilibration\\t4\\nsteps\\t6\\n"; exit 0; }; done; exit 1\n' > "$CR/fake-dpd"
+chmod +x "$CR/fake-dpd"
+pr=$CR/planned; mkdir -p "$pr"; printf 's.cfg\n--set\nseed=3\n' > "$pr/.args"; echo "$CR/experiments/c/at-later" > "$pr/.cwd"
+T "cost estimate: a planned run" 0 env DPD_BIN="$CR/fake-dpd" "$CR/tools/cost" estimate c/at-later "$pr"
+[ "$(cat "$root/out")" = "$(printf '10\t10\t10\t64')" ] && ok "cost estimate: 10 particles, 10 steps, 10 CPU s (rate x class factor), 64 MB" ||
+    bad "cost estimate: a planned run" "$root/out"
+printf 'missing.cfg\n' > "$pr/.args"
+T "cost estimate: a scene that does not set up fails" 1 env DPD_BIN="$CR/fake-dpd" "$CR/tools/cost" estimate c/at-later "$pr"
+cat > "$CR/experiments/c/made/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+mkdir -p "$OUT/runs/a" "$OUT/runs/b" "$OUT/runs/c"
+for n in a b c; do pwd > "$OUT/runs/$n/.cwd"; done
+printf 's.cfg\n' > "$OUT/runs/a/.args"; printf 's.cfg\n--set\nseed=2\n' > "$OUT/runs/b/.args"; printf 'gone.cfg\n' > "$OUT/runs/c/.args"
+printf 'a\nb\nc\n' > "$OUT/.plan"; printf 'rounds\t1\n' > "$OUT/.declared"
+EOF2
+chmod +x "$CR/experiments/c/made/run.sh"; cp "$tools/plan" "$CR/tools/"
+printf 'key\tvalue\ncpu_seconds\t3600\n' > "$CR/results/c/made/paper/provenance.tsv"
+T "cost table: an experiment of three planned runs" 0 env DPD_BIN="$CR/fake-dpd" COST_JOBS="$CR/jobs" "$CR/tools/cost" table paper c/made
+awk -F'\t' '$1 == "c/made" { found = $2 == 2 && $3 == 200 && $4 == "0.00278" && $10 ~ /^a scene does not set up; rates x pow x0\.5$/ } END { exit !found }' "$root/out" &&
+    ok "cost table: 2 simulations, 200 particle-steps, 10 CPU s (the experiment's rate 0.1 x 0.5), the failed scene named" ||
+    bad "cost table: c/made" "$root/out"
+[ "$(cut -f2,3 "$CR/jobs" | tr '\t\n' ' ')" = "a 5 b 5 " ] && ok "cost table: COST_JOBS lists each projected simulation" || bad "cost table: COST_JOBS" "$CR/jobs"
 
 # tools/progress: the line of make figures / make reproduce from a projection, the plans and the ledger.
 # A: three projected simulations (100, 100, 200 CPU s), of which a1 and a2 are planned (a3 was kept
