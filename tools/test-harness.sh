@@ -974,6 +974,43 @@ if [ -f "$rx/results/t/e/.quick.partial/extension.patch" ] && [ ! -e "$rx/result
     ok "run-experiment: the unapplied patch kept beside the next partial, not in the result"
 else bad "run-experiment: the unapplied patch lost or in the result"; fi
 rm -rf "$rx/results/t/e/.quick.partial"
+# carry-partial runs the run.sh's keep_run for every finished simulation (what its analysis reads
+# from run.h5, which is not carried): made from run.h5 and staged; a finished one with neither
+# stops the carry with nothing staged; a run.sh without keep_run carries as before (t/e above)
+mkdir -p "$rx/experiments/t/k"
+cat > "$rx/experiments/t/k/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+keep_run() {
+    [ -f "$OUT/runs/$1/blocks.tsv" ] && return 0
+    [ -f "$OUT/runs/$1/run.h5" ] || { echo "t/k: runs/$1 has neither blocks.tsv nor run.h5" >&2; return 1; }
+    sed 's/^/block /' "$OUT/runs/$1/run.h5" > "$OUT/runs/$1/blocks.tsv"
+}
+simulations() { echo "t/k: simulations in a keep pass" >&2; exit 9; }
+analysis() { echo "t/k: analysis in a keep pass" >&2; exit 9; }
+experiment
+EOF2
+chmod +x "$rx/experiments/t/k/run.sh"
+kp=$rx/results/t/k/.quick.partial
+mkdir -p "$kp/runs/a" "$kp/runs/b" "$kp/runs/c"
+( . "$tools/lib/common.sh"; partial_stamp quick "$rx/fake-dpd" ) > "$kp/.stamp"
+for n in a b c; do printf 'quantity\tvalue\tstderr\nq\t1\t0\n' > "$kp/runs/$n/summary.tsv"; done
+echo series > "$kp/runs/a/run.h5"; echo 'block kept' > "$kp/runs/b/blocks.tsv"; echo run > "$kp/runs/c/INCOMPLETE"
+T "carry-partial: keep_run for each finished simulation" 0 env DPD_BIN="$rx/fake-dpd" "$rx/tools/carry-partial" t/k quick
+in_file "carry-partial: keep_run made a's table from its run.h5" "$kp/runs/a/blocks.tsv" '^block series$'
+staged=$(git -C "$rx" diff --cached --name-only -- results/t/k | tr '\n' ' ')
+case $staged in
+    *runs/a/blocks.tsv*runs/b/blocks.tsv*) ok "carry-partial: the kept tables staged" ;;
+    *) bad "carry-partial: kept tables not staged: $staged" ;;
+esac
+[ ! -e "$kp/summary.tsv" ] && ok "carry-partial: the keep pass wrote nothing else (no summary.tsv)" || bad "carry-partial: the keep pass wrote summary.tsv"
+git -C "$rx" reset -q -- results/t/k
+rm "$kp/runs/a/blocks.tsv" "$kp/runs/a/run.h5"
+T "carry-partial: a finished simulation with neither its table nor run.h5 stops the carry" 1 env DPD_BIN="$rx/fake-dpd" "$rx/tools/carry-partial" t/k quick
+has "carry-partial: names the simulation" 'runs/a has neither blocks.tsv nor run.h5'
+[ -z "$(git -C "$rx" diff --cached --name-only -- results/t/k)" ] && ok "carry-partial: nothing staged when keep_run fails" ||
+    bad "carry-partial: staged despite keep_run failing: $(git -C "$rx" diff --cached --name-only -- results/t/k | tr '\n' ' ')"
+rm -rf "$rx/results/t/k" "$rx/experiments/t/k"
 
 # ---------------------------------------------------------------- verify-result
 # The analysis redone from the kept runs (no simulation): fresh while nothing

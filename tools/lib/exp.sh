@@ -17,7 +17,7 @@ tsv_lookup() {
     return 1
 }
 mkdir -p "$OUT/runs"
-[ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
+[ -n "${DPD_KEEP_RUNS+set}" ] || [ -f "$OUT/summary.tsv" ] || printf 'quantity\tvalue\tstderr\n' > "$OUT/summary.tsv"
 
 # dpd_run NAME SCENE [--set k=v ...]: the simulation NAME of this experiment, in $OUT/runs/NAME.
 # A simulation already complete with the same arguments and the same scene file content is kept
@@ -119,6 +119,12 @@ _verify_refuse() {
 # map's bisections, whose next trial depends on the last) says so by setting
 # analysis_runs_simulations=1 in its set-up; tools/run-experiment then runs its analysis on its
 # own job slot in the normal mode.
+# keep_run NAME (optional, in a run.sh): writes into runs/NAME what the analysis reads from that
+# simulation's run.h5 (its per-block tables, say), and succeeds when it is there already. A result
+# keeps no run.h5, and tools/carry-partial carries none, so a table the analysis derives from it
+# must be made while run.h5 exists: carry-partial runs keep_run for every finished simulation it
+# carries (DPD_KEEP_RUNS, a pass of run.sh that runs nothing else) and stops, carrying nothing, when
+# one fails (neither the table nor run.h5). The analysis calls the same function.
 # experiment: runs the declaration. With DPD_ROUND=K (a plan pass, DPD_PLAN=1: tools/plan K = 1,
 # tools/run-experiment every round): the simulations and analyses of rounds 1 .. K-1 (every one
 # of their simulations finished), then round K's simulations, and nothing after; it records
@@ -133,6 +139,13 @@ experiment() {
     declare -F simulations > /dev/null && declare -F analysis > /dev/null ||
         { echo "exp.sh: $EXP/run.sh declares no functions simulations and analysis (tools/lib/exp.sh, experiment)" >&2; exit 1; }
     while declare -F "simulations_$((_exp_n + 1))" > /dev/null; do _exp_n=$((_exp_n + 1)); done
+    # DPD_KEEP_RUNS="NAME ..." (tools/carry-partial): only the run.sh's keep_run NAME for each
+    # finished simulation named, nothing else (see keep_run below)
+    if [ -n "${DPD_KEEP_RUNS+set}" ]; then
+        declare -F keep_run > /dev/null || return 0
+        for _exp_k in $DPD_KEEP_RUNS; do keep_run "$_exp_k" || { echo "exp.sh: keep_run $_exp_k failed" >&2; exit 1; }; done
+        return 0
+    fi
     if [ "${DPD_PLAN:-0}" = 1 ]; then
         printf 'rounds\t%s\nanalysis_runs_simulations\t%s\n' "$_exp_n" "${analysis_runs_simulations:-0}" > "$OUT/.declared"
     fi

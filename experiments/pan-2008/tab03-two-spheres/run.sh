@@ -93,6 +93,10 @@ if [ "$TIER" = reduced ]; then
     done
 fi
 }
+# keep_run NAME (tools/lib/exp.sh): the blocks the analysis reads from a run's run.h5 (sphere_blocks
+# below), which a result does not keep and tools/carry-partial does not carry: the ladder's LR_B
+# blocks, every other run's B
+keep_run() { case $1 in lr_u*) two_sphere_blocks "$1" "$LR_B" ;; *) two_sphere_blocks "$1" "$B" ;; esac; }
 analysis() {
 # the analysis
 eq23() { "$ANALYSE" two-sphere-theory $1 $2 $MU $R; }  # l u -> F_the T_the (eq. 23)
