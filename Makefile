@@ -30,6 +30,7 @@ SRC := $(filter-out src/app/main.c,$(wildcard $(addsuffix /*.c,$(SRC_DIRS))))
 OBJ := $(patsubst %.c,$(BUILD)/%.o,$(notdir $(SRC)))
 vpath %.c $(SRC_DIRS)
 BIN := bin/dpd
+ANALYSE_CLIENT := build/analyse-client
 
 .PHONY: all deps test test-slurm test-paper figures check reproduce paper paper-pdf bench bench-peer clean
 all: $(BIN)
@@ -68,9 +69,17 @@ $(addprefix $(BUILD)/,$(VERSIONED_OBJ)) $(addprefix $(BUILD)/bare/,$(VERSIONED_O
 $(BUILD)/libdpd.a: $(OBJ)
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a
+$(BIN): $(BUILD)/main.o $(BUILD)/libdpd.a | $(ANALYSE_CLIENT)
 	@mkdir -p bin
 	$(CC) $(CFLAGS_ALL) -o $@ $^ $(PKG_LIBS) -lm
+
+# the client of the analysis server (tools/analysis_server.py): "$ANALYSE" in an experiment's
+# analysis once exp.sh has started the server. Static, so that each of its hundreds of starts
+# maps no shared library; not sanitized (ASan does not link statically). Built with every
+# bin/dpd (order-only: it does not relink the simulator).
+$(ANALYSE_CLIENT): tools/lib/analyse-client.c | $(DEPS_STAMP)
+	@mkdir -p build
+	$(CC) $(WARN) -O2 -D_DEFAULT_SOURCE -static -o $@ $<
 
 # The bare build (src/core/modules.h): the same sources with every optional module
 # compiled out (-DDPD_BARE); it refuses scenes that switch one on. make bench

@@ -31,14 +31,14 @@ $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 TEST_SCRIPTS := tests/checkpoint.sh tests/io_errors.sh tests/scene_errors.sh tests/blowup.sh \
   tests/h5md.sh tests/layers.sh tests/tcaf_fit.sh tests/precision.sh tests/bare.sh tests/skips.sh \
   tests/analysis.py tests/bands_diff.sh tests/fit_line.sh tests/claim_groups.sh tests/library_exits.sh \
-  tests/in_flight.sh tests/version.sh
+  tests/in_flight.sh tests/version.sh tests/analyse_server.sh
 SLOW_BINS := test_transverse_relaxation test_thermostat test_bonds test_msd test_rotation test_forces
 SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(notdir $(TEST_BINS)))
 SUITE_LOGS := $(BUILD)/tests/logs
 suite_path = $(if $(filter test_%,$(1)),$(BUILD)/tests/$(1),tests/$(1))
 
 .PHONY: test $(addprefix suite/,$(SUITES))
-$(addprefix suite/,$(SUITES)): suite/%: $(TEST_BINS) $(TEST_DPD) $(BARE)
+$(addprefix suite/,$(SUITES)): suite/%: $(TEST_BINS) $(TEST_DPD) $(BARE) $(ANALYSE_CLIENT)
 	@DPD=$(TEST_DPD) BARE=$(BARE) SANITIZE=$(SANITIZE) tests/run-tests.sh --one $(call suite_path,$*) $(SUITE_LOGS)/$*.log
 	@echo "test: $* done"
 test: $(addprefix suite/,$(SUITES))

@@ -26,15 +26,27 @@ set -euo pipefail
 root=${DPD_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)}
 here=$root/experiments/methods/pan-estimators
 claims=${1:-$here/claim-runs.tsv}
-ANALYSE=$root/tools/analyse   # the analysis layer (tools/analysis.py)
+# the analysis layer (tools/analysis.py): through the analysis server of the experiment that runs
+# this script, when it has one (tools/lib/exp.sh, analyse_serve), else tools/analyse
+ANALYSE=$root/tools/analyse
+[ -n "${DPD_ANALYSE_SOCKET:-}" ] && [ -x "$root/build/analyse-client" ] && ANALYSE=$root/build/analyse-client
+
+# the factor of every committed run of the claims' results (tools/cost run-factors: its class's
+# factor, or 1 for a run whose binary has the speed-up already), in one call for all of them
+declare -A run_factor_of=()
+while IFS=$'\t' read -r d f; do run_factor_of[$d]=$f; done < <(
+    awk -F'\t' '$1 != "" && $1 !~ /^#/ && $1 != "experiment" { print $1 "\t" $2 }' "$claims" | LC_ALL=C sort -u |
+    while IFS=$'\t' read -r exp tier; do
+        for d in "$root/results/$exp/$tier/runs"/*/; do [ -s "$d.args" ] && printf '%s\t%s\n' "$exp" "${d%/}"; done
+    done | "$root/tools/cost" run-factors)
 
 # run_cost DIR EXP -> "prod_cpu_s<TAB>eq_cpu_s<TAB>prod_time_units" of one committed run, its CPU on
-# this build's scale (tools/cost run-factor: its class's factor, or 1 for a run whose binary has the
-# speed-up already); equilibration and dt from its arguments, else its scene
+# this build's scale (its factor, above); equilibration and dt from its arguments, else its scene
 run_cost() {
     local dir=$1 exp=$2 fac
     mapfile -t a < "$dir/.args"
-    fac=$("$root/tools/cost" run-factor "$exp" "$dir")
+    fac=${run_factor_of[$dir]:-}
+    [ -n "$fac" ] || fac=$("$root/tools/cost" run-factor "$exp" "$dir")
     "$ANALYSE" run-cost "$root/experiments/$exp/${a[0]}" "$dir/summary.tsv" "$fac" "${a[@]:1}"
 }
 

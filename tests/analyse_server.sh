@@ -1,0 +1,109 @@
+#!/bin/bash
+# analyse_server.sh - the analysis server (tools/analysis_server.py) and its client
+# (build/analyse-client, tools/lib/analyse-client.c) against the plain tools/analyse: the same
+# stdout, stderr and exit status for calls that print, read stdin, read a file relative to the
+# caller's directory, fail on bad arguments, a missing file or an unknown subcommand; twenty
+# calls at once; the fallback to tools/analyse when the server cannot be reached or a
+# descriptor is closed; exp.sh's analyse_serve switching "$ANALYSE" to the client; the server
+# ending with the shell that started it, its socket removed; and the caller's pipes not held by
+# it. Prints "N passed, M failed".
+set -u
+cd "$(dirname "$0")/.."
+. tests/shlib.sh analyse-server
+root=$PWD
+client=$root/build/analyse-client plain=$root/tools/analyse
+[ -x "$client" ] || { echo "FAIL no $client (make build/analyse-client)"; echo "0 passed, 1 failed"; exit 1; }
+
+# start_server DIR: a server on DIR/socket watching this shell, as exp.sh starts it
+start_server() {
+    local line=
+    mkdir -p "$1"; mkfifo "$1/ready"
+    ( exec "$plain" --serve "$1/socket" $$ < /dev/null > "$1/ready" 2> /dev/null & )
+    read -r -t 30 line < "$1/ready"
+    [ "$line" = ready ]
+}
+if start_server "$tmp/s"; then ok "the server starts and says it is ready"; else bad "server start" "no ready line"; fi
+export DPD_ANALYSE_SOCKET=$tmp/s/socket DPD_ANALYSE_FALLBACK=$plain
+
+# same NAME STDIN_FILE ARGS...: client and plain tools/analyse give the same stdout, stderr and status
+printf 'lags\tvalue\tstderr\neta\t3.5\t0.25\nrho\t4\t0\n' > "$tmp/summary.tsv"
+printf '1.5\n2.5\n4\n' > "$tmp/values"
+same() {
+    local name=$1 in=$2 rc_c=0 rc_p=0; shift 2
+    (cd "$tmp" && "$client" "$@" < "$in" > "$tmp/c.out" 2> "$tmp/c.err") || rc_c=$?
+    (cd "$tmp" && env -u DPD_ANALYSE_SOCKET "$plain" "$@" < "$in" > "$tmp/p.out" 2> "$tmp/p.err") || rc_p=$?
+    if [ $rc_c != $rc_p ]; then bad "$name" "status $rc_c, plain tools/analyse $rc_p"
+    elif ! cmp -s "$tmp/c.out" "$tmp/p.out"; then bad "$name" "stdout '$(cat "$tmp/c.out")', plain '$(cat "$tmp/p.out")'"
+    elif ! cmp -s "$tmp/c.err" "$tmp/p.err"; then bad "$name" "stderr '$(cat "$tmp/c.err")', plain '$(cat "$tmp/p.err")'"
+    else ok "$name (status $rc_c)"; fi
+}
+same "a computed value" /dev/null plus 1.25 2.5
+same "a table read on stdin" "$tmp/values" mean-se
+same "a file named relative to the caller's directory" /dev/null lookup summary.tsv eta
+same "a row not in the file (status 1)" /dev/null lookup summary.tsv nosuch
+same "a missing file (status 1, the message)" /dev/null lookup nosuch.tsv eta
+same "missing arguments (status 2, the message)" /dev/null plus
+same "an unknown subcommand (status 2, the usage)" /dev/null no-such-subcommand
+same "no subcommand (status 2)" /dev/null
+
+# the calls run in the server's forks, not in a python of their own
+out=$("$client" plus 2 3)
+[ "$out" = 5 ] && ok "a call answered through the socket" || bad "call through the socket" "'$out'"
+strace_ok=0
+if command -v strace > /dev/null && strace -f -qq -e trace=execve -o "$tmp/trace" "$client" plus 2 3 > /dev/null 2>&1; then
+    strace_ok=1
+    if grep -q python "$tmp/trace"; then bad "no python started per call" "$(grep -c python "$tmp/trace") execve of python"
+    else ok "no python started per call (strace: the client execs nothing)"; fi
+fi
+[ $strace_ok = 1 ] || echo "SKIP no strace: the per-call check"
+
+# twenty calls at once, each its own answer
+pids=(); for i in $(seq 20); do "$client" plus "$i" 1000 > "$tmp/par.$i" & pids+=($!); done
+wait   # (the server is no child of this shell: a bare wait does not wait for it)
+good=0; for i in $(seq 20); do [ "$(cat "$tmp/par.$i")" = $((i + 1000)) ] && good=$((good + 1)); done
+[ $good = 20 ] && ok "twenty calls at once, each its own answer" || bad "twenty calls at once" "$good of 20 right"
+
+# a pipeline: the call reads what the one before it writes and writes to the next
+out=$(printf '2\n4\n' | "$client" mean-se | cut -f1)
+[ "$out" = "$(printf '2\n4\n' | env -u DPD_ANALYSE_SOCKET "$plain" mean-se | cut -f1)" ] && ok "inside a pipeline" || bad "pipeline" "'$out'"
+
+# the fallback: no server there, or a standard descriptor closed: tools/analyse runs the call
+out=$(DPD_ANALYSE_SOCKET=$tmp/none/socket "$client" plus 2 3)
+[ "$out" = 5 ] && ok "no server at the socket: tools/analyse runs the call" || bad "fallback without server" "'$out'"
+out=$("$client" plus 2 3 <&-)
+[ "$out" = 5 ] && ok "stdin closed: tools/analyse runs the call" || bad "fallback with stdin closed" "'$out'"
+rc=0; DPD_ANALYSE_SOCKET=$tmp/none/socket DPD_ANALYSE_FALLBACK= "$client" plus 2 3 > /dev/null 2> "$tmp/err" || rc=$?
+[ $rc = 127 ] && grep -q 'no analysis server' "$tmp/err" && ok "no server and no fallback: status 127, said" \
+    || bad "no server, no fallback" "status $rc, '$(cat "$tmp/err")'"
+
+# exp.sh's analyse_serve: "$ANALYSE" becomes the client, with a server of its own, and the server
+# ends with the shell that started it, its socket directory removed
+cat > "$tmp/run.sh" <<EOF
+set -euo pipefail
+export DPD=/bin/true OUT=$tmp/out TIER=quick DPD_ROOT=$root
+. "$root/tools/lib/exp.sh"
+analyse_serve
+sleep 0.1 & wait   # a bare wait: not for the server
+printf '%s\n%s\n' "\$ANALYSE" "\${DPD_ANALYSE_SOCKET:-}"
+"\$ANALYSE" plus 40 2
+EOF
+env -u DPD_ANALYSE_SOCKET timeout 30 bash "$tmp/run.sh" > "$tmp/run.out" 2>&1
+mapfile -t r < "$tmp/run.out"
+[ "${r[0]:-}" = "$client" ] && [ "${r[2]:-}" = 42 ] && ok "exp.sh analyse_serve: \"\$ANALYSE\" is the client and answers; a bare wait does not wait for the server" \
+    || bad "analyse_serve" "$(cat "$tmp/run.out")"
+gone=0; for _ in $(seq 50); do [ -e "${r[1]:-/nonexistent}" ] || { gone=1; break; }; sleep 0.1; done
+[ $gone = 1 ] && [ ! -d "$(dirname "${r[1]:-/x/y}")" ] && ok "the server ends with its shell and removes its socket" \
+    || bad "server end" "${r[1]:-} still there 5 s after its shell ended"
+env -u DPD_ANALYSE_SOCKET DPD_ANALYSE_SERVER=0 bash "$tmp/run.sh" > "$tmp/run0.out" 2>&1
+mapfile -t r0 < "$tmp/run0.out"
+[ "${r0[0]:-}" = "$plain" ] && [ "${r0[2]:-}" = 42 ] && ok "DPD_ANALYSE_SERVER=0: \"\$ANALYSE\" is tools/analyse" \
+    || bad "DPD_ANALYSE_SERVER=0" "$(cat "$tmp/run0.out")"
+# the caller's pipe is not held open by the server: the reader sees its end when the shell exits
+t0=$(date +%s%N)
+env -u DPD_ANALYSE_SOCKET bash "$tmp/run.sh" 2>&1 | cat > /dev/null
+ms=$(( ($(date +%s%N) - t0) / 1000000 ))
+[ $ms -lt 900 ] && ok "the caller's pipe ends with the shell, not with the server (${ms} ms)" \
+    || bad "caller's pipe" "the pipeline took $ms ms: the server holds it until it notices its parent is gone"
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,177 @@
+"""tools/analysis_server.py - one python process that runs an experiment's "$ANALYSE" calls.
+
+An analysis makes hundreds of "$ANALYSE" calls, and each used to start its own python: about 60 ms
+of CPU per call on the CI machines (the interpreter's start, then analysis.py imported), most of
+it page faults of the new process, against a few milliseconds of analysis. This server starts
+once per run.sh (tools/lib/exp.sh, analyse_serve), imports analysis.py once, and forks a child per
+call; the client (tools/lib/analyse-client.c, build/analyse-client) hands the child its standard
+input, output and error (SCM_RIGHTS), its working directory and its arguments, and exits with the
+child's status. The child is a fork of the server as it was after the import, never of an earlier
+call, so every call starts from the same module state as a fresh `tools/analyse` would; it writes
+to the caller's own descriptors, so pipes, redirections and end-of-file behave as with a process
+of its own. analysis.py reads no environment variable: the server's (the experiment's) applies.
+
+Protocol (one connection per call): the client sends a 4-byte little-endian length, then that many
+bytes: the working directory and the arguments (subcommand first), each NUL-terminated; the first
+part carries descriptors 0, 1 and 2. The child answers with the call's exit status, 4 bytes
+little-endian, and closes. A client that cannot reach the server runs tools/analyse itself.
+
+The server ends when the shell that started it has gone (the process it was given to watch), and
+removes its socket. It is not that shell's child (exp.sh starts it detached), so that a bare
+`wait` in a run.sh does not wait for it. tests/analyse_server.sh checks the outputs, statuses, stdin and concurrency against the
+plain tools/analyse.
+"""
+import gc
+import os
+import select
+import signal
+import socket
+import struct
+import sys
+import traceback
+
+import analysis
+
+
+def _status(code):
+    """The exit status python gives for sys.exit(code)."""
+    if code is None:
+        return 0
+    if isinstance(code, int):
+        return code & 0xff
+    sys.stderr.write('%s\n' % code)
+    return 1
+
+
+def _run(argv):
+    """One call, as `python -c 'sys.exit(analysis.main(argv))'` runs it: its status."""
+    try:
+        code = _status(analysis.main(['analyse'] + argv))
+    except SystemExit as e:
+        code = _status(e.code)
+    except BaseException:
+        traceback.print_exc()
+        code = 1
+    # flushed here, as the interpreter does at its exit (a closed pipe: status 120, as python's)
+    for f in (sys.stdout, sys.stderr):
+        try:
+            f.flush()
+        except BrokenPipeError:
+            code = 120
+        except OSError:
+            code = 120
+    return code
+
+
+def _request(conn):
+    """(cwd, argv, fds) of a call; raises on a malformed one."""
+    msg, fds, _, _ = socket.recv_fds(conn, 65536, 3)
+    if len(fds) != 3 or len(msg) < 4:
+        for fd in fds:
+            os.close(fd)
+        raise ValueError('a call without its three descriptors')
+    (n,) = struct.unpack('<I', msg[:4])
+    data = msg[4:]
+    while len(data) < n:
+        part = conn.recv(n - len(data))
+        if not part:
+            raise ValueError('a call cut short')
+        data += part
+    parts = data[:n].split(b'\0')[:-1]
+    if not parts:
+        raise ValueError('a call without a working directory')
+    return os.fsdecode(parts[0]), [os.fsdecode(p) for p in parts[1:]], fds
+
+
+def _child(conn):
+    """In the forked child: run the call on the client's descriptors, answer its status."""
+    signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    try:
+        cwd, argv, fds = _request(conn)
+    except (OSError, ValueError) as e:
+        os.write(2, ('analysis server: %s\n' % e).encode())
+        os._exit(1)
+    for i, fd in enumerate(fds):
+        os.dup2(fd, i)
+        os.close(fd)
+    try:
+        os.chdir(cwd)
+        code = _run(argv)
+    except OSError as e:
+        sys.stderr.write('analyse: %s: %s\n' % (cwd, e))
+        code = 1
+    try:
+        conn.sendall(struct.pack('<I', code))
+    except OSError:
+        pass
+    os._exit(0)
+
+
+def _start_time(pid):
+    """The process's start time (/proc/PID/stat field 22), None if it has none: a PID that the
+    kernel gives to another process later has another."""
+    try:
+        with open('/proc/%d/stat' % pid, 'rb') as f:
+            return f.read().rsplit(b')', 1)[1].split()[19]
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid, started):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass
+    return started is None or _start_time(pid) == started
+
+
+def serve(path, watch):
+    """Serve on the socket PATH while the process WATCH (the shell of the run.sh) lives."""
+    os.closerange(3, 1 << 16)   # none of the caller's pipes or make's jobserver kept open
+    started = _start_time(watch)
+    sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    sock.bind(path)
+    sock.listen(64)
+    # ready: the caller reads this line, then every descriptor it lent is given back (the
+    # server must not keep a pipe of the caller open, e.g. make's output or a tee)
+    sys.stdout.write('ready\n')
+    sys.stdout.flush()
+    null = os.open(os.devnull, os.O_RDWR)
+    for i in range(3):
+        os.dup2(null, i)
+    os.close(null)
+    os.chdir('/')
+    signal.signal(signal.SIGCHLD, signal.SIG_IGN)   # the children are reaped by the kernel
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))
+    gc.collect()
+    gc.freeze()   # the objects of the import are not touched by the children's collections
+    try:
+        while _alive(watch, started):
+            if not select.select([sock], [], [], 1.0)[0]:
+                continue
+            try:
+                conn, _ = sock.accept()
+            except OSError:
+                continue
+            try:
+                pid = os.fork()
+            except OSError:
+                conn.close()   # the client sees no status and says so
+                continue
+            if pid == 0:
+                try:
+                    sock.close()
+                    _child(conn)
+                finally:
+                    os._exit(1)   # never back into the server's loop
+            conn.close()
+    finally:
+        try:
+            os.unlink(path)
+            os.rmdir(os.path.dirname(path))
+        except OSError:
+            pass
+    return 0
