@@ -6,27 +6,32 @@ set -euo pipefail
 # argument of the experiments; "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
 ANALYSE=$DPD_ROOT/tools/analyse
 # analyse_serve: from here on "$ANALYSE" runs in a fork of one analysis server
-# (tools/analysis_server.py) started now, through the static build/analyse-client, instead of a
-# python of its own per call (about 60 ms of CPU each on the CI machines; an analysis makes
-# hundreds). The same tables: each call runs in a fork of the server as it was after importing
-# analysis.py, on the caller's own descriptors. Nothing changes when the client is not built, the
-# server does not start, or DPD_ANALYSE_SERVER=0; a call the client cannot hand over runs
-# tools/analyse itself. The server ends when this shell does.
+# (tools/analysis_server.py), through the static build/analyse-client, instead of a python of its
+# own per call (about 60 ms of CPU each on the CI machines; an analysis makes hundreds). The same
+# tables: each call runs in a fork of the server as it was after importing analysis.py, on the
+# caller's own descriptors. The server starts at the first call (an analysis that makes none pays
+# nothing), from whichever subshell makes it, on a socket fixed here, and ends when this shell
+# does. Nothing changes when the client is not built, the server does not start, or
+# DPD_ANALYSE_SERVER=0: a call the client cannot hand over runs tools/analyse itself.
 analyse_serve() {
     [ "${DPD_ANALYSE_SERVER:-1}" = 1 ] && [ -x "$DPD_ROOT/build/analyse-client" ] || return 0
-    local dir line=
-    dir=$(mktemp -d) && mkfifo "$dir/ready" || return 0
-    # detached (a subshell that exits at once), so that a bare `wait` here does not wait for it;
-    # it watches this shell ($$) instead, and says "ready" on the fifo once it listens
-    ( exec "$DPD_ROOT/tools/analyse" --serve "$dir/socket" $$ < /dev/null > "$dir/ready" 2> /dev/null & )
-    read -r -t 30 line < "$dir/ready" || true
-    rm -f "$dir/ready"
-    if [ "$line" = ready ]; then
-        export DPD_ANALYSE_SOCKET=$dir/socket DPD_ANALYSE_FALLBACK=$DPD_ROOT/tools/analyse
-        ANALYSE=$DPD_ROOT/build/analyse-client
-    else
-        rm -rf "$dir"
-    fi
+    _analyse_dir=${TMPDIR:-/tmp}/dpd-analyse.$$.$RANDOM$RANDOM
+    export DPD_ANALYSE_SOCKET=$_analyse_dir/socket DPD_ANALYSE_FALLBACK=$DPD_ROOT/tools/analyse
+    ANALYSE=_analyse_call
+}
+_analyse_call() {
+    [ -S "$DPD_ANALYSE_SOCKET" ] || _analyse_start
+    "$DPD_ROOT/build/analyse-client" "$@"
+}
+# (the first call: one caller creates the directory and starts the server, detached so that a bare
+# `wait` here does not wait for it, watching this shell ($$, also in a subshell); a concurrent
+# first call finds the directory taken and falls back; the server says "ready" once it listens)
+_analyse_start() {
+    local line=
+    mkdir -m 700 "$_analyse_dir" 2> /dev/null && mkfifo "$_analyse_dir/ready" || return 0
+    ( exec "$DPD_ROOT/tools/analyse" --serve "$DPD_ANALYSE_SOCKET" $$ < /dev/null > "$_analyse_dir/ready" 2> /dev/null & )
+    read -r -t 30 line < "$_analyse_dir/ready" || true
+    rm -f "$_analyse_dir/ready"
 }
 # tsv_lookup FILE Q [WHO] -> "value<TAB>stderr" of the first row named Q, exit 1 (saying so as WHO)
 # if none: selection only, in bash without a process, for the lookups an analysis makes in its loops
