@@ -22,8 +22,13 @@ esac
 # (until issue 38: 4.7e7, 1.27e7 and 2.5e6, the reduced tier's torque stderr scaled to 0.5 % of
 # eq. 23's torque: about 45,000 CPU-hours, not run)
 paper_steps() { case $1 in 1) echo 150000;; 2) echo 230000;; 3) echo 240000;; esac; }
-# the runs of a row: one, or (paper tier, row 3) replicas row3, row3r2, row3r3 (seeds 2303, 2323, 2333)
-row_runs() { case $TIER:$1 in paper:3) echo "row3 row3r2 row3r3";; *) echo row$1;; esac; }
+# the runs of a row: one, or (paper tier) replicas rowN, rowNr2, ... (seed 2300 + 10 k + N for replica k).
+# Row 3: three runs of 2400 (2303, 2323, 2333). Rows 1-2 (the drag replicas, 2026-12-06, fixed before
+# any ran): one run each left their drags UNRESOLVED at 1.066 +- 0.025 and 1.067 +- 0.021 of eq. 23
+# against [0.90, 1.10]; four runs of 1500 at l = 2 and three of 2300 at l = 1.5 bring the stderr to
+# about 0.012, which decides the band for a value below 1.075 or above 1.125 (about 5.7 CPU-hours more)
+row_runs() { case $TIER:$1 in paper:1) echo "row1 row1r2 row1r3 row1r4";; paper:2) echo "row2 row2r2 row2r3";;
+                              paper:3) echo "row3 row3r2 row3r3";; *) echo row$1;; esac; }
 run_seed() { case $1 in row?r*) echo $((2300 + 10 * ${1##*r} + ${1:3:1}));; *) echo $((2300 + ${1#row}));; esac; }
 row_l()    { case $1 in 1) echo 2.0;; 2) echo 1.5;; 3) echo 1.0;; esac; }
 paper_F()  { case $1 in 1) echo 4.861;; 2) echo 4.857;; 3) echo 4.863;; esac; }
