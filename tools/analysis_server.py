@@ -56,8 +56,6 @@ def _run(argv):
     for f in (sys.stdout, sys.stderr):
         try:
             f.flush()
-        except BrokenPipeError:
-            code = 120
         except OSError:
             code = 120
     return code

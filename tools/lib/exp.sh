@@ -174,7 +174,7 @@ experiment() {
         for _exp_k in $DPD_KEEP_RUNS; do keep_run "$_exp_k" || { echo "exp.sh: keep_run $_exp_k failed" >&2; exit 1; }; done
         return 0
     fi
-    # the analysis passes make the calls (a plan pass makes a few, fewer than a server costs)
+    # the analysis passes (a plan pass makes a few calls, which a server's start would about match)
     [ "${DPD_PLAN:-0}" = 1 ] || analyse_serve
     if [ "${DPD_PLAN:-0}" = 1 ]; then
         printf 'rounds\t%s\nanalysis_runs_simulations\t%s\n' "$_exp_n" "${analysis_runs_simulations:-0}" > "$OUT/.declared"
