@@ -6,6 +6,7 @@
 # trapezoid rule's relative error dt^2 / (12 tau^2) < 1e-4) and eta(k -> 0) = 30 (degree 1 in
 # k^2, exact); --kmax leaves out the shells above it; --table and --curves write their tables;
 # a missing file, option or column, or a bad model, is refused with its message and no table.
+# Several models in one call (--model a,b, files named through %m) give each model's own files.
 # DPD selects the binary. Prints "N passed, M failed".
 set -u
 cd "$(dirname "$0")/.."
@@ -43,6 +44,31 @@ done
 "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model exp --kmax 0.9 > "$tmp/out" 2>&1
 [ "$(value "$tmp/out" extrapolation_shells)" = 2 ] && ok "--kmax 0.9 keeps the shells n2 = 1, 2 (k = 0.63, 0.89)" \
     || bad "--kmax" "$(cat "$tmp/out")"
+# several models from one fit: each model's files (--summary, --table, --curves through %m) are its
+# own call's, byte for byte
+mkdir -p "$tmp/one" "$tmp/all"
+for model in exp two-mode integral; do
+    "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model $model --table "$tmp/one/t_$model.tsv" \
+        --curves "$tmp/one/c_$model.tsv" > "$tmp/one/s_$model.out"
+done
+if "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral,exp,two-mode --table "$tmp/all/t_%m.tsv" \
+        --curves "$tmp/all/c_%m.tsv" --summary "$tmp/all/s_%m.out" > "$tmp/out" 2> "$tmp/err"; then
+    [ ! -s "$tmp/out" ] && diff -r "$tmp/one" "$tmp/all" > "$tmp/diff" && [ "$(ls "$tmp/all" | wc -l)" = 9 ] \
+        && ok "--model integral,exp,two-mode: each model's summary, table and curves as its own call's" \
+        || bad "--model with three models" "$(ls "$tmp/all"; cat "$tmp/diff")"
+else
+    bad "--model with three models" "$(cat "$tmp/err")"
+fi
+"$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral --summary "$tmp/s.out" > "$tmp/out" 2>&1
+[ ! -s "$tmp/out" ] && cmp -s "$tmp/s.out" "$tmp/one/s_integral.out" && ok "--summary with one model: the rows there, none on stdout" \
+    || bad "--summary with one model" "$(cat "$tmp/out")"
+refuse "several models without --summary" "needs --summary" "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model two-mode,integral
+refuse "several models, --summary without %m" "must name each model's file with %m" \
+    "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model two-mode,integral --summary "$tmp/s.out"
+refuse "several models, --table without %m" "--table '$tmp/t.tsv': with several models" \
+    "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model two-mode,integral --summary "$tmp/s_%m.out" --table "$tmp/t.tsv"
+refuse "a model twice" "integral twice" "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral,integral --summary "$tmp/s_%m.out"
+refuse "an empty model in a list" "expected exp, two-mode or integral" "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral, --summary "$tmp/s_%m.out"
 printf 'x\ty\n0\t1\n' > "$tmp/other.tsv"
 refuse "missing file named" "cannot open" "$DPD" tcaf-fit "$tmp/none.tsv" --rho 4 --box 10
 refuse "missing --rho refused" "usage" "$DPD" tcaf-fit "$tmp/tcaf.tsv" --box 10

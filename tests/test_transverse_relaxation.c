@@ -296,6 +296,41 @@ static void measured_current_errors_propagate(void **state)
     }
 }
 
+/* the same fields, bit for bit (nan included) */
+static int same_viscosity(const ShellViscosity *a, const ShellViscosity *b)
+{
+    const double x[] = {a->eta, a->eta_se, a->eta_se_bound, a->amplitude, a->amplitude_se, a->rate, a->rate_se,
+                        a->damping, a->frequency, a->sine, a->chi2_dof, a->t_cut, a->integral, a->tail};
+    const double y[] = {b->eta, b->eta_se, b->eta_se_bound, b->amplitude, b->amplitude_se, b->rate, b->rate_se,
+                        b->damping, b->frequency, b->sine, b->chi2_dof, b->t_cut, b->integral, b->tail};
+    return !memcmp(x, y, sizeof x) && a->points == b->points && a->modes == b->modes;
+}
+
+/* shell_viscosities: several models from one fit give each model's own call's numbers, bit for bit
+ * (a measured two-mode curve, a measured one-mode curve, and one without errors, which no model fits) */
+static void several_models_share_one_fit(void **state)
+{
+    (void)state;
+    const Modes cases[2] = {{0.6, 2.0, 4.0, 25.0, 0.0}, {1.0, 3.0, 1.0, 0.0, 0.0}};
+    const RelaxationModel all[3] = {RELAXATION_INTEGRAL, RELAXATION_EXP, RELAXATION_TWO_MODE};
+    uint64_t rng = 91;
+    for (int k = 0; k < 3; k++) {
+        double t[121], c[121], se[121];
+        if (k < 2) measured_curve(&cases[k], 121, 20000, &rng, t, c, se);
+        else for (int i = 0; i < 121; i++) { t[i] = i * DT; c[i] = exp(-i * DT); se[i] = 0.0; }   /* no lag has an error */
+        ShellViscosity both[3], one;
+        const int rc = shell_viscosities(all, 3, t, c, se, 121, K2, RHO, 0.3, both);
+        int each_rc = 0;
+        for (int j = 0; j < 3; j++) {
+            each_rc |= shell_viscosity(all[j], t, c, se, 121, K2, RHO, 0.3, &one);
+            CHECK_TRUE(same_viscosity(&both[j], &one), "case %d, model %d: one shared fit differs from the model's own call", k, j);
+        }
+        CHECK_TRUE((rc != 0) == (each_rc != 0), "case %d: status %d, the calls' %d", k, rc, each_rc);
+        if (k == 2) CHECK_TRUE(rc != 0 && isnan(both[0].eta) && isnan(both[1].eta) && isnan(both[2].eta),
+                               "a curve without errors fitted: status %d", rc);
+    }
+}
+
 /* a curve that cannot be fitted is refused, not answered */
 static void refusals(void **state)
 {
@@ -317,6 +352,7 @@ int main(void)
         cmocka_unit_test(two_mode_exact),
         cmocka_unit_test(white_noise_within_the_bound),
         cmocka_unit_test(measured_current_errors_propagate),
+        cmocka_unit_test(several_models_share_one_fit),
         cmocka_unit_test(refusals),
     };
     return cmocka_run_group_tests_name("transverse_relaxation", tests, NULL, NULL);

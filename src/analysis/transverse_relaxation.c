@@ -409,60 +409,89 @@ static int integral_viscosity(const Curve *cv, const double *G, const double *co
     return 0;
 }
 
-int shell_viscosity(RelaxationModel model, const double *t, const double *c, const double *se, int n,
-                    double k2, double rho, double fit_min, ShellViscosity *o)
+/* eta(k) by the two-mode or the integral model from the fitted curve cv (G its
+ * parameters' responses, corr the lags' correlation); o holds the fit's fields
+ * already, g is scratch (m lags). */
+static int fitted_viscosity(RelaxationModel model, const Curve *cv, const double *G, const double *corr,
+                            double *g, double scale, ShellViscosity *o)
 {
-    set_nan(o);
+    const int m = cv->n, rr = row_of(cv, P_RATE);
+    if (model == RELAXATION_INTEGRAL) return integral_viscosity(cv, G, corr, g, scale, o);
+    /* eq. 28 for the slow mode: eta = rho rate / k^2 */
+    double bound = 0.0;
+    for (int i = 0; i < m; i++) { g[i] = G[(size_t)rr * m + i] / cv->se[i]; bound += fabs(g[i]) * cv->se[i]; }
+    o->eta = scale * cv->p[P_RATE];
+    o->eta_se = scale * o->rate_se;
+    o->eta_se_bound = scale * bound;
+    o->t_cut = cv->t[m - 1];
+    return 0;
+}
+
+int shell_viscosities(const RelaxationModel *models, int nmodels, const double *t, const double *c,
+                      const double *se, int n, double k2, double rho, double fit_min, ShellViscosity *out)
+{
+    int rc = 0, fitted = 0;
+    for (int j = 0; j < nmodels; j++) {
+        set_nan(&out[j]);
+        if (models[j] != RELAXATION_EXP) fitted = 1;
+    }
     if (n < 3 || !(k2 > 0) || !(rho > 0) || t[0] != 0.0 || !(t[1] > 0)) return -1;
     const double dt = t[1];
     for (int i = 2; i < n; i++)
         if (fabs(t[i] - i * dt) > 1e-6 * i * dt) return -1;   /* lags evenly spaced from t = 0 */
-    if (model == RELAXATION_EXP) return single_exponential(t, c, se, n, k2, rho, fit_min, o);
-    /* the lags of the fit: t > 0, finite, positive error */
+    for (int j = 0; j < nmodels; j++)
+        if (models[j] == RELAXATION_EXP && single_exponential(t, c, se, n, k2, rho, fit_min, &out[j])) {
+            set_nan(&out[j]);
+            rc = -1;
+        }
+    if (!fitted) return rc;
+    /* the two-mode fit behind both the two-mode and the integral model: made once */
     double *ft = malloc((size_t)n * sizeof *ft), *fc = malloc((size_t)n * sizeof *fc), *fs = malloc((size_t)n * sizeof *fs);
     double *G = malloc((size_t)NPAR * n * sizeof *G), *g = calloc((size_t)n, sizeof *g), *corr = NULL;
     int *lag = malloc((size_t)n * sizeof *lag);
-    int rc = -1, m = 0, modes = 0;
+    int frc = -1, m = 0, modes = 0;
+    double p[NPAR] = {1.0, 1.0, 1.0, 0.0, 0.0}, cov[NPAR * NPAR], chi2_dof;
+    Curve cv = {ft, fc, fs, 0, ALL_PARAMETERS, NPAR, p};
+    ShellViscosity fit;
+    set_nan(&fit);
     if (!ft || !fc || !fs || !lag || !G || !g) goto done;
+    /* the lags of the fit: t > 0, finite, positive error */
     for (int i = 1; i < n; i++)
         if (isfinite(c[i]) && se[i] > 0 && isfinite(se[i])) { ft[m] = t[i]; fc[m] = c[i]; fs[m] = se[i]; lag[m] = i; m++; }
-    double p[NPAR] = {1.0, 1.0, 1.0, 0.0, 0.0}, cov[NPAR * NPAR], chi2_dof;
-    Curve cv = {ft, fc, fs, m, ALL_PARAMETERS, NPAR, p};
+    cv.n = m;
     if (m < 3 || fit_relaxation(&cv, G, cov, &chi2_dof, &modes)) goto done;
-    const double scale = rho / k2;
     const int ra = row_of(&cv, P_AMPLITUDE), rr = row_of(&cv, P_RATE);
     /* the parameters' errors with the lags correlated (Bartlett), from their responses G / se */
     if (!(corr = lag_correlation(p, modes, dt, lag, m))) goto done;
     for (int i = 0; i < m; i++) g[i] = ra >= 0 ? G[(size_t)ra * m + i] / fs[i] : 0.0;
-    o->amplitude = p[P_AMPLITUDE];
-    o->amplitude_se = ra >= 0 ? correlated_se(corr, g, fs, m) : 0.0;
+    fit.amplitude = p[P_AMPLITUDE];
+    fit.amplitude_se = ra >= 0 ? correlated_se(corr, g, fs, m) : 0.0;
     for (int i = 0; i < m; i++) g[i] = G[(size_t)rr * m + i] / fs[i];
-    o->rate = p[P_RATE];
-    o->rate_se = correlated_se(corr, g, fs, m);
-    if (modes == 2) { o->damping = p[P_DAMPING]; o->frequency = fabs(p[P_FREQUENCY]); o->sine = p[P_FREQUENCY] < 0 ? -p[P_SINE] : p[P_SINE]; }
-    o->chi2_dof = chi2_dof;
-    o->points = m;
-    o->modes = modes;
-    if (model == RELAXATION_TWO_MODE) {
-        /* eq. 28 for the slow mode: eta = rho rate / k^2 */
-        o->eta = scale * p[P_RATE];
-        o->eta_se = scale * o->rate_se;
-        double bound = 0.0;
-        for (int i = 0; i < m; i++) bound += fabs(g[i]) * fs[i];
-        o->eta_se_bound = scale * bound;
-        o->t_cut = ft[m - 1];
-        rc = 0;
-        goto done;
-    }
-    rc = integral_viscosity(&cv, G, corr, g, scale, o);
+    fit.rate = p[P_RATE];
+    fit.rate_se = correlated_se(corr, g, fs, m);
+    if (modes == 2) { fit.damping = p[P_DAMPING]; fit.frequency = fabs(p[P_FREQUENCY]); fit.sine = p[P_FREQUENCY] < 0 ? -p[P_SINE] : p[P_SINE]; }
+    fit.chi2_dof = chi2_dof;
+    fit.points = m;
+    fit.modes = modes;
+    frc = 0;
 done:
-    free(ft); free(fc); free(fs); free(lag); free(G); free(g); free(corr);
-    if (rc) {
-        const int pts = o->points;
-        set_nan(o);
-        o->points = pts;
+    for (int j = 0; j < nmodels; j++) {
+        if (models[j] == RELAXATION_EXP) continue;
+        out[j] = fit;
+        if (frc || fitted_viscosity(models[j], &cv, G, corr, g, rho / k2, &out[j])) {
+            set_nan(&out[j]);
+            out[j].points = fit.points;
+            rc = -1;
+        }
     }
+    free(ft); free(fc); free(fs); free(lag); free(G); free(g); free(corr);
     return rc;
+}
+
+int shell_viscosity(RelaxationModel model, const double *t, const double *c, const double *se, int n,
+                    double k2, double rho, double fit_min, ShellViscosity *o)
+{
+    return shell_viscosities(&model, 1, t, c, se, n, k2, rho, fit_min, o);
 }
 
 /* ---- dpd tcaf-fit ---- */
@@ -582,16 +611,46 @@ static int parse_double(const char *opt, const char *v, double lo, double hi, do
 
 /* The options of dpd tcaf-fit. */
 typedef struct {
-    const char *file, *table, *curves;
+    const char *file, *table, *curves, *summary;
     double rho, box, fit_min, kmax;
     int order;
-    RelaxationModel model;
+    RelaxationModel models[3];
+    int nmodels;
 } TcafFitArgs;
+
+/* --model exp|two-mode|integral, or several, comma separated, each once */
+static int parse_models(const char *v, TcafFitArgs *a)
+{
+    a->nmodels = 0;
+    for (const char *s = v;;) {
+        const size_t len = strcspn(s, ",");
+        RelaxationModel m;
+        if (len == 3 && !strncmp(s, "exp", len)) m = RELAXATION_EXP;
+        else if (len == 8 && !strncmp(s, "two-mode", len)) m = RELAXATION_TWO_MODE;
+        else if (len == 8 && !strncmp(s, "integral", len)) m = RELAXATION_INTEGRAL;
+        else { fprintf(stderr, "dpd tcaf-fit: --model '%s': expected exp, two-mode or integral, or several of them comma separated\n", v); return -1; }
+        for (int j = 0; j < a->nmodels; j++)
+            if (a->models[j] == m) { fprintf(stderr, "dpd tcaf-fit: --model '%s': %s twice\n", v, model_name(m)); return -1; }
+        a->models[a->nmodels++] = m;
+        if (!s[len]) return 0;
+        s += len + 1;
+    }
+}
+
+/* a per-model output name: NAME with %m replaced by the model's name */
+static int model_path(const char *name, RelaxationModel m, char *out, size_t cap)
+{
+    const char *at = strstr(name, "%m");
+    const int n = at ? snprintf(out, cap, "%.*s%s%s", (int)(at - name), name, model_name(m), at + 2)
+                     : snprintf(out, cap, "%s", name);
+    if (n < 0 || (size_t)n >= cap) { fprintf(stderr, "dpd tcaf-fit: the file name '%s' is too long\n", name); return -1; }
+    return 0;
+}
 
 static int tcaf_fit_args(int argc, char **argv, TcafFitArgs *a)
 {
     double order_d = 1;
-    *a = (TcafFitArgs){.rho = NAN, .box = NAN, .fit_min = 0.3, .kmax = 2.0, .model = RELAXATION_TWO_MODE};
+    *a = (TcafFitArgs){.rho = NAN, .box = NAN, .fit_min = 0.3, .kmax = 2.0, .models = {RELAXATION_TWO_MODE}, .nmodels = 1};
     for (int k = 0; k < argc; k++) {
         const char *o = argv[k];
         if (o[0] != '-') {
@@ -609,18 +668,25 @@ static int tcaf_fit_args(int argc, char **argv, TcafFitArgs *a)
         else if (!strcmp(o, "--order")) bad = parse_double(o, v, 0, 3, &order_d) || order_d != floor(order_d);
         else if (!strcmp(o, "--table")) a->table = v;
         else if (!strcmp(o, "--curves")) a->curves = v;
-        else if (!strcmp(o, "--model")) {
-            if (!strcmp(v, "exp")) a->model = RELAXATION_EXP;
-            else if (!strcmp(v, "two-mode")) a->model = RELAXATION_TWO_MODE;
-            else if (!strcmp(v, "integral")) a->model = RELAXATION_INTEGRAL;
-            else { fprintf(stderr, "dpd tcaf-fit: --model '%s': expected exp, two-mode or integral\n", v); return 1; }
-        } else { fprintf(stderr, "dpd tcaf-fit: unknown option %s\n", o); return 1; }
+        else if (!strcmp(o, "--summary")) a->summary = v;
+        else if (!strcmp(o, "--model")) { if (parse_models(v, a)) return 1; }
+        else { fprintf(stderr, "dpd tcaf-fit: unknown option %s\n", o); return 1; }
         if (bad) { if (!strcmp(o, "--order")) fprintf(stderr, "dpd tcaf-fit: --order: 0, 1, 2 or 3\n"); return 1; }
     }
     if (!a->file || !isfinite(a->rho) || !isfinite(a->box)) {
-        fprintf(stderr, "usage: dpd tcaf-fit TCAF_TSV --rho R --box L [--model exp|two-mode|integral] [--fit-min F]\n"
-                        "                    [--kmax K] [--order P] [--table FILE] [--curves FILE]\n");
+        fprintf(stderr, "usage: dpd tcaf-fit TCAF_TSV --rho R --box L [--model exp|two-mode|integral[,...]] [--fit-min F]\n"
+                        "                    [--kmax K] [--order P] [--table FILE] [--curves FILE] [--summary FILE]\n");
         return 1;
+    }
+    /* several models: a file per model, named through %m; the summaries cannot share stdout */
+    if (a->nmodels > 1) {
+        if (!a->summary) { fprintf(stderr, "dpd tcaf-fit: --model with %d models needs --summary FILE (with %%m)\n", a->nmodels); return 1; }
+        const char *named[3][2] = {{"--summary", a->summary}, {"--table", a->table}, {"--curves", a->curves}};
+        for (int j = 0; j < 3; j++)
+            if (named[j][1] && !strstr(named[j][1], "%m")) {
+                fprintf(stderr, "dpd tcaf-fit: %s '%s': with several models it must name each model's file with %%m\n", named[j][0], named[j][1]);
+                return 1;
+            }
     }
     a->order = (int)order_d;
     return 0;
@@ -632,23 +698,32 @@ typedef struct {
     ShellViscosity *sv;
     double *k;                /* |k| of each shell */
     double coef[4], coef_se[4], c0_bound, chi2_dof;
+    RelaxationModel model;
 } TcafFit;
 
 static void tcaf_fit_free(TcafFit *f) { free(f->sv); free(f->k); }
 
-/* eta(k) per shell (shell_viscosity) from the table's columns. */
+/* eta(k) per shell from the table's columns, f[j] by the j-th model (shell_viscosities: one
+ * fit for them all). */
 static int fit_shells(const TcafTable *tb, const TcafFitArgs *a, TcafFit *f)
 {
-    const int L = tb->nlag, S = tb->nshell;
-    f->S = S;
-    f->sv = calloc((size_t)S, sizeof *f->sv);
-    f->k = malloc((size_t)S * sizeof *f->k);
+    const int L = tb->nlag, S = tb->nshell, M = a->nmodels;
+    int ok = 1;
+    for (int j = 0; j < M; j++) {
+        f[j].S = S;
+        f[j].model = a->models[j];
+        f[j].sv = calloc((size_t)S, sizeof *f[j].sv);
+        f[j].k = malloc((size_t)S * sizeof *f[j].k);
+        ok = ok && f[j].sv && f[j].k;
+    }
     double *cc = malloc((size_t)L * sizeof *cc), *ss = malloc((size_t)L * sizeof *ss);
-    const int ok = f->sv && f->k && cc && ss;
+    ok = ok && cc && ss;
     for (int q = 0; ok && q < S; q++) {
-        f->k[q] = 2.0 * M_PI * sqrt((double)tb->n2[q]) / a->box;
+        const double k = 2.0 * M_PI * sqrt((double)tb->n2[q]) / a->box;
+        ShellViscosity sv[3];
         for (int l = 0; l < L; l++) { cc[l] = tb->c[(size_t)l * S + q]; ss[l] = tb->se[(size_t)l * S + q]; }
-        shell_viscosity(a->model, tb->t, cc, ss, L, f->k[q] * f->k[q], a->rho, a->fit_min, &f->sv[q]);
+        shell_viscosities(a->models, M, tb->t, cc, ss, L, k * k, a->rho, a->fit_min, sv);
+        for (int j = 0; j < M; j++) { f[j].k[q] = k; f[j].sv[q] = sv[j]; }
     }
     free(cc); free(ss);
     return ok ? 0 : -1;
@@ -690,26 +765,31 @@ static int extrapolate_shells(const TcafFitArgs *a, TcafFit *f)
     return 0;
 }
 
-static void print_fit_summary(const TcafTable *tb, const TcafFit *f)
+/* the quantity/value/stderr rows: to stdout (path NULL) or to path */
+static int write_fit_summary(const TcafTable *tb, const TcafFit *f, const char *path)
 {
-    printf("quantity\tvalue\tstderr\n");
-    printf("eta_k0\t%.10g\t%.4g\n", f->coef[0], f->coef_se[0]);
-    if (f->P > 1) printf("eta_k2_coefficient\t%.10g\t%.4g\n", f->coef[1], f->coef_se[1]);
-    if (f->P > 2) printf("eta_k4_coefficient\t%.10g\t%.4g\n", f->coef[2], f->coef_se[2]);
-    if (f->P > 3) printf("eta_k6_coefficient\t%.10g\t%.4g\n", f->coef[3], f->coef_se[3]);
-    printf("eta_k0_se_bound\t%.4g\t0\n", f->c0_bound);
-    printf("extrapolation_chi2_dof\t%.6g\t0\n", f->chi2_dof);
-    printf("extrapolation_shells\t%d\t0\n", f->nx);
-    for (int q = 0; q < f->S; q++) printf("eta_n2_%d\t%.10g\t%.4g\n", tb->n2[q], f->sv[q].eta, f->sv[q].eta_se);
+    FILE *out = path ? fopen(path, "w") : stdout;
+    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path); return 4; }
+    fprintf(out, "quantity\tvalue\tstderr\n");
+    fprintf(out, "eta_k0\t%.10g\t%.4g\n", f->coef[0], f->coef_se[0]);
+    if (f->P > 1) fprintf(out, "eta_k2_coefficient\t%.10g\t%.4g\n", f->coef[1], f->coef_se[1]);
+    if (f->P > 2) fprintf(out, "eta_k4_coefficient\t%.10g\t%.4g\n", f->coef[2], f->coef_se[2]);
+    if (f->P > 3) fprintf(out, "eta_k6_coefficient\t%.10g\t%.4g\n", f->coef[3], f->coef_se[3]);
+    fprintf(out, "eta_k0_se_bound\t%.4g\t0\n", f->c0_bound);
+    fprintf(out, "extrapolation_chi2_dof\t%.6g\t0\n", f->chi2_dof);
+    fprintf(out, "extrapolation_shells\t%d\t0\n", f->nx);
+    for (int q = 0; q < f->S; q++) fprintf(out, "eta_n2_%d\t%.10g\t%.4g\n", tb->n2[q], f->sv[q].eta, f->sv[q].eta_se);
+    if (path ? fclose(out) : fflush(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path ? path : "(stdout)"); return 4; }
+    return 0;
 }
 
 /* --table: every shell's fit, with the extrapolation's value at its k. */
-static int write_fit_table(const TcafTable *tb, const TcafFitArgs *a, const TcafFit *f)
+static int write_fit_table(const TcafTable *tb, const TcafFitArgs *a, const TcafFit *f, const char *path)
 {
-    FILE *out = fopen(a->table, "w");
-    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->table); return 4; }
-    fprintf(out, "# eta(k) by the %s model (src/transverse_relaxation.h) from %s, rho = %g, box %g", model_name(a->model), a->file, a->rho, a->box);
-    if (a->model == RELAXATION_EXP) fprintf(out, ", fit while <C/C0> >= %g", a->fit_min);
+    FILE *out = fopen(path, "w");
+    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path); return 4; }
+    fprintf(out, "# eta(k) by the %s model (src/transverse_relaxation.h) from %s, rho = %g, box %g", model_name(f->model), a->file, a->rho, a->box);
+    if (f->model == RELAXATION_EXP) fprintf(out, ", fit while <C/C0> >= %g", a->fit_min);
     fprintf(out, ";\n# eta_se: the lags correlated as Bartlett's formula gives for the fitted curve; eta_se_bound: sum_i |d eta / d c_i| se_i,\n"
                  "# the largest error any correlation of the lags allows; modes: 2 slow mode + oscillation, 1 one mode;\n"
                  "# k -> 0: weighted polynomial of degree %d in k^2 over |k| <= %g (%d shells, chi2/dof %.3g):", a->order, a->kmax, f->nx, f->chi2_dof);
@@ -725,16 +805,16 @@ static int write_fit_table(const TcafTable *tb, const TcafFitArgs *a, const Tcaf
                 o->amplitude_se, o->rate, o->rate_se, o->damping, o->frequency, o->sine, o->chi2_dof, o->integral,
                 o->tail / o->integral, f->k[q] <= a->kmax * (1 + 1e-12) ? fit : NAN);
     }
-    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->table); return 4; }
+    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path); return 4; }
     return 0;
 }
 
 /* --curves: C/C0 of each shell's fitted model at the table's lags. */
-static int write_fit_curves(const TcafTable *tb, const TcafFitArgs *a, const TcafFit *f)
+static int write_fit_curves(const TcafTable *tb, const TcafFit *f, const char *path)
 {
-    FILE *out = fopen(a->curves, "w");
-    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->curves); return 4; }
-    fprintf(out, "# C/C0 of the fitted %s model per shell (nan where not fitted)\nt", model_name(a->model));
+    FILE *out = fopen(path, "w");
+    if (!out) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path); return 4; }
+    fprintf(out, "# C/C0 of the fitted %s model per shell (nan where not fitted)\nt", model_name(f->model));
     for (int q = 0; q < f->S; q++) fprintf(out, "\tfit_n2_%d", tb->n2[q]);
     fputc('\n', out);
     for (int l = 0; l < tb->nlag; l++) {
@@ -747,7 +827,7 @@ static int write_fit_curves(const TcafTable *tb, const TcafFitArgs *a, const Tca
         }
         fputc('\n', out);
     }
-    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", a->curves); return 4; }
+    if (fclose(out)) { fprintf(stderr, "dpd tcaf-fit: cannot write '%s'\n", path); return 4; }
     return 0;
 }
 
@@ -758,12 +838,20 @@ int cmd_tcaf_fit(int argc, char **argv)
     TcafTable tb;
     int rc = table_read(a.file, &tb);
     if (rc) return rc;
-    TcafFit f = {0};
-    if (fit_shells(&tb, &a, &f) || extrapolate_shells(&a, &f)) { fprintf(stderr, "dpd tcaf-fit: out of memory\n"); rc = 1; }
-    if (rc == 0) print_fit_summary(&tb, &f);
-    if (rc == 0 && a.table) rc = write_fit_table(&tb, &a, &f);
-    if (rc == 0 && a.curves) rc = write_fit_curves(&tb, &a, &f);
-    tcaf_fit_free(&f);
+    TcafFit f[3] = {{0}};
+    if (fit_shells(&tb, &a, f)) rc = 1;
+    for (int j = 0; rc == 0 && j < a.nmodels; j++)
+        if (extrapolate_shells(&a, &f[j])) rc = 1;
+    if (rc) fprintf(stderr, "dpd tcaf-fit: out of memory\n");
+    /* each model's files: the names with %m replaced (tcaf_fit_args: required with several) */
+    char path[4096];
+    for (int j = 0; rc == 0 && j < a.nmodels; j++) {
+        if (rc == 0 && a.summary) rc = model_path(a.summary, f[j].model, path, sizeof path) ? 1 : write_fit_summary(&tb, &f[j], path);
+        if (rc == 0 && !a.summary) rc = write_fit_summary(&tb, &f[j], NULL);
+        if (rc == 0 && a.table) rc = model_path(a.table, f[j].model, path, sizeof path) ? 1 : write_fit_table(&tb, &a, &f[j], path);
+        if (rc == 0 && a.curves) rc = model_path(a.curves, f[j].model, path, sizeof path) ? 1 : write_fit_curves(&tb, &f[j], path);
+    }
+    for (int j = 0; j < a.nmodels; j++) tcaf_fit_free(&f[j]);
     table_free(&tb);
     return rc;
 }

@@ -59,10 +59,18 @@ typedef struct {
  * Returns 0, or -1 (fields nan) when the curve does not determine the model. */
 int shell_viscosity(RelaxationModel model, const double *t, const double *c, const double *se, int n,
                     double k2, double rho, double fit_min, ShellViscosity *out);
+/* The same for several models at once, out[j] by models[j]: the two-mode fit behind
+ * the two-mode and the integral model is made once (the same numbers as one call
+ * per model). Returns -1 when any model fails (its fields nan). */
+int shell_viscosities(const RelaxationModel *models, int nmodels, const double *t, const double *c,
+                      const double *se, int n, double k2, double rho, double fit_min, ShellViscosity *out);
 
-/* `dpd tcaf-fit TCAF_TSV --rho R --box L [--model exp|two-mode|integral] [--fit-min F]
- * [--kmax K] [--order P] [--table FILE] [--curves FILE]`: eta(k) of every shell of
- * a run's tcaf.tsv and the k -> 0 limit, as quantity/value/stderr rows. */
+/* `dpd tcaf-fit TCAF_TSV --rho R --box L [--model MODEL[,MODEL...]] [--fit-min F]
+ * [--kmax K] [--order P] [--table FILE] [--curves FILE] [--summary FILE]`: eta(k) of
+ * every shell of a run's tcaf.tsv and the k -> 0 limit, as quantity/value/stderr rows
+ * (on stdout, or in --summary). Several models (exp, two-mode, integral) share one fit
+ * (shell_viscosities); then --summary is required, and it, --table and --curves name
+ * one file per model through %m, replaced by the model's name. */
 int cmd_tcaf_fit(int argc, char **argv);
 
 #endif

@@ -70,12 +70,15 @@ mkdir -p "$OUT/runs"
 # its analysis unless the run.sh declares analysis_runs_simulations=1.
 dpd_run() {
     local name=$1 scene=$2; shift 2
-    local dir=$OUT/runs/$name args sha st
+    local dir=$OUT/runs/$name args sha st rec recsha
     _declared_here dpd_run "$name"
-    args=$(printf '%s\n' "$scene" "$@" | _args_norm)
-    sha=missing; [ -f "$scene" ] && sha=$(sha256sum < "$scene" | cut -c1-64)
-    if [ "$(_args_recorded "$dir")" = "$args" ] &&
-       [ "$(cat "$dir/.scene_sha256" 2>/dev/null || echo "$sha")" = "$sha" ]; then
+    # (in the shell, not in pipelines: the plan and verify passes make this call for every
+    # simulation of every result, and each process costs milliseconds)
+    printf -v args '%s\n' "$scene" "$@"; _args_norm_text "$args"; args=$_args_text
+    sha=missing; if [ -f "$scene" ]; then sha=$(sha256sum < "$scene"); sha=${sha%% *}; fi
+    _args_recorded_text "$dir"; rec=$_args_text
+    recsha=$sha; [ -f "$dir/.scene_sha256" ] && { IFS= read -r recsha < "$dir/.scene_sha256" || true; }
+    if [ "$rec" = "$args" ] && [ "$recsha" = "$sha" ]; then
         if [ -s "$dir/summary.tsv" ] && [ ! -e "$dir/INCOMPLETE" ]; then
             [ "${DPD_PLAN:-0}" = 1 ] || echo "dpd_run: $name already complete, kept" >&2
             return 0
@@ -112,6 +115,12 @@ _final_status() {
 }
 # the arguments a kept run was made with: .args, or for runs made before .args
 # was written, the command line the simulator recorded in provenance.tsv
+# (_args_recorded_text DIR: the same into _args_text, .args read in the shell)
+_args_recorded_text() {
+    _args_text=
+    if [ -f "$1/.args" ]; then _args_norm_text "$(< "$1/.args")"
+    elif [ -f "$1/provenance.tsv" ]; then _args_text=$(_args_recorded "$1"); fi
+}
 _args_recorded() {
     if [ -f "$1/.args" ]; then _args_norm < "$1/.args"
     elif [ -f "$1/provenance.tsv" ]; then
@@ -124,6 +133,29 @@ _args_recorded() {
 }
 # run arguments with any absolute path into experiments/ made relative to the checkout
 _args_norm() { sed -E 's#^/([^/]+/)*experiments/#experiments/#; s#=/([^/]+/)*experiments/#=experiments/#g'; }
+# the same in the shell: _args_norm_text TEXT sets _args_text to TEXT's lines normalised as _args_norm
+# does them, without the trailing newlines (as $(... | _args_norm) gives it); the regular expressions
+# are _args_norm's, matched by the same POSIX rules (leftmost, then longest)
+_ARGS_LEAD='^/([^/]+/)*experiments/' _ARGS_SET='=/([^/]+/)*experiments/'
+_args_norm_text() {
+    local rest=$1 line out m pre
+    _args_text=
+    while [ -n "$rest" ]; do
+        line=${rest%%$'\n'*}
+        if [[ $rest == *$'\n'* ]]; then rest=${rest#*$'\n'}; else rest=; fi
+        if [[ $line == *experiments/* ]]; then
+            [[ $line =~ $_ARGS_LEAD ]] && line=experiments/${line#"${BASH_REMATCH[0]}"}
+            out=
+            while [[ $line =~ $_ARGS_SET ]]; do
+                m=${BASH_REMATCH[0]}; pre=${line%%"$m"*}
+                out+=$pre=experiments/; line=${line#"$pre$m"}
+            done
+            line=$out$line
+        fi
+        _args_text+=$line$'\n'
+    done
+    while [[ $_args_text == *$'\n' ]]; do _args_text=${_args_text%$'\n'}; done
+}
 _verify_refuse() {
     [ "${DPD_VERIFY:-0}" = 1 ] || return 0
     echo "verify: run '$1' would be (re)run: $2" >&2
@@ -274,28 +306,41 @@ h5_series() {
     tr -d ' ,' < "$f" | grep .; rm -f "$f"
 }
 
-# tcaf_fit NAME MODEL RHO BOX [ARG...]: `dpd tcaf-fit --model MODEL` of run NAME's stored C(k,t), the
-# per-shell eta(k) to runs/NAME/tcaf_fit_MODEL.tsv and the fit's quantities to runs/NAME/tcaf_fit_MODEL.out.
+# tcaf_fit NAME MODEL[,MODEL...] RHO BOX [ARG...]: `dpd tcaf-fit --model MODEL` of run NAME's stored
+# C(k,t), the per-shell eta(k) to runs/NAME/tcaf_fit_MODEL.tsv and the fit's quantities to
+# runs/NAME/tcaf_fit_MODEL.out. Several models (comma separated) share one fit: two-mode and integral
+# read the same two-mode fit, which costs the call its time (the same files as one call per model).
 # It runs in runs/NAME, so that the table's header names its input as tcaf.tsv beside it, not the
 # scratch directory the analysis ran in (a reanalysis would otherwise rewrite every header).
 tcaf_fit() {
     local run=$1 model=$2 rho=$3 box=$4 dpd; shift 4
     dpd=$(realpath "$DPD") || return 1
     (cd "$OUT/runs/$run" && "$dpd" tcaf-fit tcaf.tsv --rho "$rho" --box "$box" --model "$model" \
-        --table "tcaf_fit_$model.tsv" "$@" > "tcaf_fit_$model.out")
+        --table "tcaf_fit_%m.tsv" --summary "tcaf_fit_%m.out" "$@")
 }
 
-# tcaf_k0 NAME MODEL BOX -> "value<TAB>stderr": eta(k -> 0) of run NAME's stored C(k,t) by `dpd tcaf-fit
-# --model MODEL` (README "The simulator"), rho the run's tcaf_mass_density, BOX its side; the per-shell
-# eta(k) goes to runs/NAME/tcaf_fit_MODEL.tsv. The suspension experiments of Mai-Duy et al. judge the
-# spring-constrained eta(k -> 0) by MODEL = integral: the time integral of C(k,t)/C(k,0), the
-# zero-frequency viscosity of generalised hydrodynamics, free of the fit window that makes eq. 28's
-# amplitude-1 exponential (the run's own tcaf_eta_k0, the paper's literal method) read the first
-# downswing of an oscillating curve at large phi; two-mode (its slow mode) is their second estimator.
+# tcaf_k0 NAME MODEL[,MODEL...] BOX -> "value<TAB>stderr" of the first MODEL: eta(k -> 0) of run NAME's
+# stored C(k,t) by `dpd tcaf-fit --model MODEL` (README "The simulator"), rho the run's
+# tcaf_mass_density, BOX its side; the per-shell eta(k) goes to runs/NAME/tcaf_fit_MODEL.tsv, and a
+# further MODEL's (one fit shared) is read after by tcaf_k0_of. The suspension experiments of Mai-Duy
+# et al. judge the spring-constrained eta(k -> 0) by MODEL = integral: the time integral of
+# C(k,t)/C(k,0), the zero-frequency viscosity of generalised hydrodynamics, free of the fit window
+# that makes eq. 28's amplitude-1 exponential (the run's own tcaf_eta_k0, the paper's literal method)
+# read the first downswing of an oscillating curve at large phi; two-mode (its slow mode) is their
+# second estimator.
 tcaf_k0() {
     local rho; rho=$(get "$1" tcaf_mass_density | cut -f1) || return 1
     tcaf_fit "$1" "$2" "$rho" "$3" || { echo "exp.sh: dpd tcaf-fit --model $2 failed on run $1" >&2; return 1; }
-    awk -F'\t' '$1 == "eta_k0" { print $2 "\t" $3; f = 1; exit } END { exit !f }' "$OUT/runs/$1/tcaf_fit_$2.out"
+    tcaf_k0_of "$1" "${2%%,*}"
+}
+# tcaf_k0_of NAME MODEL -> "value<TAB>stderr": eta(k -> 0) of the fit tcaf_k0 or tcaf_fit made
+tcaf_k0_of() {
+    local q v se
+    [ -f "$OUT/runs/$1/tcaf_fit_$2.out" ] || { echo "exp.sh: no tcaf fit by $2 of run $1" >&2; return 1; }
+    while IFS=$'\t' read -r q v se; do
+        [ "$q" = eta_k0 ] && { printf '%s\t%s\n' "$v" "$se"; return 0; }
+    done < "$OUT/runs/$1/tcaf_fit_$2.out"
+    return 1
 }
 
 # emit QUANTITY VALUE STDERR, or emit QUANTITY "VALUE<TAB>STDERR" (as get and tcaf_k0 give it): a row

@@ -26,8 +26,8 @@ L=15; [ "$TIER" = quick ] && L=8          # the box's side (the scenes' 15, the 
 emit_from free tcaf_eta_k0 eta_k0_free
 for r in constrained constrained_bodies; do
     w=; [ $r = constrained_bodies ] && w=_with_bodies
-    emit eta_k0_constrained$w "$(tcaf_k0 $r integral "$L")"
-    emit eta_k0_constrained_two_mode$w "$(tcaf_k0 $r two-mode "$L")"
+    emit eta_k0_constrained$w "$(tcaf_k0 $r integral,two-mode "$L")"
+    emit eta_k0_constrained_two_mode$w "$(tcaf_k0_of $r two-mode)"
     emit_from $r tcaf_eta_k0 eta_k0_constrained_exp$w
     emit_diff eta_k0_free_minus_constrained$w free tcaf_eta_k0 . eta_k0_constrained$w
     emit_diff eta_k0_free_minus_constrained_two_mode$w free tcaf_eta_k0 . eta_k0_constrained_two_mode$w

@@ -107,8 +107,8 @@ for pair in $PAIRS; do
         # eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the
         # two-mode slow mode (second estimator) and eq. 28's amplitude-1 fit (the paper's literal, *_exp_*)
         emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
-        emit eta_eff_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
-        emit eta_eff_two_mode_$tag "$(tcaf_k0 constrained_$tag two-mode "$L")"
+        emit eta_eff_$tag "$(tcaf_k0 constrained_$tag integral,two-mode "$L")"
+        emit eta_eff_two_mode_$tag "$(tcaf_k0_of constrained_$tag two-mode)"
         emit_from constrained_$tag tcaf_eta_k0 eta_eff_exp_$tag
         emit_ratio eta_r_tcaf_$tag susp_$tag viscosity . eta_eff_$tag
         emit_ratio eta_r_tcaf_two_mode_$tag susp_$tag viscosity . eta_eff_two_mode_$tag

@@ -42,8 +42,8 @@ for pair in $PAIRS; do
     np=$(get free_$tag particles | cut -f1)
     "$ANALYSE" phi-row "$tag" "$count" "$np" >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
-    emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral "$L")"
-    emit eta_k0_constrained_two_mode_$tag "$(tcaf_k0 constrained_$tag two-mode "$L")"
+    emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral,two-mode "$L")"
+    emit eta_k0_constrained_two_mode_$tag "$(tcaf_k0_of constrained_$tag two-mode)"
     emit_from constrained_$tag tcaf_eta_k0 eta_k0_constrained_exp_$tag
     emit_diff eta_k0_free_minus_constrained_$tag free_$tag tcaf_eta_k0 . eta_k0_constrained_$tag
     emit_diff eta_k0_free_minus_constrained_exp_$tag free_$tag tcaf_eta_k0 constrained_$tag tcaf_eta_k0

@@ -114,7 +114,7 @@ for A in $AS; do
         rho_tot=$("$ANALYSE" rho-total "$rho" "$(get $cr colloids | cut -f1)" "$L")
         # the density factors of readings (d) and (c)'s total density: 4 / rho and rho_tot / rho
         f_s=$("$ANALYSE" quotient 4 "$rho") f_t=$("$ANALYSE" quotient "$rho_tot" "$rho")
-        for m in two-mode integral; do tcaf_fit $fr $m "$rho" "$L"; tcaf_fit $cr $m "$rho" "$L"; done
+        tcaf_fit $fr two-mode,integral "$rho" "$L"; tcaf_fit $cr two-mode,integral "$rho" "$L"
         # the estimators' eta(k -> 0) (exp: the run's own fit, errors from blocks) and the suspension's
         for sys in free constrained; do
             r=${sys}_a${A}_$tag
@@ -153,10 +153,9 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 bfc=$OUT/runs/fig02_free_a${A}_$tag/curve.tsv
                 curve "$OUT/runs/fig02_free_a${A}_$tag/tcaf_eta.tsv" "$OUT/runs/freehk_a${A}_$tag/tcaf_eta.tsv" > "$bfc"
-                tcaf_fit fig02_constrained_a${A}_$tag integral "$(get fig02_constrained_a${A}_$tag tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit fig02_constrained_a${A}_$tag integral,two-mode "$(get fig02_constrained_a${A}_$tag tcaf_mass_density | cut -f1)" "$L"
             fi
-            tcaf_fit $br integral "$(get $br tcaf_mass_density | cut -f1)" "$L"
-            tcaf_fit $br two-mode "$(get $br tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $br integral,two-mode "$(get $br tcaf_mass_density | cut -f1)" "$L"
             put reading_b_eta_eff_a${A}_$tag "$(fq $br integral eta_k0)"
             put eta_k0_bodies_two_mode_a${A}_$tag "$(fq $br two-mode eta_k0)"
             # the same trajectory's particle current (quick: this pair's; paper: fig02's)
@@ -165,8 +164,7 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 # fig02's three runs by each estimator, and its free minus constrained by them
                 f2=fig02_free_a${A}_$tag c2r=fig02_constrained_a${A}_$tag
-                tcaf_fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"
-                tcaf_fit $c2r two-mode "$(get $c2r tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"   # (c2r's fits: above)
                 put fig02_eta_k0_free_exp_a${A}_$tag "$(get $f2 tcaf_eta_k0)"
                 put fig02_eta_k0_free_integral_a${A}_$tag "$(fq $f2 integral eta_k0)"
                 put fig02_eta_k0_constrained_exp_a${A}_$tag "$(get $c2r tcaf_eta_k0)"
