@@ -1042,6 +1042,9 @@ if [ ! -s "$log" ]; then ok "verify-result: the direct run was refused"; else ba
 cp "$root/run.sh.keep" "$e/run.sh"
 T "verify-results: all fresh, exit 0" 0 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
 in_file "verify-results: table row" "$root/fresh.tsv" '^t/e	quick	fresh'
+# a verification that stops without a verdict (here: no simulator) is not a pass
+T "verify-results: a verification without a verdict fails" 1 env -u DPD_ROOT DPD_BIN="$rx/no-such-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
+in_file "verify-results: it counts as stale, with the reason" "$root/fresh.tsv" '^t/e	quick	stale	tools/verify-result stopped without a verdict (exit 2)'
 echo 'x = 4;' > "$e/s.cfg"
 T "verify-results: a stale result fails" 1 env -u DPD_ROOT DPD_BIN="$rx/fake-dpd" "$rx/tools/verify-results" -o "$root/fresh.tsv"
 has "verify-results: names it" 'STALE t/e \[quick\]'

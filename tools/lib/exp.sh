@@ -290,10 +290,25 @@ upstream_if() { upstream "$1" optional; }
 
 # get NAME QUANTITY -> "value<TAB>stderr" from a run's summary (NAME "." : the
 # experiment's own summary so far, e.g. a mean emit_mean wrote).
-get() {
-    local f=$OUT/runs/$1/summary.tsv; [ "$1" = . ] && f=$OUT/summary.tsv
-    awk -F'\t' -v q="$2" '$1==q{print $2 "\t" $3; f=1; exit} END{exit !f}' "$f" \
-        || { echo "exp.sh: quantity '$2' missing in run '$1'" >&2; return 1; }
+get() { _get "$1" "$2" && printf '%s\n' "$_got"; }
+# _get NAME QUANTITY: the same into _got ("value<TAB>stderr", empty when missing), _got_v and
+# _got_se, read in the shell (no process: the helpers below call it for every quantity they copy).
+# The first row whose first field is QUANTITY; its second and third tab-separated fields.
+_get() {
+    local f=$OUT/runs/$1/summary.tsv line rest; [ "$1" = . ] && f=$OUT/summary.tsv
+    _got= _got_v= _got_se=
+    if [ -f "$f" ]; then
+        while IFS= read -r line || [ -n "$line" ]; do
+            [[ $line == "$2" || $line == "$2"$'\t'* ]] || continue
+            rest=; [[ $line == *$'\t'* ]] && rest=${line#*$'\t'}
+            _got_v=${rest%%$'\t'*}
+            [[ $rest == *$'\t'* ]] && { rest=${rest#*$'\t'}; _got_se=${rest%%$'\t'*}; }
+            _got=$_got_v$'\t'$_got_se
+            return 0
+        done < "$f"
+    fi
+    echo "exp.sh: quantity '$2' missing in run '$1'" >&2
+    return 1
 }
 
 # h5_series NAME SERIES: the samples of /series/SERIES in run NAME's run.h5,
@@ -329,7 +344,7 @@ tcaf_fit() {
 # read the first downswing of an oscillating curve at large phi; two-mode (its slow mode) is their
 # second estimator.
 tcaf_k0() {
-    local rho; rho=$(get "$1" tcaf_mass_density | cut -f1) || return 1
+    local rho; _get "$1" tcaf_mass_density || return 1; rho=$_got_v
     tcaf_fit "$1" "$2" "$rho" "$3" || { echo "exp.sh: dpd tcaf-fit --model $2 failed on run $1" >&2; return 1; }
     tcaf_k0_of "$1" "${2%%,*}"
 }
@@ -352,22 +367,22 @@ emit() {
 
 # emit_from NAME QUANTITY [AS]: copy a run quantity into the summary.
 emit_from() {
-    local v; v=$(get "$1" "$2") || return 1
-    printf '%s\t%s\n' "${3:-$2}" "$v" >> "$OUT/summary.tsv"
+    _get "$1" "$2" || return 1
+    printf '%s\t%s\n' "${3:-$2}" "$_got" >> "$OUT/summary.tsv"
 }
 
 
 # emit_diff QUANTITY NAME1 Q1 NAME2 Q2: value1 - value2 with the errors in quadrature.
 emit_diff() {
     local a b
-    a=$(get "$2" "$3") b=$(get "$4" "$5")
+    _get "$2" "$3"; a=$_got; _get "$4" "$5"; b=$_got
     emit "$1" "$("$ANALYSE" diff "$a" "$b")"
 }
 
 # emit_ratio QUANTITY NAME1 Q1 NAME2 Q2: value1 / value2 with first-order error propagation.
 emit_ratio() {
     local a b
-    a=$(get "$2" "$3") b=$(get "$4" "$5")
+    _get "$2" "$3"; a=$_got; _get "$4" "$5"; b=$_got
     emit "$1" "$("$ANALYSE" ratio "$a" "$b")"
 }
 
@@ -376,7 +391,7 @@ emit_ratio() {
 emit_mean() {
     local as=$1 q=$2; shift 2
     local vals="" n
-    for n in "$@"; do vals="$vals $(get "$n" "$q" | cut -f1)" || return 1; done
+    for n in "$@"; do _get "$n" "$q"; vals="$vals $_got_v"; done
     # shellcheck disable=SC2086
     "$ANALYSE" mean-se-row "$as" $vals >> "$OUT/summary.tsv"
 }
@@ -440,8 +455,9 @@ max_rel_dev() { "$ANALYSE" max-rel-dev "$1" "${2%%:*}" "${2#*:}"; }
 couette_viscosity() {
     local name=$1 lx=$2 bulk=$3 g gse tau tause
     read -r g gse < <(block_slope "$name" "$bulk" | tr '\t' ' ')
-    read -r tau tause < <("$ANALYSE" wall-stress "$lx" "$(get "$name" force_on_bottom_inner_x)" "$(get "$name" force_on_bottom_outer_x)" \
-                                              "$(get "$name" force_on_top_inner_x)" "$(get "$name" force_on_top_outer_x)")
+    local q f=()
+    for q in force_on_bottom_inner_x force_on_bottom_outer_x force_on_top_inner_x force_on_top_outer_x; do _get "$name" $q; f+=("$_got"); done
+    read -r tau tause < <("$ANALYSE" wall-stress "$lx" "${f[@]}")
     printf '%s %s %s %s %s\n' "$g" "$gse" "$tau" "$tause" "$("$ANALYSE" ratio "$tau	$tause" "$g	$gse" | tr '\t' ' ')"
 }
 
