@@ -46,12 +46,14 @@ done
     || bad "--kmax" "$(cat "$tmp/out")"
 # several models from one fit: each model's files (--summary, --table, --curves through %m) are its
 # own call's, byte for byte
+# (on every tenth lag of the table: the same comparison at a tenth of the cost, which matters under ASan)
 mkdir -p "$tmp/one" "$tmp/all"
+awk '/^[#t]/ || (++n - 1) % 10 == 0' "$tmp/tcaf.tsv" > "$tmp/tenth.tsv"
 for model in exp two-mode integral; do
-    "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model $model --table "$tmp/one/t_$model.tsv" \
+    "$DPD" tcaf-fit "$tmp/tenth.tsv" --rho 4 --box 10 --model $model --table "$tmp/one/t_$model.tsv" \
         --curves "$tmp/one/c_$model.tsv" > "$tmp/one/s_$model.out"
 done
-if "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral,exp,two-mode --table "$tmp/all/t_%m.tsv" \
+if "$DPD" tcaf-fit "$tmp/tenth.tsv" --rho 4 --box 10 --model integral,exp,two-mode --table "$tmp/all/t_%m.tsv" \
         --curves "$tmp/all/c_%m.tsv" --summary "$tmp/all/s_%m.out" > "$tmp/out" 2> "$tmp/err"; then
     [ ! -s "$tmp/out" ] && diff -r "$tmp/one" "$tmp/all" > "$tmp/diff" && [ "$(ls "$tmp/all" | wc -l)" = 9 ] \
         && ok "--model integral,exp,two-mode: each model's summary, table and curves as its own call's" \
@@ -59,7 +61,7 @@ if "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral,exp,two-mod
 else
     bad "--model with three models" "$(cat "$tmp/err")"
 fi
-"$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model integral --summary "$tmp/s.out" > "$tmp/out" 2>&1
+"$DPD" tcaf-fit "$tmp/tenth.tsv" --rho 4 --box 10 --model integral --summary "$tmp/s.out" > "$tmp/out" 2>&1
 [ ! -s "$tmp/out" ] && cmp -s "$tmp/s.out" "$tmp/one/s_integral.out" && ok "--summary with one model: the rows there, none on stdout" \
     || bad "--summary with one model" "$(cat "$tmp/out")"
 refuse "several models without --summary" "needs --summary" "$DPD" tcaf-fit "$tmp/tcaf.tsv" --rho 4 --box 10 --model two-mode,integral
