@@ -17,9 +17,10 @@ die() { echo "$(basename "$0"): $*" >&2; exit 2; }
 # and arguments, one per line in DIR/.args, relative to the directory in DIR/.cwd): the particles,
 # equilibration and steps rows on stdout, and its status (tools/plan, tools/cost, tools/in-flight)
 recorded_size() {
-    local a
+    local a cwd
     mapfile -t a < "$1/.args"
-    (cd "$(cat "$1/.cwd")" && "$2" run "${a[0]}" --dry-run "${a[@]:1}")
+    IFS= read -r cwd < "$1/.cwd"
+    (cd "$cwd" && exec "$2" run "${a[0]}" --dry-run "${a[@]:1}")
 }
 
 # normalise an experiment id: strip experiments/ or results/ prefix, trailing /
