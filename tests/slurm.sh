@@ -3,8 +3,7 @@
 # Starts a one-node cluster (tools/slurm-local: munged, slurmctld, slurmd; 2 CPUs) in a scratch
 # directory, runs the quick tier of two experiments (12 simulations between them) through it
 # (DPD_ENGINE=slurm: a Slurm job per simulation, the analyses as Slurm jobs too) and through the
-# local pool (at the same time: the local runs fill the cores that the cluster leaves idle between
-# its jobs), each in a scratch copy of the package, and checks:
+# local pool, each in a scratch copy of the package, and checks:
 #  - both complete, and every summary.tsv (but its measured cpu_seconds row), every table of the
 #    results and every simulation's summary (but its measured times) are byte-identical: the
 #    simulator is deterministic, so any difference is a bug;
@@ -24,12 +23,7 @@ dpd=${DPD:-$repo/bin/dpd}
 [ -x "$dpd" ] || { echo "slurm.sh: no simulator $dpd (make bin/dpd)" >&2; exit 1; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-slurm.XXXXXX") && chmod 755 "$tmp"   # munged wants its socket's path open to all
 cluster=$tmp/cluster
-lpid=
-cleanup() {
-    # the local pool's runs, if the test stops before they end (run-experiment stops its simulations)
-    [ -z "$lpid" ] || { pkill -TERM -P "$lpid"; kill "$lpid"; wait "$lpid"; } 2>/dev/null
-    "$repo/tools/slurm-local" stop "$cluster" >/dev/null 2>&1; [ "${KEEP:-0}" = 1 ] && echo "kept $tmp" || rm -rf "$tmp"
-}
+cleanup() { "$repo/tools/slurm-local" stop "$cluster" >/dev/null 2>&1; [ "${KEEP:-0}" = 1 ] && echo "kept $tmp" || rm -rf "$tmp"; }
 trap cleanup EXIT
 pass=0 fail=0
 ok()  { pass=$((pass + 1)); echo "ok   - $1"; }
@@ -42,14 +36,12 @@ for t in local slurm; do mkdir -p "$tmp/$t" && cp -a "$repo/tools" "$repo/experi
 export DPD_BIN=$dpd DPD_KEEP_H5=1 DPD_CHECKPOINT_EVERY=500 DPD_CHECKPOINT_WALL=0
 unset MAKEFLAGS MFLAGS
 
-# the local pool's runs (the reference) beside the Slurm ones: the cluster's jobs leave the cores
-# idle between them (submission, polling, the requeue's delay), which these fill; the results do
-# not depend on what runs beside them
-echo "== local pool (in the background, beside the Slurm runs)"
-( for e in "${EXPS[@]}"; do
-      DPD_JOBS=2 "$tmp/local/tools/run-experiment" "$e" quick >> "$tmp/local.log" 2>&1 || { echo "$e" > "$tmp/local.failed"; exit 1; }
-  done ) &
-lpid=$!
+echo "== local pool"
+for e in "${EXPS[@]}"; do
+    DPD_JOBS=2 "$tmp/local/tools/run-experiment" "$e" quick > "$tmp/local.log" 2>&1 ||
+        { bad "local pool: $e failed"; tail -20 "$tmp/local.log"; exit 1; }
+done
+ok "local pool: ${EXPS[*]} complete ($(( $(date +%s) - t0 )) s)"
 
 echo "== Slurm"
 t1=$(date +%s)
@@ -131,9 +123,6 @@ else
 fi
 
 echo "== Slurm against the local pool"
-lrc=0; wait "$lpid" || lrc=$?; lpid=
-if [ "$lrc" = 0 ]; then ok "local pool: ${EXPS[*]} complete ($(( $(date +%s) - t0 )) s after the start)"
-else bad "local pool: $(cat "$tmp/local.failed" 2>/dev/null) failed"; tail -20 "$tmp/local.log"; exit 1; fi
 measured=$'^(cpu_seconds|wall_seconds|.*particle_steps_per_second.*|peak_memory_bytes_per_particle|time_[a-z_]*seconds)\t'
 for e in "${EXPS[@]}"; do
     a=$tmp/local/results/$e/quick b=$tmp/slurm/results/$e/quick
