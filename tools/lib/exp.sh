@@ -113,29 +113,26 @@ _final_status() {
     [ "$(cat "$1/.failures" 2>/dev/null || echo 0)" -ge "${DPD_MAX_FAILURES:-3}" ] && echo "$st"
     return 0
 }
-# the arguments a kept run was made with: .args, or for runs made before .args
-# was written, the command line the simulator recorded in provenance.tsv
-# (_args_recorded_text DIR: the same into _args_text, .args read in the shell)
+# _args_recorded_text DIR: the arguments a kept run was made with, normalised (_args_norm_text), into
+# _args_text: .args, or for runs made before .args was written, the command line the simulator
+# recorded in provenance.tsv
 _args_recorded_text() {
     _args_text=
     if [ -f "$1/.args" ]; then _args_norm_text "$(< "$1/.args")"
-    elif [ -f "$1/provenance.tsv" ]; then _args_text=$(_args_recorded "$1"); fi
-}
-_args_recorded() {
-    if [ -f "$1/.args" ]; then _args_norm < "$1/.args"
     elif [ -f "$1/provenance.tsv" ]; then
-        awk -F'\t' '$1 == "command" { n = split($2, w, " "); print w[3]
+        _args_norm_text "$(awk -F'\t' '$1 == "command" { n = split($2, w, " "); print w[3]
             for (i = 4; i <= n; i++) {
                 if (w[i] == "--out" || w[i] == "--checkpoint-every" || w[i] == "--checkpoint-wall") { i++; continue }
                 if (w[i] == "--quiet" || w[i] == "--resume") continue
-                print w[i] } }' "$1/provenance.tsv" | _args_norm
+                print w[i] } }' "$1/provenance.tsv")"
     fi
 }
-# run arguments with any absolute path into experiments/ made relative to the checkout
-_args_norm() { sed -E 's#^/([^/]+/)*experiments/#experiments/#; s#=/([^/]+/)*experiments/#=experiments/#g'; }
-# the same in the shell: _args_norm_text TEXT sets _args_text to TEXT's lines normalised as _args_norm
-# does them, without the trailing newlines (as $(... | _args_norm) gives it); the regular expressions
-# are _args_norm's, matched by the same POSIX rules (leftmost, then longest)
+# _args_norm_text TEXT: TEXT's lines (run arguments) with any absolute path into experiments/ made
+# relative to the checkout, into _args_text without the trailing newlines; in the shell, not sed
+# (it runs for every simulation of every pass). It gives what
+#   sed -E 's#^/([^/]+/)*experiments/#experiments/#; s#=/([^/]+/)*experiments/#=experiments/#g'
+# gave (the same regular expressions, matched by the same POSIX rules: leftmost, then longest;
+# compared on every committed argument list, 2026-12-07)
 _ARGS_LEAD='^/([^/]+/)*experiments/' _ARGS_SET='=/([^/]+/)*experiments/'
 _args_norm_text() {
     local rest=$1 line out m pre
@@ -328,8 +325,9 @@ h5_series() {
 # It runs in runs/NAME, so that the table's header names its input as tcaf.tsv beside it, not the
 # scratch directory the analysis ran in (a reanalysis would otherwise rewrite every header).
 tcaf_fit() {
-    local run=$1 model=$2 rho=$3 box=$4 dpd; shift 4
-    dpd=$(realpath "$DPD") || return 1
+    local run=$1 model=$2 rho=$3 box=$4 dpd=$DPD; shift 4
+    # (it runs in the run's directory: a relative DPD made absolute; one process fewer when it is)
+    case $dpd in /*) ;; *) dpd=$(realpath "$DPD") || return 1 ;; esac
     (cd "$OUT/runs/$run" && "$dpd" tcaf-fit tcaf.tsv --rho "$rho" --box "$box" --model "$model" \
         --table "tcaf_fit_%m.tsv" --summary "tcaf_fit_%m.out" "$@")
 }
@@ -350,12 +348,8 @@ tcaf_k0() {
 }
 # tcaf_k0_of NAME MODEL -> "value<TAB>stderr": eta(k -> 0) of the fit tcaf_k0 or tcaf_fit made
 tcaf_k0_of() {
-    local q v se
     [ -f "$OUT/runs/$1/tcaf_fit_$2.out" ] || { echo "exp.sh: no tcaf fit by $2 of run $1" >&2; return 1; }
-    while IFS=$'\t' read -r q v se; do
-        [ "$q" = eta_k0 ] && { printf '%s\t%s\n' "$v" "$se"; return 0; }
-    done < "$OUT/runs/$1/tcaf_fit_$2.out"
-    return 1
+    tsv_lookup "$OUT/runs/$1/tcaf_fit_$2.out" eta_k0 exp.sh
 }
 
 # emit QUANTITY VALUE STDERR, or emit QUANTITY "VALUE<TAB>STDERR" (as get and tcaf_k0 give it): a row
