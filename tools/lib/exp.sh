@@ -203,8 +203,10 @@ experiment() {
         for _exp_k in $DPD_KEEP_RUNS; do keep_run "$_exp_k" || { echo "exp.sh: keep_run $_exp_k failed" >&2; exit 1; }; done
         return 0
     fi
-    # the analysis passes (a plan pass makes a few calls, which a server's start would about match)
-    [ "${DPD_PLAN:-0}" = 1 ] || analyse_serve
+    # every pass, plan passes included: run-experiment's analysis pass is one (DPD_PLAN=1 without
+    # DPD_ROUND), and a round's simulations may derive their arguments by "$ANALYSE" calls (the
+    # server starts at the first call: a pass that makes none pays nothing)
+    analyse_serve
     if [ "${DPD_PLAN:-0}" = 1 ]; then
         printf 'rounds\t%s\nanalysis_runs_simulations\t%s\n' "$_exp_n" "${analysis_runs_simulations:-0}" > "$OUT/.declared"
     fi
