@@ -487,6 +487,47 @@ static void pcg_2level_and_scheme2_fixed_point(void **state)
     }
 }
 
+/* PCG under the residual rule computes the change |alpha p| / |x| only on its last iteration
+ * (the stopping rule does not need it): the same iterates and the same reported change as
+ * under the change rule, which computes it on every iteration, stopped after as many
+ * iterations (a change tolerance of 0 is never met). After a breakdown (A not positive
+ * definite on p: here -A) the residual rule reports the change as NaN, not computed. */
+static void pcg_reports_change(void **state)
+{
+    (void)state;
+    for (int dim = 2; dim <= 3; dim++) {
+        Case c;
+        make_case(&c, dim, dim == 2 ? L2 : L3, dim == 2 ? 4.0 : 3.0, 0.5, 0.3, 0.0, 70 + (uint64_t)dim);
+        const int n3 = 3 * c.od.nm;
+        double *v1 = warm_start(&c), *v2 = warm_start(&c);
+        OdResult r1 = od_solve_vec(&c.od, v1, OD_PCG, OD_STOP_RESIDUAL, 1e-8, 200000);
+        OdResult r2 = od_solve_vec(&c.od, v2, OD_PCG, OD_STOP_CHANGE, 0.0, r1.iterations);
+        CHECK_TRUE(r1.converged && !r2.converged, "dim %d: converged %d / %d", dim, r1.converged, r2.converged);
+        CHECK_TRUE(r1.iterations == r2.iterations, "dim %d: %d / %d iterations", dim, r1.iterations, r2.iterations);
+        CHECK_TRUE(r1.change > 0.0 && r1.change == r2.change, "dim %d: change %.17g (residual rule) / %.17g (change rule)",
+                   dim, r1.change, r2.change);
+        CHECK_TRUE(memcmp(v1, v2, (size_t)n3 * sizeof(double)) == 0, "dim %d: other iterates", dim);
+        /* stopped by max_iter under the residual rule: the change of that last iteration */
+        double *v3 = warm_start(&c), *v4 = warm_start(&c);
+        OdResult r3 = od_solve_vec(&c.od, v3, OD_PCG, OD_STOP_RESIDUAL, 1e-30, 5);
+        OdResult r4 = od_solve_vec(&c.od, v4, OD_PCG, OD_STOP_CHANGE, 0.0, 5);
+        CHECK_TRUE(!r3.converged && r3.iterations == 5 && r3.change == r4.change,
+                   "dim %d, 5 iterations: change %.17g / %.17g", dim, r3.change, r4.change);
+        /* breakdown on -A */
+        for (int k = 0; k < 9 * c.od.nm; k++) c.od.diag[k] = -c.od.diag[k];
+        for (int k = 0; k < 9 * c.od.ostart[c.od.nm]; k++) c.od.oblk[k] = -c.od.oblk[k];
+        double *v5 = warm_start(&c), *v6 = warm_start(&c);
+        OdResult r5 = od_solve_vec(&c.od, v5, OD_PCG, OD_STOP_RESIDUAL, 1e-8, 100);
+        OdResult r6 = od_solve_vec(&c.od, v6, OD_PCG, OD_STOP_CHANGE, 1e-8, 100);
+        CHECK_TRUE(!r5.converged && r5.iterations == 0 && isnan(r5.change), "dim %d, -A, residual rule: converged %d, %d iterations, change %g",
+                   dim, r5.converged, r5.iterations, r5.change);
+        CHECK_TRUE(!r6.converged && r6.iterations == 0 && r6.change == 0.0, "dim %d, -A, change rule: converged %d, %d iterations, change %g",
+                   dim, r6.converged, r6.iterations, r6.change);
+        free(v1); free(v2); free(v3); free(v4); free(v5); free(v6);
+        free_case(&c);
+    }
+}
+
 /* od_solve writes into s->v of mobile particles only and matches the packed solve. */
 static void solve_writes_system(void **state)
 {
@@ -520,6 +561,7 @@ int main(void)
         cmocka_unit_test(paper_scheme2_2d),
         cmocka_unit_test(paper_scheme2_3d),
         cmocka_unit_test(pcg_fewer_matvecs),
+        cmocka_unit_test(pcg_reports_change),
         cmocka_unit_test(solve_writes_system),
         cmocka_unit_test(pcg_2level_and_scheme2_fixed_point),
     };

@@ -274,17 +274,45 @@ int od_assemble(OdSystem *od, const System *s, const NeighborList *nl)
 
 /* -------------------------------------------------------- products, norms */
 
-/* y = K v: off-diagonal part of A (eq. 21), each stored block used twice. */
-static void offdiag_mul(const OdSystem *od, const double *v, double *y)
+/* The same in 2D, on the blocks' leading 2 x 2 (their z row and column are
+ * zero, as are the z components of every vector the solvers multiply), in the
+ * order of blk_mul_add's first two terms. y's z components stay 0. */
+static void offdiag_mul_2d(const OdSystem *od, const double *restrict v, double *restrict y)
+{
+    for (int r = 0; r < od->nm; r++) {
+        const double vr0 = v[3 * (size_t)r], vr1 = v[3 * (size_t)r + 1];
+        double yr0 = y[3 * (size_t)r], yr1 = y[3 * (size_t)r + 1];
+        for (int k = od->ostart[r]; k < od->ostart[r + 1]; k++) {
+            const size_t c = 3 * (size_t)od->ocol[k];
+            const double *B = od->oblk + 9 * (size_t)k;
+            yr0 += B[0] * v[c] + B[1] * v[c + 1];
+            yr1 += B[3] * v[c] + B[4] * v[c + 1];
+            y[c] += B[0] * vr0 + B[1] * vr1;                          /* A_cr = A_rc^T = A_rc */
+            y[c + 1] += B[3] * vr0 + B[4] * vr1;
+        }
+        y[3 * (size_t)r] = yr0; y[3 * (size_t)r + 1] = yr1;
+    }
+}
+
+/* y = K v: off-diagonal part of A (eq. 21), each stored block used twice.
+ * Row r's own sum is kept in registers through its blocks (c != r, and v and
+ * y never overlap), added in the order of y[r] += B v_c one block at a time:
+ * the same sums, without a store and a reload of y[r] per block. */
+static void offdiag_mul(const OdSystem *od, const double *restrict v, double *restrict y)
 {
     memset(y, 0, 3 * (size_t)od->nm * sizeof(double));
-    for (int r = 0; r < od->nm; r++)
+    if (od->dim == 2) { offdiag_mul_2d(od, v, y); return; }
+    for (int r = 0; r < od->nm; r++) {
+        const double *vr = v + 3 * (size_t)r;
+        double yr[3] = {y[3 * (size_t)r], y[3 * (size_t)r + 1], y[3 * (size_t)r + 2]};
         for (int k = od->ostart[r]; k < od->ostart[r + 1]; k++) {
             const int c = od->ocol[k];
             const double *B = od->oblk + 9 * (size_t)k;
-            blk_mul_add(B, v + 3 * (size_t)c, y + 3 * (size_t)r);
-            blk_mul_add(B, v + 3 * (size_t)r, y + 3 * (size_t)c);   /* A_cr = A_rc^T = A_rc */
+            blk_mul_add(B, v + 3 * (size_t)c, yr);
+            blk_mul_add(B, vr, y + 3 * (size_t)c);                  /* A_cr = A_rc^T = A_rc */
         }
+        y[3 * (size_t)r] = yr[0]; y[3 * (size_t)r + 1] = yr[1]; y[3 * (size_t)r + 2] = yr[2];
+    }
 }
 
 /* y = A v, eq. 15 */
@@ -605,16 +633,23 @@ static OdResult pcg(OdSystem *od, double *x, OdStop stop, double tol, int max_it
         od_matvec(od, p, q);
         res.matvecs++;
         const double pq = cblas_ddot(n3, p, 1, q, 1);
-        if (!(pq > 0.0)) break;                   /* breakdown: A not positive definite on p */
+        if (!(pq > 0.0)) {                        /* breakdown: A not positive definite on p */
+            if (stop != OD_STOP_CHANGE) res.change = NAN;   /* the last change was not computed */
+            break;
+        }
         const double alpha = rz / pq;
         cblas_daxpy(n3, alpha, p, 1, x, 1);
         cblas_daxpy(n3, -alpha, q, 1, r, 1);
         res.iterations++;
-        const double dnorm = fabs(alpha) * cblas_dnrm2(n3, p, 1), vnorm = cblas_dnrm2(n3, x, 1);
-        res.change = vnorm > 0.0 ? dnorm / vnorm : dnorm;
         res.rel_residual = rel_to_f(od, cblas_dnrm2(n3, r, 1));
-        if ((stop == OD_STOP_CHANGE && stop_change(dnorm, vnorm, tol))
-            || (stop == OD_STOP_RESIDUAL && res.rel_residual < tol)) { res.converged = 1; break; }
+        const int residual_met = stop == OD_STOP_RESIDUAL && res.rel_residual < tol;
+        /* the change |alpha p| / |x|: every iteration when it is the stopping rule (eq. 27),
+         * else only on the last one, where it is reported (two norms fewer per iteration) */
+        if (stop == OD_STOP_CHANGE || residual_met || res.iterations == max_iter) {
+            const double dnorm = fabs(alpha) * cblas_dnrm2(n3, p, 1), vnorm = cblas_dnrm2(n3, x, 1);
+            res.change = vnorm > 0.0 ? dnorm / vnorm : dnorm;
+            if (residual_met || (stop == OD_STOP_CHANGE && stop_change(dnorm, vnorm, tol))) { res.converged = 1; break; }
+        }
         precondition(od, r, z, twolevel, rc);
         if (singular) remove_mean(od, z);
         const double rz_new = cblas_ddot(n3, r, 1, z, 1);

@@ -98,7 +98,7 @@ typedef struct {
 typedef struct {
     int iterations;           /* sweeps / CG iterations done */
     int matvecs;              /* applications of A (or of its off-diagonal part) */
-    double change;            /* final |v^l - v^{l-1}| / |v^l| */
+    double change;            /* final |v^l - v^{l-1}| / |v^l| (PCG under the residual rule: NaN after a breakdown, where it is not computed) */
     double rel_residual;      /* final |f - A v| / |f| */
     int converged;            /* 1 if the stopping rule was met within max_iter */
 } OdResult;
