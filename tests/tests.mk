@@ -34,6 +34,15 @@ TEST_SCRIPTS := tests/checkpoint.sh tests/io_errors.sh tests/scene_errors.sh tes
   tests/in_flight.sh tests/version.sh tests/analyse_server.sh
 SLOW_BINS := test_transverse_relaxation test_thermostat test_bonds test_msd test_rotation test_forces
 SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(notdir $(TEST_BINS)))
+# the suites that run no code a sanitizer instruments: source checks (layers, library_exits), the
+# python and shell tools, the analysis server and its static client (never sanitized), and
+# version.sh, which builds a release binary of its own. make test runs them; make test SANITIZE=1
+# (the same suites again under ASan and UBSan) leaves them out and says so.
+UNSANITIZED_SUITES := layers.sh library_exits.sh version.sh precision.sh analyse_server.sh analysis.py \
+  bands_diff.sh claim_groups.sh
+ifeq ($(SANITIZE),1)
+  SUITES := $(filter-out $(UNSANITIZED_SUITES),$(SUITES))
+endif
 SUITE_LOGS := $(BUILD)/tests/logs
 suite_path = $(if $(filter test_%,$(1)),$(BUILD)/tests/$(1),tests/$(1))
 
@@ -43,3 +52,4 @@ $(addprefix suite/,$(SUITES)): suite/%: $(TEST_BINS) $(TEST_DPD) $(BARE) $(ANALY
 	@echo "test: $* done"
 test: $(addprefix suite/,$(SUITES))
 	@tests/run-tests.sh --sum $(patsubst %,$(SUITE_LOGS)/%.log,$(SUITES))
+	@$(if $(filter 1,$(SANITIZE)),echo "test: not run again under the sanitizers (no instrumented code; make test runs them): $(UNSANITIZED_SUITES)")
