@@ -68,6 +68,28 @@ mkdir -p "$OUT/runs"
 #  - neither: run it here and now (tools/run-simulation), as a script run by hand does.
 # dpd_run is called from a run.sh's declared simulations (simulations, simulations_K), never from
 # its analysis unless the run.sh declares analysis_runs_simulations=1.
+# _scene_sha SCENE -> _sha: the sha256 of the scene file ("missing" if there is none). A pass calls
+# dpd_run for every simulation, most of them on a few scenes: the sums of the experiments' own
+# scene files (under experiments/, which no run.sh writes) are kept for the rest of the pass, by
+# path; any other file (one a run.sh writes, e.g. under $OUT) is read each time.
+declare -A _scene_sha_of=()
+_scene_sha() {
+    local p=$1
+    case $p in /*) ;; *) p=$PWD/$p ;; esac
+    case $p in "$DPD_ROOT"/experiments/*) _sha=${_scene_sha_of[$p]:-}; [ -z "$_sha" ] || return 0 ;; *) p= ;; esac
+    _sha=missing
+    if [ -f "$1" ]; then _sha=$(sha256sum < "$1"); _sha=${_sha%% *}; fi
+    [ -z "$p" ] || _scene_sha_of[$p]=$_sha
+}
+# _planned NAME: NAME is in $OUT/.plan already (read in the shell: the plan passes call it for every
+# simulation they plan)
+_planned() {
+    local l _pl=()
+    [ -f "$OUT/.plan" ] || return 1
+    mapfile -t _pl < "$OUT/.plan"
+    for l in ${_pl[@]+"${_pl[@]}"}; do [ "$l" = "$1" ] && return 0; done
+    return 1
+}
 dpd_run() {
     local name=$1 scene=$2; shift 2
     local dir=$OUT/runs/$name args sha st rec recsha
@@ -75,7 +97,7 @@ dpd_run() {
     # (in the shell, not in pipelines: the plan and verify passes make this call for every
     # simulation of every result, and each process costs milliseconds)
     printf -v args '%s\n' "$scene" "$@"; _args_norm_text "$args"; args=$_args_text
-    sha=missing; if [ -f "$scene" ]; then sha=$(sha256sum < "$scene"); sha=${sha%% *}; fi
+    _scene_sha "$scene"; sha=$_sha
     _args_recorded_text "$dir"; rec=$_args_text
     recsha=$sha; [ -f "$dir/.scene_sha256" ] && { IFS= read -r recsha < "$dir/.scene_sha256" || true; }
     if [ "$rec" = "$args" ] && [ "$recsha" = "$sha" ]; then
@@ -92,13 +114,14 @@ dpd_run() {
         _verify_refuse "$name" "it is incomplete"
     else
         _verify_refuse "$name" "its arguments or scene ($scene) differ from the recorded ones"
-        rm -rf "$dir"; mkdir -p "$dir"
+        [ ! -e "$dir" ] || rm -rf "$dir"
+        mkdir -p "$dir"
         printf '%s\n' "$scene" "$@" > "$dir/.args"
         printf '%s\n' "$sha" > "$dir/.scene_sha256"
     fi
     pwd > "$dir/.cwd"
     if [ "${DPD_PLAN:-0}" = 1 ]; then
-        grep -qxF -- "$name" "$OUT/.plan" 2>/dev/null || printf '%s\n' "$name" >> "$OUT/.plan"
+        _planned "$name" || printf '%s\n' "$name" >> "$OUT/.plan"
         return 0
     fi
     "$DPD_ROOT/tools/run-simulation" "$dir"
