@@ -72,7 +72,7 @@ mkdir -p "$OUT/runs"
 # dpd_run for every simulation, most of them on a few scenes: the sums of the experiments' own
 # scene files (under experiments/, which no run.sh writes) are kept for the rest of the pass, by
 # path; any other file (one a run.sh writes, e.g. under $OUT) is read each time.
-declare -A _scene_sha_of=()
+declare -gA _scene_sha_of=()   # (-g: exp.sh may be sourced inside a function)
 _scene_sha() {
     local p=$1
     case $p in /*) ;; *) p=$PWD/$p ;; esac
