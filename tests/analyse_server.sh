@@ -3,7 +3,8 @@
 # (build/analyse-client, tools/lib/analyse-client.c) against the plain tools/analyse: the same
 # stdout, stderr and exit status for calls that print, read stdin, read a file relative to the
 # caller's directory, fail on bad arguments, a missing file or an unknown subcommand; twenty
-# calls at once; the fallback to tools/analyse when the server cannot be reached or a
+# calls at once; which calls run in the server itself and which in a fork; stdout and stderr one
+# file; an output larger than a pipe holds, read by another call; the fallback to tools/analyse when the server cannot be reached or a
 # descriptor is closed; exp.sh's analyse_serve switching "$ANALYSE" to the client; the server
 # ending with the shell that started it, its socket removed; and the caller's pipes not held by
 # it. Prints "N passed, M failed".
@@ -66,6 +67,43 @@ good=0; for i in $(seq 20); do [ "$(cat "$tmp/par.$i")" = $((i + 1000)) ] && goo
 # a pipeline: the call reads what the one before it writes and writes to the next
 out=$(printf '2\n4\n' | "$client" mean-se | cut -f1)
 [ "$out" = "$(printf '2\n4\n' | env -u DPD_ANALYSE_SOCKET "$plain" mean-se | cut -f1)" ] && ok "inside a pipeline" || bad "pipeline" "'$out'"
+
+# which calls the server runs itself (no fork): strace on the server counts its forks for one call
+# with stdin /dev/null and stdout a file (none), and one with stdin a pipe (a fork)
+spid=$(pgrep -f -- "--serve $DPD_ANALYSE_SOCKET" | head -1)
+forks() {   # forks CMD...: the server's clone calls while CMD runs
+    local n
+    strace -qq -f -e trace=clone,clone3,fork,vfork -e signal=none -p "$spid" -o "$tmp/forks" & local st=$!
+    for _ in $(seq 100); do grep -q '^TracerPid:[[:space:]]*[1-9]' "/proc/$spid/status" && break; sleep 0.1; done   # attached
+    "$@"; sleep 0.5; kill "$st" 2> /dev/null; wait "$st" 2> /dev/null
+    n=$(grep -cE 'clone|fork' "$tmp/forks"); echo "$n"
+}
+if command -v strace > /dev/null && [ -n "$spid" ]; then
+    n=$(forks sh -c '"$0" plus 2 3 < /dev/null > "$1"' "$client" "$tmp/inl.out")
+    [ "$n" = 0 ] && [ "$(cat "$tmp/inl.out")" = 5 ] && ok "a call without a pipe on stdin runs in the server itself (no fork)" ||
+        bad "inline call" "$n forks, '$(cat "$tmp/inl.out")'"
+    n=$(forks sh -c 'printf "2\n4\n" | "$0" mean-se > "$1"' "$client" "$tmp/fork.out")
+    [ "$n" -ge 1 ] && ok "a call reading a pipe runs in a fork ($n)" || bad "forked call" "$n forks"
+else
+    echo "SKIP no strace or no server pid: the fork counts"
+fi
+# stdout and stderr one file (2>&1): in a fork, in the order the call writes them
+rc_c=0; rc_p=0
+(cd "$tmp" && "$client" lookup nosuch.tsv eta < /dev/null > "$tmp/c.both" 2>&1) || rc_c=$?
+(cd "$tmp" && env -u DPD_ANALYSE_SOCKET "$plain" lookup nosuch.tsv eta < /dev/null > "$tmp/p.both" 2>&1) || rc_p=$?
+[ $rc_c = $rc_p ] && cmp -s "$tmp/c.both" "$tmp/p.both" && ok "stdout and stderr one file: as tools/analyse (status $rc_c)" ||
+    bad "2>&1" "status $rc_c/$rc_p, '$(cat "$tmp/c.both")' vs '$(cat "$tmp/p.both")'"
+# an output larger than a pipe holds, read by a call that waits for this server: not a deadlock (a
+# fork writes what the pipe has no room for), the same bytes as tools/analyse
+awk 'BEGIN { for (i = 1; i <= 20000; i++) printf "%d\t%d\t%d\t%.6f\t%.6f\n", i, i, 6, 1 + i / 7, 0.01 }' > "$tmp/big.tsv"
+for order in 1 2; do
+    rc=0
+    if [ $order = 1 ]; then timeout 60 bash -c '"$0" normalise "$1" 2 < /dev/null | "$0" mean-se' "$client" "$tmp/big.tsv" > "$tmp/big.c" || rc=$?
+    else timeout 60 bash -c '"$0" normalise "$1" 2 < /dev/null | { sleep 0.5; "$0" mean-se; }' "$client" "$tmp/big.tsv" > "$tmp/big.c" || rc=$?; fi
+    env -u DPD_ANALYSE_SOCKET "$plain" normalise "$tmp/big.tsv" 2 < /dev/null | env -u DPD_ANALYSE_SOCKET "$plain" mean-se > "$tmp/big.p"
+    [ $rc = 0 ] && cmp -s "$tmp/big.c" "$tmp/big.p" && ok "a $(wc -c < "$tmp/big.tsv")-byte output into a call on a pipe (reader $order): no deadlock, the same" ||
+        bad "big output into a pipe (reader $order)" "status $rc, '$(head -c 100 "$tmp/big.c")' vs '$(head -c 100 "$tmp/big.p")'"
+done
 
 # the fallback: no server there, or a standard descriptor closed: tools/analyse runs the call
 out=$(DPD_ANALYSE_SOCKET=$tmp/none/socket "$client" plus 2 3)

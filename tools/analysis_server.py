@@ -3,31 +3,47 @@
 An analysis makes hundreds of "$ANALYSE" calls, and each used to start its own python: about 60 ms
 of CPU per call on the CI machines (the interpreter's start, then analysis.py imported), most of
 it page faults of the new process, against a few milliseconds of analysis. This server starts
-once per run.sh (tools/lib/exp.sh, analyse_serve), imports analysis.py once, and forks a child per
-call; the client (tools/lib/analyse-client.c, build/analyse-client) hands the child its standard
-input, output and error (SCM_RIGHTS), its working directory and its arguments, and exits with the
-child's status. The child is a fork of the server as it was after the import, never of an earlier
-call, so every call starts from the same module state as a fresh `tools/analyse` would; it writes
-to the caller's own descriptors, so pipes, redirections and end-of-file behave as with a process
-of its own. analysis.py reads no environment variable: the server's (the experiment's) applies.
+once per run.sh (tools/lib/exp.sh, analyse_serve), imports analysis.py once, and runs each call
+itself or in a forked child (below); the client (tools/lib/analyse-client.c, build/analyse-client)
+hands the server its standard input, output and error (SCM_RIGHTS), its working directory and its
+arguments, and exits with the call's status. A child is a fork of the server as it was after the
+import, never of an earlier call, so every call starts from the same module state as a fresh
+`tools/analyse` would; it writes to the caller's own descriptors, so pipes, redirections and
+end-of-file behave as with a process of its own. analysis.py reads no environment variable: the
+server's (the experiment's) applies.
 
 Protocol (one connection per call): the client sends a 4-byte little-endian length, then that many
 bytes: the working directory and the arguments (subcommand first), each NUL-terminated; the first
-part carries descriptors 0, 1 and 2. The child answers with the call's exit status, 4 bytes
-little-endian, and closes. A client that cannot reach the server runs tools/analyse itself.
+part carries descriptors 0, 1 and 2. The server (or its child) answers with the call's exit status,
+4 bytes little-endian, after the call's output, and closes. A client that cannot reach the server runs tools/analyse itself.
+
+A call runs in the server itself, without a fork, when nothing of it can wait on another call: its
+standard input is not a pipe, a socket or a terminal, and its stdout and stderr are not one file.
+That relies on analysis.py keeping no state between calls: no module-level variable that a call
+changes, no cache (tests/analysis.py checks its source for them). Its output is kept in memory while it runs (sys.stdout and sys.stderr are StringIOs, sys.stdin
+the caller's file), then written to the caller's descriptors with the encoding and error handler
+the server's own streams have, as a fork's TextIOWrapper would write them; a write that could block
+(a pipe without the room, whose reader may be waiting for this server) is left to a fork. Forks
+cost the server about 5 ms of CPU each on the CI machines; most calls take a few hundred
+microseconds inline. Any other call (a pipe on stdin: `... | "$ANALYSE" mean-se`) runs in a fork,
+as before.
 
 The server ends when the shell that started it has gone (the process it was given to watch), and
 removes its socket. It is not that shell's child (exp.sh starts it detached), so that a bare
 `wait` in a run.sh does not wait for it. tests/analyse_server.sh checks the outputs, statuses, stdin and concurrency against the
 plain tools/analyse.
 """
+import fcntl
 import gc
+import io
 import os
 import select
 import signal
 import socket
+import stat
 import struct
 import sys
+import termios
 import traceback
 
 import analysis
@@ -81,15 +97,10 @@ def _request(conn):
     return os.fsdecode(parts[0]), [os.fsdecode(p) for p in parts[1:]], fds
 
 
-def _child(conn):
+def _child(conn, cwd, argv, fds):
     """In the forked child: run the call on the client's descriptors, answer its status."""
     signal.signal(signal.SIGCHLD, signal.SIG_DFL)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    try:
-        cwd, argv, fds = _request(conn)
-    except (OSError, ValueError) as e:
-        os.write(2, ('analysis server: %s\n' % e).encode())
-        os._exit(1)
     for i, fd in enumerate(fds):
         os.dup2(fd, i)
         os.close(fd)
@@ -104,6 +115,106 @@ def _child(conn):
     except OSError:
         pass
     os._exit(0)
+
+
+# the encodings and error handlers of the server's own streams (a fork writes through them)
+_ENC = [(f.encoding, f.errors) for f in (sys.stdout, sys.stderr)]
+
+
+def _inline(fds):
+    """Whether a call on these descriptors (stdin, stdout, stderr) can run in the server: no input
+    that another call may be writing (a pipe, a socket) or that a user types (a terminal), and
+    stdout and stderr not one file (their order would change)."""
+    try:
+        st = [os.fstat(fd) for fd in fds]
+    except OSError:
+        return False
+    m = st[0].st_mode
+    if stat.S_ISFIFO(m) or stat.S_ISSOCK(m) or os.isatty(fds[0]):
+        return False
+    return (st[1].st_dev, st[1].st_ino) != (st[2].st_dev, st[2].st_ino)
+
+
+def _fits(fd, n):
+    """A blocking write of n bytes to fd cannot wait on a reader: fd is not a pipe or socket, or
+    the pipe has room for them now."""
+    m = os.fstat(fd).st_mode
+    if stat.S_ISSOCK(m):
+        return False
+    if not stat.S_ISFIFO(m):
+        return True
+    try:
+        size = fcntl.fcntl(fd, 1032)   # F_GETPIPE_SZ
+        queued = struct.unpack('i', fcntl.ioctl(fd, termios.FIONREAD, b'\0\0\0\0'))[0]
+    except OSError:
+        return False
+    return queued + n <= size
+
+
+def _write_all(fd, data):
+    while data:
+        data = data[os.write(fd, data):]
+
+
+def _serve_inline(sock, conn, cwd, argv, fds):
+    """Run one call in the server (_inline said it may), write its output, answer its status."""
+    out, err = io.StringIO(), io.StringIO()
+    saved = sys.stdin, sys.stdout, sys.stderr
+    stdin = None
+    try:
+        stdin = open(fds[0], 'r', closefd=False, encoding=sys.stdin.encoding, errors=sys.stdin.errors)
+        sys.stdin, sys.stdout, sys.stderr = stdin, out, err
+        try:
+            os.chdir(cwd)
+            code = _run(argv)
+        except OSError as e:
+            sys.stderr.write('analyse: %s: %s\n' % (cwd, e))
+            code = 1
+    finally:
+        sys.stdin, sys.stdout, sys.stderr = saved
+        if stdin is not None:
+            stdin.close()
+        os.chdir('/')
+    data = [buf.getvalue().encode(enc, errors) for buf, (enc, errors) in zip((out, err), _ENC)]
+    if not all(_fits(fd, len(d)) for fd, d in zip(fds[1:], data)):
+        # a reader that may be a call waiting for this server: a fork writes it
+        try:
+            pid = os.fork()
+        except OSError:
+            pid = -1
+        if pid == 0:
+            try:
+                sock.close()
+                _finish(conn, fds, data, code)
+            finally:
+                os._exit(0)
+        if pid > 0:
+            _close(conn, fds)
+            return
+    _finish(conn, fds, data, code)
+    _close(conn, fds)
+
+
+def _finish(conn, fds, data, code):
+    """The call's output to its descriptors (a closed reader: status 120, as python's), its status."""
+    for fd, d in zip(fds[1:], data):
+        try:
+            _write_all(fd, d)
+        except OSError:
+            code = 120
+    try:
+        conn.sendall(struct.pack('<I', code))
+    except OSError:
+        pass
+
+
+def _close(conn, fds):
+    for fd in fds:
+        try:
+            os.close(fd)
+        except OSError:
+            pass
+    conn.close()
 
 
 def _start_time(pid):
@@ -155,17 +266,27 @@ def serve(path, watch):
             except OSError:
                 continue
             try:
+                conn.settimeout(10.0)   # the client sends its call at once
+                cwd, argv, fds = _request(conn)
+                conn.settimeout(None)
+            except (OSError, ValueError):
+                conn.close()   # the client sees no status and says so
+                continue
+            if _inline(fds):
+                _serve_inline(sock, conn, cwd, argv, fds)
+                continue
+            try:
                 pid = os.fork()
             except OSError:
-                conn.close()   # the client sees no status and says so
+                _close(conn, fds)   # the client sees no status and says so
                 continue
             if pid == 0:
                 try:
                     sock.close()
-                    _child(conn)
+                    _child(conn, cwd, argv, fds)
                 finally:
                     os._exit(1)   # never back into the server's loop
-            conn.close()
+            _close(conn, fds)
     finally:
         try:
             os.unlink(path)
