@@ -597,6 +597,18 @@ same('drive_projection: the torque linear in u', A.drive_projection('0.1', '0.01
 rc = A.run_cost(tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), tsv('rcs.tsv', 'quantity\tvalue\nsteps\t5000\t0\ncpu_seconds\t100\t0\n'), '2',
                 ['--set', 'equilibration=3000'])
 same('run_cost: production and equilibration CPU in the ratio of their steps (the arguments\' equilibration first), and the time', rc, '80\t120\t20')
+# run-costs-sum: the fold the shell made with run-cost and plus, run by run (partial sums printed and
+# read back); a run of no arguments (its count 0) and one whose production time is not an integer
+rc2 = tsv('rcs2.tsv', 'quantity\tvalue\nsteps\t3000\t0\ncpu_seconds\t7.77777\t0\n')
+runs = [(tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), tsv('rcs.tsv', 'quantity\tvalue\nsteps\t5000\t0\ncpu_seconds\t100\t0\n'), '2', ['--set', 'equilibration=3000']),
+        (tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), rc2, '0.3', []),
+        (tsv('rc3.cfg', 'dt = 0.0033;\nequilibration = 1;\n'), rc2, '1', ['--set', 'dt=0.007'])]
+fold = ['0', '0', '0']
+for sc, sm, fac, args in runs:
+    fold = [A.COMMANDS['plus']([x, y])[0] for x, y in zip(fold, A.COMMANDS['run-cost']([sc, sm, fac] + args)[0].split('\t'))]
+flat = [x for sc, sm, fac, args in runs for x in [str(len(args)), sc, sm, fac] + args]
+same('run-costs-sum: run-cost summed by plus, run by run', A.COMMANDS['run-costs-sum'](flat), [' '.join(fold)])
+same('run-costs-sum: one run', A.COMMANDS['run-costs-sum'](flat[:6]), ['80 120 20'])
 same('paper_band: the paper tier\'s claim row, columns by name', A.paper_band(tsv('pbands.tsv', 'quantity\ttier\tkind\tlo\thi\tpaper\nq\tpaper\tgate\t1\t2\t3\nq\tpaper\tclaim\t0\t10\t4\n'), 'q'), '0\t10\t4')
 r = A.precision_row('e\tq\t0\t10\t4\t5\t1\t 100:10:50:-:1\tnote', '').split('\t')
 same('precision_row: the verdict under the rule (5 +- 2 inside [0, 10])', r[7], 'PASS')
@@ -633,6 +645,34 @@ if 'ANALYSIS_PY' not in os.environ:
     os.utime(src, ns=(st.st_atime_ns, st.st_mtime_ns))
     second = subprocess.run([os.path.join(cp, 'analyse'), 'diff', '5\t0.3', '2\t0.4'], capture_output=True, text=True).stdout
     same('tools/analyse: an edit of the same size and time is not hidden by the compiled cache', (first, second), ('3\t0.5\n', '7\t0.5\n'))
+
+# the analysis server runs calls one after another in one process (tools/analysis_server.py): a
+# call must leave nothing for the next. analysis.py binds its module-level names once (functions,
+# constants, the command tables), no function rebinds one (global, nonlocal), none caches, and the
+# command tables are not changed after they are built
+import ast
+src = ast.parse(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tools', 'analysis.py')).read())
+rebound = sorted({type(n).__name__ for n in ast.walk(src) if isinstance(n, (ast.Global, ast.Nonlocal))})
+cached = sorted({ast.unparse(d) for n in ast.walk(src) if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) for d in n.decorator_list})
+top = [t.id for n in src.body if isinstance(n, (ast.Assign, ast.AnnAssign, ast.AugAssign))
+       for t in (n.targets if isinstance(n, ast.Assign) else [n.target]) if isinstance(t, ast.Name)]
+twice = sorted({x for x in top if top.count(x) > 1})
+tables = {x for x in top if x.endswith('COMMANDS')}
+# (inside functions and lambdas: the import builds the tables)
+inner = [n for f in ast.walk(src) if isinstance(f, (ast.FunctionDef, ast.Lambda)) for n in ast.walk(f)]
+mutated = sorted({ast.unparse(n) for n in inner if isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute)
+                  and isinstance(n.func.value, ast.Name) and n.func.value.id in tables and n.func.attr in ('update', 'pop', 'setdefault', 'clear', 'popitem')}
+              | {ast.unparse(t) for n in inner if isinstance(n, (ast.Assign, ast.AugAssign, ast.Delete))
+                 for t in (n.targets if isinstance(n, (ast.Assign, ast.Delete)) else [n.target])
+                 if isinstance(t, ast.Subscript) and isinstance(t.value, ast.Name) and t.value.id in tables})
+mutable = sorted({t.id for n in src.body if isinstance(n, ast.Assign) for t in n.targets if isinstance(t, ast.Name)
+                  and t.id not in tables and (isinstance(n.value, (ast.List, ast.Dict, ast.Set, ast.ListComp, ast.DictComp, ast.SetComp))
+                                              or isinstance(n.value, ast.Call) and ast.unparse(n.value.func) in ('dict', 'list', 'set', 'collections.defaultdict', 'defaultdict'))})
+same('analysis.py keeps no state between calls: no module-level list, dict or set but the command tables', mutable, [])
+same('analysis.py keeps no state between calls: no global or nonlocal', rebound, [])
+same('analysis.py keeps no state between calls: no decorated (cached) function', cached, [])
+same('analysis.py keeps no state between calls: each module-level name bound once', twice, [])
+same('analysis.py keeps no state between calls: the command tables not changed by a call', mutated, [])
 
 shutil.rmtree(tmp)
 print('%d passed, %d failed' % (passed, failed))

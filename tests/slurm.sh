@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # tests/slurm.sh - the Slurm engine against a real Slurm (make test-slurm; CI runs it).
 # Starts a one-node cluster (tools/slurm-local: munged, slurmctld, slurmd; 2 CPUs) in a scratch
-# directory, runs the quick tier of two experiments (12 simulations between them) through it
+# directory, runs the quick tier of two experiments (11 simulations between them) through it
 # (DPD_ENGINE=slurm: a Slurm job per simulation, the analyses as Slurm jobs too) and through the
-# local pool, each in a scratch copy of the package, and checks:
+# local pool (beside the Slurm part; with DPD_SLURM_LOCAL_FROM=results, as CI runs it after make
+# figures, only the cancelled simulation and the analyses: the other simulations are make
+# figures' own, made by this binary), each in a scratch copy of the package, and checks:
 #  - both complete, and every summary.tsv (but its measured cpu_seconds row), every table of the
 #    results and every simulation's summary (but its measured times) are byte-identical: the
 #    simulator is deterministic, so any difference is a bug;
@@ -23,7 +25,7 @@ dpd=${DPD:-$repo/bin/dpd}
 [ -x "$dpd" ] || { echo "slurm.sh: no simulator $dpd (make bin/dpd)" >&2; exit 1; }
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/dpd-slurm.XXXXXX") && chmod 755 "$tmp"   # munged wants its socket's path open to all
 cluster=$tmp/cluster
-cleanup() { "$repo/tools/slurm-local" stop "$cluster" >/dev/null 2>&1; [ "${KEEP:-0}" = 1 ] && echo "kept $tmp" || rm -rf "$tmp"; }
+cleanup() { pkill -TERM -f "$tmp/local/tools/run-experiment" 2>/dev/null; "$repo/tools/slurm-local" stop "$cluster" >/dev/null 2>&1; [ "${KEEP:-0}" = 1 ] && echo "kept $tmp" || rm -rf "$tmp"; }
 trap cleanup EXIT
 pass=0 fail=0
 ok()  { pass=$((pass + 1)); echo "ok   - $1"; }
@@ -37,11 +39,41 @@ export DPD_BIN=$dpd DPD_KEEP_H5=1 DPD_CHECKPOINT_EVERY=500 DPD_CHECKPOINT_WALL=0
 unset MAKEFLAGS MFLAGS
 
 echo "== local pool"
-for e in "${EXPS[@]}"; do
-    DPD_JOBS=2 "$tmp/local/tools/run-experiment" "$e" quick > "$tmp/local.log" 2>&1 ||
-        { bad "local pool: $e failed"; tail -20 "$tmp/local.log"; exit 1; }
-done
-ok "local pool: ${EXPS[*]} complete ($(( $(date +%s) - t0 )) s)"
+# DPD_SLURM_LOCAL_FROM=results (CI, after `make figures TIER=quick` with this same simulator): the
+# local pool's simulations are the ones that make figures just ran in this checkout
+# (results/EXP/quick/runs), taken only if each one's provenance names this simulator ($dpd) and
+# its version; they go into the local copy's partial (stamped with this binary), so that
+# run-experiment keeps them, reruns only the victim (its run.h5 is needed, and figures does not
+# keep it) and redoes every analysis. Anything else: every simulation runs here.
+reused=0
+if [ "${DPD_SLURM_LOCAL_FROM:-}" = results ]; then
+    ver=$("$dpd" --version); ver=${ver#dpd }
+    for e in "${EXPS[@]}"; do
+        src=$repo/results/$e/quick/runs p=$tmp/local/results/$e/.quick.partial
+        [ -d "$src" ] || continue
+        mkdir -p "$p/runs"
+        for r in "$src"/*/; do r=${r%/}; n=${r##*/}
+            [ "$e/$n" = "${EXPS[0]}/$VICTIM" ] && continue
+            awk -F'\t' -v d="$dpd" -v v="$ver" '$1 == "git_commit" && $2 == v { c = 1 }
+                $1 == "command" && index($2, d " run ") == 1 { b = 1 } END { exit !(c && b) }' "$r/provenance.tsv" 2>/dev/null ||
+                continue
+            cp -a "$r" "$p/runs/$n" && reused=$((reused + 1))
+        done
+        (. "$repo/tools/lib/common.sh" && partial_stamp quick "$dpd") > "$p/.stamp"
+    done
+fi
+[ "${DPD_SLURM_LOCAL_FROM:-}" != results ] || [ "$reused" -ge 10 ] ||
+    bad "DPD_SLURM_LOCAL_FROM=results: only $reused of the 10 simulations other than the victim were taken (make figures TIER=quick first)"
+# the local pool runs beside the Slurm sections below (they wait on Slurm's polls and grace
+# times; one core each would idle), and is waited for before the comparison
+local_pool() {
+    local e t=$(date +%s)
+    for e in "${EXPS[@]}"; do
+        DPD_JOBS=2 "$tmp/local/tools/run-experiment" "$e" quick >> "$tmp/local.log" 2>&1 || { echo "$e" > "$tmp/local.failed"; return 1; }
+    done
+    echo $(( $(date +%s) - t )) > "$tmp/local.seconds"
+}
+local_pool & local_pid=$!
 
 echo "== Slurm"
 t1=$(date +%s)
@@ -123,6 +155,12 @@ else
 fi
 
 echo "== Slurm against the local pool"
+if wait $local_pid; then
+    ok "local pool: ${EXPS[*]} complete ($(cat "$tmp/local.seconds") s beside the Slurm sections; $reused simulations taken from make figures' results)"
+else
+    bad "local pool: $(cat "$tmp/local.failed" 2>/dev/null) failed"; tail -20 "$tmp/local.log"
+    echo "slurm.sh: $pass passed, $fail failed ($(( $(date +%s) - t0 )) s)"; exit 1
+fi
 measured=$'^(cpu_seconds|wall_seconds|.*particle_steps_per_second.*|peak_memory_bytes_per_particle|time_[a-z_]*seconds)\t'
 for e in "${EXPS[@]}"; do
     a=$tmp/local/results/$e/quick b=$tmp/slurm/results/$e/quick

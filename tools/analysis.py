@@ -2765,6 +2765,20 @@ def run_cost(scene, summary, fac, args):
     return cfmt('%.6g\t%.6g\t%.6g', c * p, c * (1 - p), (n - eq) * dt)
 
 
+def run_costs_sum(a):
+    """precision.sh: the sums over a group's committed runs of run_cost's three columns, formed run
+    by run as the shell did with `plus` (each partial sum printed as awk prints a number and read
+    back); A: per run, N SCENE SUMMARY FACTOR and its N arguments: "prod_cpu eq_cpu time" """
+    pc = ec = tu = '0'
+    i = 0
+    while i < len(a):
+        n = int(a[i])
+        p, e, t = run_cost(a[i + 1], a[i + 2], a[i + 3], a[i + 4:i + 4 + n]).split('\t')
+        pc, ec, tu = astr(num(pc) + num(p)), astr(num(ec) + num(e)), astr(num(tu) + num(t))
+        i += 4 + n
+    return '%s %s %s' % (pc, ec, tu)
+
+
 def paper_band(path, q):
     """selection: "lo<TAB>hi<TAB>paper" of the first paper-tier claim row of Q in a bands.tsv (columns
     by name; a table without a kind column: every row)"""
@@ -2891,6 +2905,8 @@ PE_COMMANDS = {
     'drive-projection': lambda a: [drive_projection(*a[:4])],
     # run-cost SCENE SUMMARY FACTOR ARG...
     'run-cost': lambda a: [run_cost(a[0], a[1], a[2], a[3:])],
+    # run-costs-sum [N SCENE SUMMARY FACTOR ARG1..ARGN]...: run-cost's columns summed over the runs
+    'run-costs-sum': lambda a: [run_costs_sum(a)],
     'paper-band': lambda a: (lambda b: [b] if b is not None else [])(paper_band(a[0], a[1])),
     # plus A B -> a + b as awk prints a number
     'plus': lambda a: [astr(num(a[0]) + num(a[1]))],

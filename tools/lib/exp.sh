@@ -8,8 +8,9 @@ ANALYSE=$DPD_ROOT/tools/analyse
 # analyse_serve: from here on "$ANALYSE" runs in a fork of one analysis server
 # (tools/analysis_server.py), through the static build/analyse-client, instead of a python of its
 # own per call (about 60 ms of CPU each on the CI machines; an analysis makes hundreds). The same
-# tables: each call runs in a fork of the server as it was after importing analysis.py, on the
-# caller's own descriptors. The server starts at the first call (an analysis that makes none pays
+# tables: a call runs in the server itself when nothing of it can wait on another call (no pipe on
+# its stdin; analysis.py keeps no state between calls), else in a fork of the server as it was
+# after importing analysis.py, on the caller's own descriptors. The server starts at the first call (an analysis that makes none pays
 # nothing), from whichever subshell makes it, on a socket fixed here, and ends when this shell
 # does. Nothing changes when the client is not built, the server does not start, or
 # DPD_ANALYSE_SERVER=0: a call the client cannot hand over runs tools/analyse itself.
@@ -313,6 +314,8 @@ upstream_if() { upstream "$1" optional; }
 # get NAME QUANTITY -> "value<TAB>stderr" from a run's summary (NAME "." : the
 # experiment's own summary so far, e.g. a mean emit_mean wrote).
 get() { _get "$1" "$2" && printf '%s\n' "$_got"; }
+# getv NAME QUANTITY -> the value alone: `get NAME QUANTITY | cut -f1` without its two processes
+getv() { _get "$1" "$2" && printf '%s\n' "$_got_v"; }
 # _get NAME QUANTITY: the same into _got ("value<TAB>stderr", empty when missing), _got_v and
 # _got_se, read in the shell (no process: the helpers below call it for every quantity they copy).
 # The first row whose first field is QUANTITY; its second and third tab-separated fields.

@@ -7,7 +7,15 @@
 # itself takes it only from make (a run-experiment started by hand under nohup outlives its shell).
 # dpd_pdeath_self=0 before sourcing: only the prefix, the script itself is not run again.
 dpd_pdeath=()
-if command -v setpriv >/dev/null 2>&1 && setpriv --pdeathsig TERM true 2>/dev/null; then
+# (whether setpriv works is asked once per process tree and host: _DPD_SETPRIV, exported, is the
+# answer on host $HOSTNAME; a Slurm job that inherits it on another node asks again)
+_DPD_SETPRIV=${_DPD_SETPRIV:-}
+if [ "${_DPD_SETPRIV%:*}" != "$HOSTNAME" ]; then
+    _DPD_SETPRIV=$HOSTNAME:0
+    if command -v setpriv >/dev/null 2>&1 && setpriv --pdeathsig TERM true 2>/dev/null; then _DPD_SETPRIV=$HOSTNAME:1; fi
+    export _DPD_SETPRIV
+fi
+if [ "${_DPD_SETPRIV##*:}" = 1 ]; then
     dpd_pdeath=(setpriv --pdeathsig TERM)
     if [ "${dpd_pdeath_self:-1}" = 1 ] && [ "${_DPD_PDEATH_PID:-}" != "$$" ]; then
         export _DPD_PDEATH_PID=$$ _DPD_PDEATH_PARENT=$PPID

@@ -13,8 +13,8 @@ TOOLS := $(patsubst %/lib/,%,$(dir $(lastword $(MAKEFILE_LIST))))
 RUNS := $(shell cat '$(OUT)/.plan')
 .PHONY: all $(RUNS)
 all: $(RUNS)
-# ID: the experiment (for the progress line of make figures / make reproduce: tools/progress, a
-# no-op unless DPD_PROGRESS is set)
+# ID: the experiment (for the progress line of make figures / make reproduce: tools/progress, not
+# started unless DPD_PROGRESS is set)
 $(RUNS):
 	@$(LAUNCH) '$(TOOLS)/run-simulation' '$(OUT)/runs/$@' || echo "pool: simulation $@ exited $$? (see $(OUT)/runs/$@)" >&2; \
-	'$(TOOLS)/progress' done '$(ID)' '$(OUT)' '$@'
+	[ -z "$${DPD_PROGRESS:-}" ] || '$(TOOLS)/progress' done '$(ID)' '$(OUT)' '$@'

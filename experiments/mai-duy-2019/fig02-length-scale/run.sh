@@ -18,7 +18,7 @@ dpd_run constrained_bodies constrained.cfg "${tier[@]}" --set "types.[1].count=$
         --set measure.tcaf.include_bodies=true
 }
 analysis() {
-np=$(get free particles | cut -f1)
+np=$(getv free particles)
 emit phi "$("$ANALYSE" fraction "$count" "$np")" 0
 L=15; [ "$TIER" = quick ] && L=8          # the box's side (the scenes' 15, the quick tier's 8)
 # the constrained eta(k -> 0) by the time integral of C(k,t) (tcaf_k0, tools/lib/exp.sh; issue 37), the

@@ -96,7 +96,7 @@ cp "$OUT/runs/rdf/rdf.tsv" "$OUT/colloid_rdf.tsv"
 printf 'phi\teta_r_original\tse\teta_r_tcaf\tse\teta_r_cube\tse\teta_r_sphere\tse\teta_r_cube_solvent\tse\teta_r_sphere_solvent\tse\n' > "$OUT/eta_r.tsv"
 for pair in $PAIRS; do
     lattice_pair "$pair" 2
-    np=$(get susp_$tag particles | cut -f1)
+    np=$(getv susp_$tag particles)
     "$ANALYSE" phi-row "$tag" "$count" "$np" >> "$OUT/summary.tsv"
     emit_from susp_$tag viscosity eta_susp_$tag
     emit_from susp_$tag temperature temperature_$tag

@@ -31,7 +31,7 @@ for dt in $DTS; do
     if [ "${outcome[$dt]}" = 0 ]; then
         emit_from dt$dt temperature "T_dt$dt"
         emit_from dt$dt viscosity "eta_dt$dt"
-        T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(get dt$dt cpu_seconds | cut -f1)
+        T=$(get dt$dt temperature) eta=$(get dt$dt viscosity) cpu=$(getv dt$dt cpu_seconds)
         printf '%s\t%s\t%s\t%s\n' "$dt" "$T" "$eta" "$cpu" >> "$OUT/dt-scan.tsv"
         # largest dt of the scan whose temperature is within 1 % of kBT = 1 (3 stderr allowed)
         best=$("$ANALYSE" within-1pct-best "$T" $dt $best)

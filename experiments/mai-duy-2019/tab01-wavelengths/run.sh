@@ -69,7 +69,7 @@ fi
 # particle-step (its free run at phi = 0.1854): 22 runs (free and constrained) of 13500 + 6 k^3
 # particles for k = 3 ... 13, 8000 production steps each (the scenes' 40 time units at dt = 0.005)
 if [ "$TIER" = reduced ]; then
-    c=$(get free_phi0.1854 cpu_seconds | cut -f1) np=$(get free_phi0.1854 particles | cut -f1) ns=$(get free_phi0.1854 steps | cut -f1)
+    c=$(getv free_phi0.1854 cpu_seconds) np=$(getv free_phi0.1854 particles) ns=$(getv free_phi0.1854 steps)
     emit paper_tier_projected_cpu_hours "$("$ANALYSE" tab01-projected-cpu-hours "$c" "$np" "$ns")" 0
 fi
 # table beside the paper's columns; TCAF: value +- se, "no crossing" when the free eta(k) never

@@ -39,7 +39,7 @@ analysis() {
 # the analysis
 for pair in $PAIRS; do
     lattice_pair "$pair" 4
-    np=$(get free_$tag particles | cut -f1)
+    np=$(getv free_$tag particles)
     "$ANALYSE" phi-row "$tag" "$count" "$np" >> "$OUT/summary.tsv"
     emit_from free_$tag tcaf_eta_k0 eta_k0_free_$tag
     emit eta_k0_constrained_$tag "$(tcaf_k0 constrained_$tag integral,two-mode "$L")"

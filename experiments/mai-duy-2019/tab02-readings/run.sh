@@ -107,11 +107,11 @@ for A in $AS; do
     for pair in $PAIRS; do
         lattice_pair "$pair" 4
         fr=free_a${A}_$tag cr=constrained_a${A}_$tag
-        [ "$A" = 3.53 ] && "$ANALYSE" phi-row "$tag" "$count" "$(get $fr particles | cut -f1)" >> "$OUT/summary.tsv"
-        rho=$(get $cr tcaf_mass_density | cut -f1)
+        [ "$A" = 3.53 ] && "$ANALYSE" phi-row "$tag" "$count" "$(getv $fr particles)" >> "$OUT/summary.tsv"
+        rho=$(getv $cr tcaf_mass_density)
         # total density: the particles' and the bodies' (each of mass 6 m, the p = 6 constituents',
         # src/bodies/colloid.c default)
-        rho_tot=$("$ANALYSE" rho-total "$rho" "$(get $cr colloids | cut -f1)" "$L")
+        rho_tot=$("$ANALYSE" rho-total "$rho" "$(getv $cr colloids)" "$L")
         # the density factors of readings (d) and (c)'s total density: 4 / rho and rho_tot / rho
         f_s=$("$ANALYSE" quotient 4 "$rho") f_t=$("$ANALYSE" quotient "$rho_tot" "$rho")
         tcaf_fit $fr two-mode,integral "$rho" "$L"; tcaf_fit $cr two-mode,integral "$rho" "$L"
@@ -142,7 +142,7 @@ for A in $AS; do
         # (e): r = eta_c / eta_f (integral), k_eff where eta_free(k) / eta_free(k -> 0) = r, the solvent there
         ratio=$(pm over "$ci" "$fi_")
         put reading_e_ratio_a${A}_$tag "$ratio"
-        c0=$(get $fr tcaf_eta_k0 | cut -f1)
+        c0=$(getv $fr tcaf_eta_k0)
         "$ANALYSE" normalise "$fc" "$c0" > "$OUT/runs/$fr/curve_normalised.tsv"
         ke=$(keff "$OUT/runs/$fr/curve_normalised.tsv" "$ratio")
         put reading_e_k_eff_a${A}_$tag "$ke"
@@ -153,9 +153,9 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 bfc=$OUT/runs/fig02_free_a${A}_$tag/curve.tsv
                 curve "$OUT/runs/fig02_free_a${A}_$tag/tcaf_eta.tsv" "$OUT/runs/freehk_a${A}_$tag/tcaf_eta.tsv" > "$bfc"
-                tcaf_fit fig02_constrained_a${A}_$tag integral,two-mode "$(get fig02_constrained_a${A}_$tag tcaf_mass_density | cut -f1)" "$L"
+                tcaf_fit fig02_constrained_a${A}_$tag integral,two-mode "$(getv fig02_constrained_a${A}_$tag tcaf_mass_density)" "$L"
             fi
-            tcaf_fit $br integral,two-mode "$(get $br tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $br integral,two-mode "$(getv $br tcaf_mass_density)" "$L"
             put reading_b_eta_eff_a${A}_$tag "$(fq $br integral eta_k0)"
             put eta_k0_bodies_two_mode_a${A}_$tag "$(fq $br two-mode eta_k0)"
             # the same trajectory's particle current (quick: this pair's; paper: fig02's)
@@ -164,7 +164,7 @@ for A in $AS; do
             if [ "$TIER" = paper ]; then
                 # fig02's three runs by each estimator, and its free minus constrained by them
                 f2=fig02_free_a${A}_$tag c2r=fig02_constrained_a${A}_$tag
-                tcaf_fit $f2 integral "$(get $f2 tcaf_mass_density | cut -f1)" "$L"   # (c2r's fits: above)
+                tcaf_fit $f2 integral "$(getv $f2 tcaf_mass_density)" "$L"   # (c2r's fits: above)
                 put fig02_eta_k0_free_exp_a${A}_$tag "$(get $f2 tcaf_eta_k0)"
                 put fig02_eta_k0_free_integral_a${A}_$tag "$(fq $f2 integral eta_k0)"
                 put fig02_eta_k0_constrained_exp_a${A}_$tag "$(get $c2r tcaf_eta_k0)"
@@ -219,7 +219,7 @@ for kind in propagated bound; do
         lattice_pair "$pair" 4
         for sys in free constrained; do
             r=${sys}_a3.53_$tag
-            tcaf_fit $r exp "$(get $r tcaf_mass_density | cut -f1)" "$L"
+            tcaf_fit $r exp "$(getv $r tcaf_mass_density)" "$L"
             "$ANALYSE" log-ratios $col "$OUT/runs/$r/tcaf_eta.tsv" "$OUT/runs/$r/tcaf_fit_exp.tsv"
         done
     done | "$ANALYSE" geometric-mean "exp_se_${kind}_over_blocks_a3.53" $kind >> "$OUT/summary.tsv"
@@ -244,7 +244,7 @@ fi
 # the constrained C(k,t) of the smallest k at phi = 0.4940, a = 3.53, with its two-mode fit
 lattice_pair "${PAIRS##* }" 4
 cr=constrained_a3.53_$tag
-"$DPD" tcaf-fit "$OUT/runs/$cr/tcaf.tsv" --rho "$(get $cr tcaf_mass_density | cut -f1)" --box "$L" --model two-mode \
+"$DPD" tcaf-fit "$OUT/runs/$cr/tcaf.tsv" --rho "$(getv $cr tcaf_mass_density)" --box "$L" --model two-mode \
     --curves "$OUT/runs/$cr/tcaf_fit_two-mode_curves.tsv" > /dev/null
 paste <(grep -v '^#' "$OUT/runs/$cr/tcaf.tsv" | cut -f1-3) <(grep -v '^#' "$OUT/runs/$cr/tcaf_fit_two-mode_curves.tsv" | cut -f2) \
     <(grep -v '^#' "$OUT/runs/free_a3.53_$tag/tcaf.tsv" | cut -f2-3) |

@@ -22,12 +22,12 @@ OLD=$(tsv_lookup "$DPD_ROOT/bench/speedup.tsv" rotation-generic pan-estimators |
 prod_time() {
     local a=$OUT/runs/$1/.args sc
     sc=$(head -1 "$a" | sed -E "s#^/([^/]+/)*experiments/#$DPD_ROOT/experiments/#"); case $sc in /*) ;; *) sc=$HERE/$sc ;; esac
-    "$ANALYSE" prod-time "$(get "$1" steps | cut -f1)" "$a" "$sc"
+    "$ANALYSE" prod-time "$(getv "$1" steps)" "$a" "$sc"
 }
 # column_mean_se FILE COLUMN -> "mean<TAB>stderr" over the rows after the header (blocks)
 column_mean_se() { "$ANALYSE" column-mean "$1" $2; }
 # cpu_h NAME -> the run's CPU hours (this binary)
-cpu_h() { "$ANALYSE" quotient6 "$(get "$1" cpu_seconds | cut -f1)" 3600; }
+cpu_h() { "$ANALYSE" quotient6 "$(getv "$1" cpu_seconds)" 3600; }
 
 # ------------------------------------------------------------------ 1. the precision each claim needs
 DPD_ROOT=$DPD_ROOT "$HERE/precision.sh" "$HERE/claim-runs.tsv" > "$OUT/precision.tsv"
@@ -237,7 +237,7 @@ read -r v se < <("$ANALYSE" half-pair "$(sget "$T01" cv_noise_total)")
 est_row "fig01 torque" "Green-Kubo (Einstein form): total torque's variance x time / 2 kBT" "10^3, seven spheres at rest, 3 components, $(ls -d "$T01"/runs/cv* | wc -l) x 10 t.u. (tab01 cv runs)" \
     $v $se $(cat "$T01"/runs/cv*/summary.tsv | rcpu /dev/stdin $OLD) \
     "friction over eq. 18: $("$ANALYSE" fmt "%.3f +- %.3f" "$(get . gk_rotational_friction_over_eq18)") (driven, Omega = -0.4: $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$F01" torque_ratio_gS5.5)"))" no
-vr=$(get . twin_rot_variance_ratio_0.25_0.5 | cut -f1)
+vr=$(getv . twin_rot_variance_ratio_0.25_0.5)
 plain_r=$("$ANALYSE" ladder-cols "$OUT/ladder.tsv" ${ws[0]} 6)   # noise x time, Omega-independent
 echo "fig01 torque	twins: driven minus undriven over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's (2 branches of 0.5 t.u., no equilibration counted); response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_rot_bias_0.25_0.5)"): bias unresolved at 8 %	no"
 # B. the drag of a fixed sphere (Figs 1-2's colloid, gamma^C_cf = 3.5) in the 10^3 box
@@ -250,7 +250,7 @@ if [ -n "$(zrow 10 0.3)" ]; then
     est_row "fig02 drag (u at F_ext)" "Green-Kubo (Einstein form): total force's variance x time / 2 kBT" "10^3, u = 0.3 held (this experiment)" \
         $("$ANALYSE" with-variance-se "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)" 49) $(rcpu "$OUT/runs/hold_L10_u0.3/summary.tsv") \
         "zeta from it $("$ANALYSE" fmt %.1f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 15)") against the driven $("$ANALYSE" fmt %.2f "$("$ANALYSE" hold-cols "$OUT/hold.tsv" 10 0.3 3)"): the held momentum changes the ensemble" no
-    vr=$(get . twin_drag_variance_ratio_0.25_0.5 | cut -f1)
+    vr=$(getv . twin_drag_variance_ratio_0.25_0.5)
     echo "fig02 drag (u at F_ext)	twins: sphere moving at 0.3 minus at rest over [0.25, 0.5] t.u. after the branch	10^3, $(echo $SEEDS | wc -w) pairs (this experiment)	-	-	-	-	-	variance x simulated time $(printf '%.3g' $vr) of the plain average's; response over steady $("$ANALYSE" fmt "%+.3f +- %.3f" "$(get . twin_drag_bias_0.25_0.5)") (Basset's transient R / sqrt(pi nu t) is +23 % at 0.375 t.u. in a continuum)	no"
 fi
 # C. Table 3's torque, l = 1, 30^3: the plain average at u = 0.3 and the same noise at a stronger drive

@@ -40,14 +40,16 @@ while IFS=$'\t' read -r d f; do run_factor_of[$d]=$f; done < <(
         for d in "$root/results/$exp/$tier/runs"/*/; do [ -s "$d.args" ] && printf '%s\t%s\n' "$exp" "${d%/}"; done
     done | "$root/tools/cost" run-factors)
 
-# run_cost DIR EXP -> "prod_cpu_s<TAB>eq_cpu_s<TAB>prod_time_units" of one committed run, its CPU on
-# this build's scale (its factor, above); equilibration and dt from its arguments, else its scene
-run_cost() {
-    local dir=$1 exp=$2 fac
+# run_cost_args DIR EXP: appends to cost_args the arguments of `analyse run-costs-sum` for one
+# committed run (prod_cpu_s, eq_cpu_s and prod_time_units, summed over a group's runs in one call):
+# its CPU on this build's scale (its factor, above); equilibration and dt from its arguments, else
+# its scene
+run_cost_args() {
+    local dir=$1 exp=$2 fac a
     mapfile -t a < "$dir/.args"
     fac=${run_factor_of[$dir]:-}
     [ -n "$fac" ] || fac=$("$root/tools/cost" run-factor "$exp" "$dir")
-    "$ANALYSE" run-cost "$root/experiments/$exp/${a[0]}" "$dir/summary.tsv" "$fac" "${a[@]:1}"
+    cost_args+=($(( ${#a[@]} - 1 )) "$root/experiments/$exp/${a[0]}" "$dir/summary.tsv" "$fac" "${a[@]:1}")
 }
 
 out=$(mktemp); trap 'rm -f "$out"' EXIT
@@ -67,7 +69,6 @@ while IFS= read -r line; do
     IFS=';' read -ra gs <<< "$groups"
     for g in "${gs[@]}"; do
         runs=${g%%|*} relq=${g#*|}; [ "$relq" = "$g" ] && relq=-
-        pc=0 ec=0 tu=0
         # the group's runs: names, each a committed run, or shell patterns (row1r*: the replicas
         # committed, maybe none); a group of no run is refused
         names=""
@@ -80,11 +81,11 @@ while IFS= read -r line; do
             esac
         done
         [ -n "${names// /}" ] || { echo "precision.sh: $exp $q: no committed run matches $runs in $res/runs" >&2; exit 1; }
-        for r in $names; do
-            read -r p e t < <(run_cost "$res/runs/$r" "$exp")
-            pc=$("$ANALYSE" plus $pc $p); ec=$("$ANALYSE" plus $ec $e)
-            tu=$("$ANALYSE" plus $tu $t)
-        done
+        cost_args=()
+        for r in $names; do run_cost_args "$res/runs/$r" "$exp"; done
+        pc= ec= tu=
+        read -r pc ec tu < <("$ANALYSE" run-costs-sum "${cost_args[@]}") || true
+        [ -n "$tu" ] || { echo "precision.sh: $exp $q: no cost of the runs $names" >&2; exit 1; }
         # the group's share of the claim's error: the whole se, or the relative error of one summary quantity
         rel=-; [ "$relq" != - ] && rel=$("$ANALYSE" rel-error-of "$res/summary.tsv" "$relq")
         parts="$parts $pc:$ec:$tu:$rel:$(echo $names | wc -w)"

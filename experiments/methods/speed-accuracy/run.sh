@@ -68,7 +68,7 @@ ladder_analysis() {
             printf '%s\t%s\t%s\tnan\tnan\tnan\tnan\tnan\tnan\n' $fluid $l $dt >> "$OUT/ladder-dt.tsv"
             continue
         fi
-        T=$(get $name temperature) cpu=$(get $name cpu_seconds | cut -f1) np=$(get $name particles | cut -f1)
+        T=$(get $name temperature) cpu=$(getv $name cpu_seconds) np=$(getv $name particles)
         Tr=$(get $name rotational_temperature 2>/dev/null || printf 'nan\tnan')
         emit_from $name temperature T_${name}
         [ "${Tr%%	*}" = nan ] || emit_from $name rotational_temperature T_rot_${name}
@@ -104,8 +104,8 @@ for solver in pcg scheme2_consistent; do
         emit eta_${name} $eta $etase
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' $solver $tol $eta $etase \
             "$("$ANALYSE" rel-error $eta $etase $eta_ref $eta_ref_se)" \
-            "$(get $name solver_iterations | cut -f1)" "$(get $name solver_cpu_seconds_per_step | cut -f1)" \
-            "$(get $name solver_true_rel_error | cut -f1)" >> "$OUT/ladder-tolerance.tsv"
+            "$(getv $name solver_iterations)" "$(getv $name solver_cpu_seconds_per_step)" \
+            "$(getv $name solver_true_rel_error)" >> "$OUT/ladder-tolerance.tsv"
     done
 done
 emit eta_fig03_paper_tier $eta_ref $eta_ref_se

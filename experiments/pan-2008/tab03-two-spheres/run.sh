@@ -182,7 +182,7 @@ if [ "$TIER" = reduced ]; then
     emit projection_linear_response "$lin" 0
     for r in $ROWS; do
         up=$U; [ "$lin" = 1 ] && { [ $r = 3 ] && up=1.2 || up=0.6; }
-        "$ANALYSE" torque-projection $r $up $U "$(get . torque_noise_row$r)" "$(get . torque_theory_row$r | cut -f1)" \
+        "$ANALYSE" torque-projection $r $up $U "$(get . torque_noise_row$r)" "$(getv . torque_theory_row$r)" \
             "$(get row$r cpu_seconds)" "$(get row$r steps)" >> "$OUT/summary.tsv"
     done
 fi

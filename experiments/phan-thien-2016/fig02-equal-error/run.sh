@@ -31,7 +31,7 @@ printf 'solver\ttolerance\titerations\titerations_se\ttrue_error\tcpu_seconds\tc
 for solver in $solvers; do
     for tol in ${ladder[$solver]}; do
         name=${solver}_$tol
-        printf '%s\t%s\t%s\t%s\t%s\n' $solver $tol "$(get $name solver_iterations)" "$(get $name solver_true_rel_error | cut -f1)" \
+        printf '%s\t%s\t%s\t%s\t%s\n' $solver $tol "$(get $name solver_iterations)" "$(getv $name solver_true_rel_error)" \
             "$(get $name solver_cpu_seconds_per_step)" >> "$OUT/ladder.tsv"
     done
 done

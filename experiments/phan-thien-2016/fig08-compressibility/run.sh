@@ -32,7 +32,7 @@ for m in 0 1; do
         rows=""
         for k in $seeds; do
             name="m${m}_P${P}_s$k"
-            rows+="$("$ANALYSE" density-fields "$OUT/runs/$name/density_map.tsv" 6 3 3 1 4)"$'\t'"$(get "$name" mean_velocity_fluid_x | cut -f1)"$'\n'
+            rows+="$("$ANALYSE" density-fields "$OUT/runs/$name/density_map.tsv" 6 3 3 1 4)"$'\t'"$(getv "$name" mean_velocity_fluid_x)"$'\n'
         done
         # mean and standard error over the seeds
         printf '%s' "$rows" | "$ANALYSE" fields-mean-row "$P" "$m" >> "$OUT/fields.tsv"

@@ -46,7 +46,7 @@ for m in $masses; do
     dt=$(mdt $m)
     analyse m$m m$m
     printf '%s\t%s\t%s\t%s\n' $m $dt "$("$ANALYSE" lookup "$OUT/summary.tsv" shear_rate_m$m)" \
-        "$(get m$m temperature | cut -f1)" >> "$OUT/m-limit.tsv"
+        "$(getv m$m temperature)" >> "$OUT/m-limit.tsv"
 done
 mmin=${masses##* }
 "$ANALYSE" summary-diff "$OUT/summary.tsv" shear_rate_m$mmin shear_rate_m0 shear_rate_m_smallest_minus_m0 > "$OUT/.rows"

@@ -13,7 +13,7 @@ case $TIER in
     paper) tier=(); seeds=(1 2 3 5 6 7 8 9) ;;
 esac
 # amp NAME AXIS: largest |value| of the run's centre-of-mass velocity (v) or position
-amp() { local lo hi; lo=$(get "$1" "com_${2}_min" | cut -f1); hi=$(get "$1" "com_${2}_max" | cut -f1)
+amp() { local lo hi; lo=$(getv "$1" "com_${2}_min"); hi=$(getv "$1" "com_${2}_max")
         "$ANALYSE" abs-max "$lo" "$hi" | tr -d '\n'; }
 # emit_list AS VALUES...: mean and standard error over independent runs
 emit_list() { local q=$1; shift
