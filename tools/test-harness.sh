@@ -1016,6 +1016,20 @@ T "run-experiment: an unstable simulation is an outcome" 0 RX FAKE_EXIT_bad=3 "$
 if [ "$(sort "$log" | tr '\n' ' ')" = "bad resume=1 ok resume=1 " ]; then ok "run-experiment: the unstable simulation ran once"
 else bad "run-experiment: with an unstable simulation ran: $(tr '\n' ' ' < "$log")"; fi
 in_file "run-experiment: its status reaches the analysis" "$rx/results/t/u/quick/summary.tsv" '^bad_status	3	0$'
+# an analysis that emits an empty value (a computation in $(...) that failed, whose status an
+# argument loses) fails the experiment, naming the quantity; no result is written
+mkdir -p "$rx/experiments/t/v"
+cat > "$rx/experiments/t/v/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+simulations() { dpd_run ok s.cfg --set x=1; }
+analysis() { emit fine 1 0; emit lost "$(false)"; }
+experiment
+EOF2
+chmod +x "$rx/experiments/t/v/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/v/"
+T "run-experiment: an empty value emitted fails the experiment" 1 RX "$rx/tools/run-experiment" t/v quick
+has "run-experiment: the empty value named" "emit lost: no value"
+[ ! -e "$rx/results/t/v/quick" ] && ok "run-experiment: no result with an empty value" || bad "run-experiment: a result with an empty value" "$rx/results/t/v/quick/summary.tsv"
 # a failure that persists (exit 4, I/O) is retried DPD_MAX_FAILURES times, then fails the experiment
 rm -rf "$rx/results/t/e/.quick.partial"; : > "$log"
 T "run-experiment: a persistent I/O failure fails the experiment" 1 RX FAKE_EXIT_b=4 "$rx/tools/run-experiment" t/e quick

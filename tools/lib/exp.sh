@@ -383,6 +383,9 @@ tcaf_k0_of() {
 # emit QUANTITY VALUE STDERR, or emit QUANTITY "VALUE<TAB>STDERR" (as get and tcaf_k0 give it): a row
 # of the experiment summary.
 emit() {
+    # an empty value is a computation that failed inside $(...) (whose status an argument loses):
+    # an error, not a row that a later reading takes for a result
+    [ -n "${2%%$'\t'*}" ] || { echo "exp.sh: emit $1: no value (did the computation that gives it fail?)" >&2; return 1; }
     if [ $# -eq 2 ]; then printf '%s\t%s\n' "$1" "$2" >> "$OUT/summary.tsv"
     else printf '%s\t%s\t%s\n' "$1" "$2" "$3" >> "$OUT/summary.tsv"; fi
 }
