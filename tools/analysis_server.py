@@ -104,17 +104,26 @@ def _child(conn, cwd, argv, fds):
     for i, fd in enumerate(fds):
         os.dup2(fd, i)
         os.close(fd)
+    _answer(conn, _run_in(cwd, argv))
+    os._exit(0)
+
+
+def _run_in(cwd, argv):
+    """_run in the caller's working directory (one that cannot be entered: status 1, said)."""
     try:
         os.chdir(cwd)
-        code = _run(argv)
+        return _run(argv)
     except OSError as e:
         sys.stderr.write('analyse: %s: %s\n' % (cwd, e))
-        code = 1
+        return 1
+
+
+def _answer(conn, code):
+    """The call's status to the client (gone: nothing to tell)."""
     try:
         conn.sendall(struct.pack('<I', code))
     except OSError:
         pass
-    os._exit(0)
 
 
 # the encodings and error handlers of the server's own streams (a fork writes through them)
@@ -164,12 +173,7 @@ def _serve_inline(sock, conn, cwd, argv, fds):
     try:
         stdin = open(fds[0], 'r', closefd=False, encoding=sys.stdin.encoding, errors=sys.stdin.errors)
         sys.stdin, sys.stdout, sys.stderr = stdin, out, err
-        try:
-            os.chdir(cwd)
-            code = _run(argv)
-        except OSError as e:
-            sys.stderr.write('analyse: %s: %s\n' % (cwd, e))
-            code = 1
+        code = _run_in(cwd, argv)
     finally:
         sys.stdin, sys.stdout, sys.stderr = saved
         if stdin is not None:
@@ -202,10 +206,7 @@ def _finish(conn, fds, data, code):
             _write_all(fd, d)
         except OSError:
             code = 120
-    try:
-        conn.sendall(struct.pack('<I', code))
-    except OSError:
-        pass
+    _answer(conn, code)
 
 
 def _close(conn, fds):
