@@ -274,7 +274,10 @@ def serve(path, watch):
                 conn.close()   # the client sees no status and says so
                 continue
             if _inline(fds):
-                _serve_inline(sock, conn, cwd, argv, fds)
+                try:
+                    _serve_inline(sock, conn, cwd, argv, fds)
+                except Exception:   # (not the server's end: the client sees no status and says so)
+                    _close(conn, fds)
                 continue
             try:
                 pid = os.fork()
