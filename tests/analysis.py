@@ -605,7 +605,7 @@ runs = [(tsv('rc.cfg', 'dt = 0.01;\nequilibration = 1000; # x\n'), tsv('rcs.tsv'
         (tsv('rc3.cfg', 'dt = 0.0033;\nequilibration = 1;\n'), rc2, '1', ['--set', 'dt=0.007'])]
 fold = ['0', '0', '0']
 for sc, sm, fac, args in runs:
-    fold = [A.COMMANDS['plus']([x, y])[0] for x, y in zip(fold, A.COMMANDS['run-cost']([sc, sm, fac] + args)[0].split('\t'))]
+    fold = [A.COMMANDS['plus']([x, y])[0] for x, y in zip(fold, A.run_cost(sc, sm, fac, args).split('\t'))]
 flat = [x for sc, sm, fac, args in runs for x in [str(len(args)), sc, sm, fac] + args]
 same('run-costs-sum: run-cost summed by plus, run by run', A.COMMANDS['run-costs-sum'](flat), [' '.join(fold)])
 same('run-costs-sum: one run', A.COMMANDS['run-costs-sum'](flat[:6]), ['80 120 20'])

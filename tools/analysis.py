@@ -2903,8 +2903,6 @@ PE_COMMANDS = {
     # with-variance-se X DOF -> x and its stderr as a variance from DOF + 1 blocks, x sqrt(2 / DOF), as awk prints it
     'with-variance-se': lambda a: [a[0] + ' ' + astr(num(a[0]) * sqrt(2 / num(a[1])))],
     'drive-projection': lambda a: [drive_projection(*a[:4])],
-    # run-cost SCENE SUMMARY FACTOR ARG...
-    'run-cost': lambda a: [run_cost(a[0], a[1], a[2], a[3:])],
     # run-costs-sum [N SCENE SUMMARY FACTOR ARG1..ARGN]...: run-cost's columns summed over the runs
     'run-costs-sum': lambda a: [run_costs_sum(a)],
     'paper-band': lambda a: (lambda b: [b] if b is not None else [])(paper_band(a[0], a[1])),
