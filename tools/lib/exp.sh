@@ -5,15 +5,15 @@ set -euo pipefail
 # the analysis layer (tools/analysis.py, issue 40): every statistic, formula and derived simulation
 # argument of the experiments; "$ANALYSE" SUBCOMMAND ARGS... writes TSV rows
 ANALYSE=$DPD_ROOT/tools/analyse
-# analyse_serve: from here on "$ANALYSE" runs in a fork of one analysis server
-# (tools/analysis_server.py), through the static build/analyse-client, instead of a python of its
-# own per call (about 60 ms of CPU each on the CI machines; an analysis makes hundreds). The same
-# tables: a call runs in the server itself when nothing of it can wait on another call (no pipe on
-# its stdin; analysis.py keeps no state between calls), else in a fork of the server as it was
-# after importing analysis.py, on the caller's own descriptors. The server starts at the first call (an analysis that makes none pays
-# nothing), from whichever subshell makes it, on a socket fixed here, and ends when this shell
-# does. Nothing changes when the client is not built, the server does not start, or
-# DPD_ANALYSE_SERVER=0: a call the client cannot hand over runs tools/analyse itself.
+# analyse_serve: from here on "$ANALYSE" runs in one analysis server (tools/analysis_server.py),
+# through the static build/analyse-client, instead of a python of its own per call (about 60 ms of
+# CPU each on the CI machines; an analysis makes hundreds). The same tables: a call runs in the
+# server itself when nothing of it can wait on another call (no pipe on its stdin; analysis.py
+# keeps no state between calls), else in a fork of the server as it was after importing
+# analysis.py, on the caller's own descriptors. The server starts at the first call (an analysis
+# that makes none pays nothing), from whichever subshell makes it, on a socket fixed here, and ends
+# when this shell does. Nothing changes when the client is not built, the server does not start,
+# or DPD_ANALYSE_SERVER=0: a call the client cannot hand over runs tools/analyse itself.
 analyse_serve() {
     [ "${DPD_ANALYSE_SERVER:-1}" = 1 ] && [ -x "$DPD_ROOT/build/analyse-client" ] || return 0
     _analyse_dir=${TMPDIR:-/tmp}/dpd-analyse.$$.$RANDOM$RANDOM
@@ -385,7 +385,8 @@ tcaf_k0_of() {
 emit() {
     # an empty value is a computation that failed inside $(...) (whose status an argument loses):
     # an error, not a row that a later reading takes for a result
-    [ -n "${2%%$'\t'*}" ] || { echo "exp.sh: emit $1: no value (did the computation that gives it fail?)" >&2; return 1; }
+    local v=${2:-}
+    [ -n "${v%%$'\t'*}" ] || { echo "exp.sh: emit $1: no value (did the computation that gives it fail?)" >&2; return 1; }
     if [ $# -eq 2 ]; then printf '%s\t%s\n' "$1" "$2" >> "$OUT/summary.tsv"
     else printf '%s\t%s\t%s\n' "$1" "$2" "$3" >> "$OUT/summary.tsv"; fi
 }
