@@ -1030,6 +1030,31 @@ chmod +x "$rx/experiments/t/v/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/exper
 T "run-experiment: an empty value emitted fails the experiment" 1 RX "$rx/tools/run-experiment" t/v quick
 has "run-experiment: the empty value named" "emit lost: no value"
 [ ! -e "$rx/results/t/v/quick" ] && ok "run-experiment: no result with an empty value" || bad "run-experiment: a result with an empty value" "$rx/results/t/v/quick/summary.tsv"
+# tsv_lookup and get read a row alike (one parser): an empty field stays a field, a row with the
+# quantity's name as a prefix is not the quantity's, a missing row is an error naming the file
+mkdir -p "$rx/experiments/t/w"
+cat > "$rx/experiments/t/w/run.sh" <<'EOF2'
+#!/usr/bin/env bash
+. "$DPD_ROOT/tools/lib/exp.sh"
+simulations() { dpd_run ok s.cfg --set x=1; }
+analysis() {
+    printf 'q_long\t9\t9\nq\t\t0.5\textra\nr\t2\n' > "$OUT/t.tsv"
+    cp "$OUT/t.tsv" "$OUT/runs/ok/summary.tsv"
+    local l g w m
+    l=$(tsv_lookup "$OUT/t.tsv" q); g=$(get ok q); w=$(getv ok r)
+    m=$(tsv_lookup "$OUT/t.tsv" nope who 2>&1) || true
+    [ "$l" = $'\t0.5' ] && emit lookup_empty_field 1 0 || emit lookup_empty_field 0 0
+    [ "$g" = "$l" ] && emit get_as_lookup 1 0 || emit get_as_lookup 0 0
+    [ "$w" = 2 ] && [ "$(tsv_lookup "$OUT/t.tsv" r)" = $'2\t' ] && emit short_row 1 0 || emit short_row 0 0
+    [ "$m" = "who: no nope in $OUT/t.tsv" ] && emit missing_named 1 0 || emit missing_named 0 0
+}
+experiment
+EOF2
+chmod +x "$rx/experiments/t/w/run.sh"; cp "$rx/experiments/t/e/s.cfg" "$rx/experiments/t/w/"
+T "run-experiment: tsv_lookup and get read one table" 0 RX "$rx/tools/run-experiment" t/w quick
+for q in lookup_empty_field get_as_lookup short_row missing_named; do
+    in_file "tsv_lookup / get: $q" "$rx/results/t/w/quick/summary.tsv" "^$q	1	0$"
+done
 # a failure that persists (exit 4, I/O) is retried DPD_MAX_FAILURES times, then fails the experiment
 rm -rf "$rx/results/t/e/.quick.partial"; : > "$log"
 T "run-experiment: a persistent I/O failure fails the experiment" 1 RX FAKE_EXIT_b=4 "$rx/tools/run-experiment" t/e quick

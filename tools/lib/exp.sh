@@ -37,12 +37,26 @@ _analyse_start() {
 # tsv_lookup FILE Q [WHO] -> "value<TAB>stderr" of the first row named Q, exit 1 (saying so as WHO)
 # if none: selection only, in bash without a process, for the lookups an analysis makes in its loops
 tsv_lookup() {
-    local k v s _
-    while IFS=$'\t' read -r k v s _ || [ -n "$k" ]; do
-        [ "$k" = "$2" ] && { printf '%s\t%s\n' "$v" "$s"; return 0; }
-        k=
-    done < "$1"
+    _tsv_row "$1" "$2" && { printf '%s\n' "$_got"; return 0; }
     [ -z "${3:-}" ] || echo "$3: no $2 in $1" >&2
+    return 1
+}
+# _tsv_row FILE Q: the first row of FILE whose first tab-separated field is Q, its second and third
+# fields into _got_v and _got_se (each empty when absent; an empty field stays a field) and
+# "value<TAB>stderr" into _got; exit 1 if no row is named Q. Read in the shell, no process: the one
+# parser of get, getv, the copying helpers and tsv_lookup.
+_tsv_row() {
+    local line rest
+    _got= _got_v= _got_se=
+    [ -f "$1" ] || return 1
+    while IFS= read -r line || [ -n "$line" ]; do
+        [[ $line == "$2" || $line == "$2"$'\t'* ]] || continue
+        rest=; [[ $line == *$'\t'* ]] && rest=${line#*$'\t'}
+        _got_v=${rest%%$'\t'*}
+        [[ $rest == *$'\t'* ]] && { rest=${rest#*$'\t'}; _got_se=${rest%%$'\t'*}; }
+        _got=$_got_v$'\t'$_got_se
+        return 0
+    done < "$1"
     return 1
 }
 mkdir -p "$OUT/runs"
@@ -317,21 +331,10 @@ get() { _get "$1" "$2" && printf '%s\n' "$_got"; }
 # getv NAME QUANTITY -> the value alone: `get NAME QUANTITY | cut -f1` without its two processes
 getv() { _get "$1" "$2" && printf '%s\n' "$_got_v"; }
 # _get NAME QUANTITY: the same into _got ("value<TAB>stderr", empty when missing), _got_v and
-# _got_se, read in the shell (no process: the helpers below call it for every quantity they copy).
-# The first row whose first field is QUANTITY; its second and third tab-separated fields.
+# _got_se (_tsv_row on the run's summary.tsv)
 _get() {
-    local f=$OUT/runs/$1/summary.tsv line rest; [ "$1" = . ] && f=$OUT/summary.tsv
-    _got= _got_v= _got_se=
-    if [ -f "$f" ]; then
-        while IFS= read -r line || [ -n "$line" ]; do
-            [[ $line == "$2" || $line == "$2"$'\t'* ]] || continue
-            rest=; [[ $line == *$'\t'* ]] && rest=${line#*$'\t'}
-            _got_v=${rest%%$'\t'*}
-            [[ $rest == *$'\t'* ]] && { rest=${rest#*$'\t'}; _got_se=${rest%%$'\t'*}; }
-            _got=$_got_v$'\t'$_got_se
-            return 0
-        done < "$f"
-    fi
+    local f=$OUT/runs/$1/summary.tsv; [ "$1" = . ] && f=$OUT/summary.tsv
+    _tsv_row "$f" "$2" && return 0
     echo "exp.sh: quantity '$2' missing in run '$1'" >&2
     return 1
 }
