@@ -17,7 +17,10 @@ case $TIER in
     # the three boxes six times the reduced tier's time, as independent replicas (8, 4, 4 of 9000, 4500,
     # 3000 time units), so that each box's error comes from the replicas' scatter, not from a few
     # colloids' groups (the reduced fit's chi^2/dof 3.6)
-    paper) tier=(--set steps=200000); BOX_STEPS="900000 450000 300000"; BOX_REPS="8 4 4" ;;
+    # The slope extension (2026-12-06, README, fixed before any of it ran): the slope over Yeh-Hummer
+    # came out 0.83 +- 0.10, UNRESOLVED; replicas of the same lengths at L = 6 and 12 (the line's ends,
+    # in the ratio of their variance per CPU second) bring it to about 0.032: 64 and 68 replicas
+    paper) tier=(--set steps=200000); BOX_STEPS="900000 450000 300000"; BOX_REPS="64 4 68" ;;
 esac
 BOX_REPS=${BOX_REPS:-"1 1 1"}
 # box_runs L: the runs of box L (one, or the replicas box_L<L>_r<k>)
