@@ -15,6 +15,7 @@
 #include "integrator.h"
 #include "overdamped.h"
 #include "simd.h"
+#include "pair_walk.h"
 
 #define SKIN 0.3
 
@@ -741,15 +742,18 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
         s.ntypes = 2;
         snprintf(s.types[1].name, sizeof s.types[1].name, "u");
         s.types[1].mass = 1.0; s.types[1].body_force_flip_axis = -1;
-        system_set_pair(&s, 0, 1, (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .s = 0.42, .rc = 0.9});
-        system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
+        const PairParams same = s.pair[0][0];
+        system_set_pair(&s, 0, 1, two_types == 3 ? same : (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .s = 0.42, .rc = 0.9});
+        system_set_pair(&s, 1, 1, two_types == 3 ? same : (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .s = 1.0, .rc = 1.0});
     }
     uint64_t st = 7;
     /* two types: every fourth particle of type 1 (most walk batches mix the
      * types), or (two_types = 2) type 1 frozen on a slab x < 1.5, so that most
-     * batches are of one type, some of the frozen one */
-    for (int i = 0; i < s.n; i++) s.type[i] = two_types == 2 ? s.x[3 * i] < 1.5 : two_types && i % 4 == 0;
-    if (two_types == 2) s.types[1].frozen = 1;
+     * batches are of one type, some of the frozen one; or (3) that slab with
+     * type 0's parameters, so that the batches that mix the types, frozen
+     * particles with the others, go to the AVX-512 evaluator too */
+    for (int i = 0; i < s.n; i++) s.type[i] = two_types >= 2 ? s.x[3 * i] < 1.5 : two_types && i % 4 == 0;
+    if (two_types >= 2) s.types[1].frozen = 1;
     for (int i = 0; i < 300; i++)   /* the cluster: 300 particles in a ball of radius 0.4 at a corner */
         for (int d = 0; d < 3; d++) s.x[3 * i + d] = fmod(L[d] - 0.2 + 0.4 * tu_uniform(&st), L[d]);
     for (int d = 0; d < 3; d++) s.x[3 * 400 + d] = s.x[3 * 401 + d];   /* coincident */
@@ -791,7 +795,7 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
         CHECK_TRUE(memcmp(f0, s.f, 3 * (size_t)s.n * sizeof(double)) == 0 && memcmp(&pv, &pvl, sizeof pv) == 0,
                    "forces or virial of a measurement step at level %d differ from the portable pass's bits", level);
     }
-    CHECK_TRUE(two_types != 2 || pv.frozen_force[1][0] != 0.0, "no force on the frozen type");
+    CHECK_TRUE(two_types < 2 || pv.frozen_force[1][0] != 0.0, "no force on the frozen type");
     simd_cap(best);
     free(f0);
     forces_free(&fw);
@@ -800,7 +804,9 @@ static void same_forces_at_levels(int two_types, double sexp, double rc)
 }
 
 /* ... for two types (the scalar evaluator at every level; with the second
- * type on a slab, the AVX-512 evaluator on the batches of one type), and for one type
+ * type on a slab, the AVX-512 evaluator on the batches of one type; with the
+ * slab frozen and of the first type's parameters, on the batches that mix
+ * them too), and for one type
  * with each case of w_R and rc = 1 and 1.5 (one type: the AVX-512 evaluator,
  * pair_avx512.c, and its two forms of r / rc) */
 static void levels_same_forces(void **state)
@@ -808,9 +814,51 @@ static void levels_same_forces(void **state)
     (void)state;
     same_forces_at_levels(1, 2.0, 1.0);
     same_forces_at_levels(2, 0.42, 1.0);
+    same_forces_at_levels(3, 0.5, 1.0);
     const double sexp[] = {2.0, 1.0, 0.5, 0.42};
     for (int k = 0; k < 4; k++) same_forces_at_levels(0, sexp[k], 1.0);   /* r / rc as a product */
     same_forces_at_levels(0, 0.42, 1.5);                                   /* r / rc divided */
+}
+
+/* The walk's batch classifier (pair_walk.h batch_one_type) and the classes
+ * system_set_pair derives: three types, the pairs (0, 0), (0, 1) and (1, 1)
+ * of one set of parameters and type 2's pairs of others. A batch mixing
+ * types 0 and 1 goes to the one-type kernels with those parameters; one
+ * with a type-2 partner does not; a pair set apart later (a bit of its
+ * gamma) splits the class; a batch without pairs takes its first particle's
+ * own type pair. */
+static void mixed_batches_of_one_parameter_set(void **state)
+{
+    (void)state;
+    System s;
+    memset(&s, 0, sizeof s);
+    s.kBT = 1.0;
+    s.ntypes = 3;
+    const PairParams fluid = {.active = 1, .a = 25.0, .gamma = 4.5, .gamma_shear = 4.5, .s = 0.5, .rc = 1.0};
+    for (int a = 0; a < 2; a++)
+        for (int b = a; b < 2; b++) system_set_pair(&s, a, b, fluid);
+    for (int a = 0; a < 3; a++) system_set_pair(&s, a, 2, (PairParams){.active = 1, .a = 25.0, .gamma = 3.5, .gamma_shear = 5.5, .s = 0.5, .rc = 1.0});
+    assert_int_equal(system_alloc(&s, 6), 0);
+    const uint8_t types[6] = {0, 1, 1, 0, 2, 0};
+    memcpy(s.type, types, sizeof types);
+    const int count[2] = {2, 1};
+    const int near_same[3] = {1, 3, 2}, near_other[3] = {1, 4, 2};
+    const PairParams *u = batch_one_type(&s, 0, 2, near_same, count);
+    CHECK_TRUE(u != NULL && u->gamma == 4.5 && u->gamma_shear == 4.5,
+               "a batch of types 0 and 1 (one parameter set) does not go to the one-type kernel");
+    CHECK_TRUE(batch_one_type(&s, 0, 2, near_other, count) == NULL, "a batch with a type-2 partner goes to the one-type kernel");
+    CHECK_TRUE(s.pair_class[0][1] == s.pair_class[0][0] && s.pair_class[1][1] == s.pair_class[0][0]
+               && s.pair_class[0][2] != s.pair_class[0][0] && s.pair_class[2][2] == s.pair_class[0][2],
+               "pair classes (0,0) %d (0,1) %d (1,1) %d (0,2) %d (2,2) %d", s.pair_class[0][0], s.pair_class[0][1],
+               s.pair_class[1][1], s.pair_class[0][2], s.pair_class[2][2]);
+    PairParams apart = fluid;
+    apart.gamma = nextafter(apart.gamma, 5.0);
+    system_set_pair(&s, 0, 1, apart);
+    CHECK_TRUE(batch_one_type(&s, 0, 2, near_same, count) == NULL, "a pair one bit apart still shares the class");
+    CHECK_TRUE(s.pair_class[1][0] == s.pair_class[0][1] && s.pair_class[0][1] != s.pair_class[0][0], "the class of (0, 1) not split");
+    const int none[2] = {0, 0};
+    CHECK_TRUE(batch_one_type(&s, 4, 6, near_same, none) == &s.pair[2][2], "a batch without pairs: not its first type's pair");
+    system_free(&s);
 }
 
 /* ------------------------------------------------------ w^p (weight_pow.h) */
@@ -897,6 +945,7 @@ int main(void)
         cmocka_unit_test(ik_distribute_hand),
         cmocka_unit_test(ik_bins_sum_to_virial),
         cmocka_unit_test(levels_same_forces),
+        cmocka_unit_test(mixed_batches_of_one_parameter_set),
         cmocka_unit_test(weight_pow_within_one_ulp),
         cmocka_unit_test(weight_pow_same_bits_at_every_level),
     };

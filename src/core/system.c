@@ -119,6 +119,17 @@ double system_kinetic_temperature(const System *s)
     return dof > 0 ? sum / dof : 0.0;
 }
 
+/* The same parameters, bit for bit (field by field: a struct's padding is not a value) */
+static int pair_params_same(const PairParams *a, const PairParams *b)
+{
+    return a->active == b->active && memcmp(&a->a, &b->a, sizeof a->a) == 0
+        && memcmp(&a->gamma, &b->gamma, sizeof a->gamma) == 0 && memcmp(&a->sigma, &b->sigma, sizeof a->sigma) == 0
+        && memcmp(&a->s, &b->s, sizeof a->s) == 0 && memcmp(&a->gamma_shear, &b->gamma_shear, sizeof a->gamma_shear) == 0
+        && memcmp(&a->sigma_shear, &b->sigma_shear, sizeof a->sigma_shear) == 0
+        && memcmp(&a->rc, &b->rc, sizeof a->rc) == 0 && memcmp(&a->rc2, &b->rc2, sizeof a->rc2) == 0
+        && memcmp(a->coef, b->coef, sizeof a->coef) == 0;
+}
+
 void system_set_pair(System *s, int ti, int tj, PairParams p)
 {
     p.sigma = sqrt(2.0 * p.gamma * s->kBT); /* eq. 7: sigma from gamma, never read */
@@ -127,4 +138,11 @@ void system_set_pair(System *s, int ti, int tj, PairParams p)
     s->pair[ti][tj] = p;
     s->pair[tj][ti] = p;
     if (p.active && p.rc > s->rc_max) s->rc_max = p.rc;
+    /* the classes anew (a few hundred comparisons, at set-up) */
+    for (int k = 0; k < DPD_MAX_TYPES * DPD_MAX_TYPES; k++) {
+        const PairParams *q = &s->pair[k / DPD_MAX_TYPES][k % DPD_MAX_TYPES];
+        int c = 0;
+        while (!pair_params_same(&s->pair[c / DPD_MAX_TYPES][c % DPD_MAX_TYPES], q)) c++;
+        s->pair_class[k / DPD_MAX_TYPES][k % DPD_MAX_TYPES] = (uint8_t)c;
+    }
 }

@@ -50,6 +50,10 @@ typedef struct {
     int ntypes;
     ParticleType types[DPD_MAX_TYPES];
     PairParams pair[DPD_MAX_TYPES][DPD_MAX_TYPES];
+    /* derived by system_set_pair, never set elsewhere: the first type pair (a DPD_MAX_TYPES + b, row
+     * by row) whose parameters are the same bits as pair[ti][tj]'s, so that a walk batch mixing
+     * types whose pairs all have one class goes to a one-type kernel (pair_walk.h batch_one_type) */
+    uint8_t pair_class[DPD_MAX_TYPES][DPD_MAX_TYPES];
     double rc_max;
     double kBT;
     double dt;

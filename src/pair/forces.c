@@ -114,12 +114,17 @@ void pair_record_central(PairVirial *pv, const System *s, int i, int j, const Pa
         pair_virial_add(pv, s, i, q, d, t);
     }
     pv->epot += out->energy;
+    pair_record_frozen_central(pv, s, i, j, out->F);
+}
+
+void pair_record_frozen_central(PairVirial *pv, const System *s, int i, int j, const double F[3])
+{
     const int ti = s->type[i], tj = s->type[j];
     if (MOD_FROZEN(&s->types[tj])) {
-        pv->frozen_force[tj][0] -= out->F[0]; pv->frozen_force[tj][1] -= out->F[1]; pv->frozen_force[tj][2] -= out->F[2];
+        pv->frozen_force[tj][0] -= F[0]; pv->frozen_force[tj][1] -= F[1]; pv->frozen_force[tj][2] -= F[2];
     }
     if (MOD_FROZEN(&s->types[ti])) {
-        pv->frozen_force[ti][0] += out->F[0]; pv->frozen_force[ti][1] += out->F[1]; pv->frozen_force[ti][2] += out->F[2];
+        pv->frozen_force[ti][0] += F[0]; pv->frozen_force[ti][1] += F[1]; pv->frozen_force[ti][2] += F[2];
     }
 }
 
@@ -135,6 +140,12 @@ void pair_record_eq1(PairVirial *pv, const System *s, int i, int j, const PairIn
         pair_virial_add(pv, s, i, q, d, t);
     }
     pv->epot += out->energy;
+    pair_record_frozen_eq1(pv, s, i, j, d, F, out->tau);
+}
+
+void pair_record_frozen_eq1(PairVirial *pv, const System *s, int i, int j, const double d[3],
+                            const double (*F)[3], const double tau[3])
+{
     const int ti = s->type[i], tj = s->type[j];
     if (!MOD_FROZEN(&s->types[ti]) && !MOD_FROZEN(&s->types[tj])) return;
     /* the random force of a step is independent of the configuration it acts
@@ -146,11 +157,11 @@ void pair_record_eq1(PairVirial *pv, const System *s, int i, int j, const PairIn
         const double fa = F[0][a] + F[1][a] + F[2][a], fn = F[0][a] + F[1][a];
         if (MOD_FROZEN(&s->types[tj])) {
             pv->frozen_force[tj][a] -= fa; pv->frozen_drag[tj][a] -= fn;
-            pv->frozen_torque[tj][a] += out->tau[a] - tr[a]; pv->frozen_torque_random[tj][a] += tr[a];
+            pv->frozen_torque[tj][a] += tau[a] - tr[a]; pv->frozen_torque_random[tj][a] += tr[a];
         }
         if (MOD_FROZEN(&s->types[ti])) {
             pv->frozen_force[ti][a] += fa; pv->frozen_drag[ti][a] += fn;
-            pv->frozen_torque[ti][a] += out->tau[a] - tr[a]; pv->frozen_torque_random[ti][a] += tr[a];
+            pv->frozen_torque[ti][a] += tau[a] - tr[a]; pv->frozen_torque_random[ti][a] += tr[a];
         }
     }
 }

@@ -60,10 +60,12 @@ typedef struct {
  * are chosen): NULL where the scalar code runs. */
 typedef struct PairKernels PairKernels;
 typedef void (*PairLanesFn)(void *lanes, int m, double inv_sqrt_dt, const PairParams *u);
-/* A walk batch [i, ie) whose particles and partners are all of type pair u,
- * in a 3D box without shear, its separations as planes (pl: x, y, z, r^2,
- * PAIR_PLANE apart), noise as rng_pair_normals' planes; pv: a measurement
- * step (no binned virial, no frozen type). Returns 0 if it does not take u
+/* A walk batch [i, ie) whose pairs all have the parameters u (one type pair,
+ * or several with the same parameters: pair_walk.h batch_one_type), in a 3D
+ * box without shear, its separations as planes (pl: x, y, z, r^2, PAIR_PLANE
+ * apart), noise as rng_pair_normals' planes; pv: a measurement step (no
+ * binned virial; the pairs with a frozen particle recorded as
+ * pair_record_frozen_* do). Returns 0 if it does not take u
  * (the walk then goes pair by pair). Each particle closed after its pairs. */
 typedef int (*PairOneTypeFn)(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
                              const int *count, PairAcc *acc, const PairParams *u, PairVirial *pv);
@@ -146,5 +148,12 @@ const PairStyle *pair_style_find(const char *name);
  * its random part and the rest (out->tau). */
 void pair_record_central(PairVirial *pv, const System *s, int i, int j, const PairIn *in, const PairOut *out);
 void pair_record_eq1(PairVirial *pv, const System *s, int i, int j, const PairIn *in, const PairOut *out);
+/* Their records of the force (and torque) on frozen particles alone, which
+ * the one-type kernels (src/simd/pair_avx512.c) call for their pairs with a
+ * frozen particle: F on i (central); the separation d, the parts F and tau
+ * on i (eq. 1). */
+void pair_record_frozen_central(PairVirial *pv, const System *s, int i, int j, const double F[3]);
+void pair_record_frozen_eq1(PairVirial *pv, const System *s, int i, int j, const double d[3],
+                            const double (*F)[3], const double tau[3]);
 
 #endif

@@ -153,20 +153,29 @@ PAIR_INLINE void pair_evaluate_batch(const PairEvaluator *ev, const System *s, i
     }
 }
 
-/* The type pair of a walk batch whose particles [i, ie) and partners
- * near[0 .. np) are all of one type t: &s->pair[t][t]; NULL if it mixes types,
- * or on a measurement step (pv) if t is frozen (the force on frozen types is
- * the pair-by-pair recorder's). */
-PAIR_INLINE const PairParams *batch_one_type(const System *s, int i, int ie, const int *near, int np,
-                                             const PairVirial *pv)
+/* The parameters of a walk batch whose pairs (particles [i, ie), count[p - i]
+ * partners near[] each) all have the same parameters, bit for bit
+ * (s->pair_class): the pair table's entry of the first; NULL if they differ.
+ * Types that differ only in name or mass (a wall of the fluid's particles, a
+ * second colloid species) then go to the one-type kernels as one type does;
+ * the kernels record the force on frozen types as the recorder does. A batch
+ * without pairs: its first particle's own type pair. */
+PAIR_INLINE const PairParams *batch_one_type(const System *s, int i, int ie, const int *near, const int *count)
 {
     const unsigned t = s->type[i];
-    unsigned mixed = 0;
-    if (s->ntypes > 1) {
-        for (int p = i + 1; p < ie; p++) mixed |= s->type[p] ^ t;
-        for (int q = 0; q < np; q++) mixed |= s->type[near[q]] ^ t;
+    if (s->ntypes == 1) return &s->pair[t][t];
+    int c0 = -1;
+    const PairParams *u = &s->pair[t][t];
+    for (int p = i, off = 0; p < ie; off += count[p - i], p++) {
+        const unsigned tp = s->type[p];
+        const uint8_t *cls = s->pair_class[tp];
+        for (int q = off; q < off + count[p - i]; q++) {
+            const int c = cls[s->type[near[q]]];
+            if (c0 < 0) { c0 = c; u = &s->pair[tp][s->type[near[q]]]; }
+            else if (c != c0) return NULL;
+        }
     }
-    return mixed || (pv && MOD_FROZEN(&s->types[t])) ? NULL : &s->pair[t][t];
+    return u;
 }
 
 /* A batch's planes (x, y, z, r^2, PAIR_PLANE apart) as the rows dd[q] of the pair-by-pair evaluators */
@@ -209,7 +218,7 @@ PAIR_INLINE void pair_walk(const PairEvaluator *ev, const System *s, const Neigh
         if (!le && k->gather_planes) {
             ie = k->gather_planes(s, nl, i, i1, near, pl, count, id_a, id_b, &np, k->ahead);
             rng_pair_normals_ordered(s->seed, s->step, np, id_a, id_b, nvar, noise);
-            const PairParams *u = k->one_type ? batch_one_type(s, i, ie, near, np, pv) : NULL;
+            const PairParams *u = k->one_type ? batch_one_type(s, i, ie, near, count) : NULL;
             if (!u || !k->one_type(s, i, ie, near, pl, noise, count, acc, u, pv)) {
                 /* several type pairs, or a type pair the kernel does not take: pair by pair */
                 planes_to_rows(pl, np, dd);

@@ -234,7 +234,7 @@ __attribute__((target("avx512f"))) static void batch_random_weights_avx512(const
 }
 
 /* pair_dpd.c dpd_pair through the walk (pair_walk.h pair_batch) for one type pair (u) without shear (pv != NULL: the virial
- * and energy as pair_record_central forms them, no frozen type, no bins), the per-pair
+ * and energy as pair_record_central forms them, no bins; a frozen particle's force as it records it), the per-pair
  * arithmetic eight pairs at a time on AVX-512: the same IEEE operations in
  * the same order (no contraction), so the same F_ij bits; the sums into
  * acc->fi and -F_ij into f_j are then added pair by pair in list order, as
@@ -255,6 +255,7 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
     const __m512d a = _mm512_set1_pd(u->a), ngamma = _mm512_set1_pd(-u->gamma), sigma = _mm512_set1_pd(u->sigma);
     const __m512d isdt = _mm512_set1_pd(acc->inv_sqrt_dt);
     double fi0 = acc->fi[0], fi1 = acc->fi[1], fi2 = acc->fi[2];
+    const int frozen_i = pv && MOD_FROZEN(&s->types[s->type[i]]);   /* measurement steps: frozen particles' records */
     for (int q0 = 0; q0 < m; q0 += 8) {
         const PairLanes8 g = pair_lanes_load_avx512(pl, near, q0, m, rc2, eps2);
         const int cnt = g.cnt;
@@ -295,6 +296,8 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
             fi0 += fx[l]; fi1 += fy[l]; fi2 += fz[l];
             force_claim(acc->f, NULL, acc->touched, jj, acc->n);
             acc->f[3 * jj] -= fx[l]; acc->f[3 * jj + 1] -= fy[l]; acc->f[3 * jj + 2] -= fz[l];
+            if (pv && (frozen_i || MOD_FROZEN(&s->types[s->type[jj]])))
+                pair_record_frozen_central(pv, s, i, jj, (const double[3]){fx[l], fy[l], fz[l]});
         }
     }
     acc->fi[0] = fi0; acc->fi[1] = fi1; acc->fi[2] = fi2;
@@ -302,8 +305,8 @@ void dpd_pair_lanes_avx512(const System *s, int i, const int *near, const double
 
 /* The standard pairs of a walk batch [i, ie) on AVX-512 (dpd_pair_lanes_avx512,
  * the same bits as pair by pair): one type pair u, no shear; pv != NULL
- * (measurement steps): the virial and energy too (not binned, no frozen
- * type). Every particle of the batch closed after its pairs. Compiled once
+ * (measurement steps): the virial and energy too (not binned), and the
+ * force on frozen particles. Every particle of the batch closed after its pairs. Compiled once
  * without the virial and once with it (the lanes are inlined). */
 static inline __attribute__((target("avx512f"), always_inline))
 void dpd_batch_lanes(const System *s, int i, int ie, const int *near, const double *pl, const double *noise,
@@ -332,7 +335,8 @@ static inline __attribute__((target("avx512f"), always_inline)) __m512d neg(__m5
     return _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(x), _mm512_set1_epi64((long long)0x8000000000000000ULL)));
 }
 /* Passes 1-3 for one type pair u whose weight is not a general power, no
- * shear; pv != NULL (measurement steps, no frozen type, no bins): the virial
+ * shear; pv != NULL (measurement steps, no bins; frozen particles' records as
+ * pair_record_frozen_eq1, pair by pair in list order): the virial
  * by part and the energy as pair_record_eq1 forms them, added pair by pair
  * (virial_lanes_add): particle i's m pairs (near; pl: separations x, y, z, r^2
  * as planes, PAIR_PLANE apart; nz: rng_pair_normals' planes from entry 0)
@@ -356,6 +360,7 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
     const __m512d isdt = _mm512_set1_pd(acc->inv_sqrt_dt);
     const int shear = u->gamma_shear != 0.0;
     double fi[3] = {acc->fi[0], acc->fi[1], acc->fi[2]}, ti[3] = {acc->ti[0], acc->ti[1], acc->ti[2]};
+    const int frozen_i = pv && MOD_FROZEN(&s->types[s->type[i]]);   /* measurement steps: frozen particles' records */
     for (int q0 = 0; q0 < m; q0 += 8) {
         const PairLanes8 g = pair_lanes_load_avx512(pl, near, q0, m, rc2, eps2);
         const int cnt = g.cnt;
@@ -430,6 +435,10 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
         }
         _mm512_storeu_pd(F[0], F0); _mm512_storeu_pd(F[1], F1); _mm512_storeu_pd(F[2], F2);
         _mm512_storeu_pd(tau[0], T0); _mm512_storeu_pd(tau[1], T1); _mm512_storeu_pd(tau[2], T2);
+        double Pl[PAIR_PARTS][3][8];   /* measurement steps: the parts, for the frozen particles' records */
+        if (pv)
+            for (int q = 0; q < PAIR_PARTS; q++)
+                for (int c = 0; c < 3; c++) _mm512_storeu_pd(Pl[q][c], P[q][c]);
         for (int l = 0; l < cnt; l++) {
             if (!(act >> l & 1)) continue;
             const int j = near[q0 + l];
@@ -439,6 +448,14 @@ void pan_pair_lanes_avx512(const System *s, int i, const int *near, const double
                 acc->f[3 * j + c] -= F[c][l];
                 ti[c] += tau[c][l];
                 acc->tq[3 * j + c] += tau[c][l];
+            }
+            if (pv && (frozen_i || MOD_FROZEN(&s->types[s->type[j]]))) {
+                const double d[3] = {pl[q0 + l], pl[PAIR_PLANE + q0 + l], pl[2 * PAIR_PLANE + q0 + l]};
+                double part[PAIR_PARTS][3];
+                for (int q = 0; q < PAIR_PARTS; q++)
+                    for (int c = 0; c < 3; c++) part[q][c] = Pl[q][c][l];
+                pair_record_frozen_eq1(pv, s, i, j, d, (const double (*)[3])part,
+                                       (const double[3]){tau[0][l], tau[1][l], tau[2][l]});
             }
         }
     }
