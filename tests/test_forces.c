@@ -847,6 +847,9 @@ static void mixed_batches_of_one_parameter_set(void **state)
     CHECK_TRUE(u != NULL && u->gamma == 4.5 && u->gamma_shear == 4.5,
                "a batch of types 0 and 1 (one parameter set) does not go to the one-type kernel");
     CHECK_TRUE(batch_one_type(&s, 0, 2, near_other, count) == NULL, "a batch with a type-2 partner goes to the one-type kernel");
+    const int near_colloid[2] = {4, 4}, count_colloid[1] = {2};   /* particle 0 (type 0), both partners of type 2 */
+    u = batch_one_type(&s, 0, 1, near_colloid, count_colloid);
+    CHECK_TRUE(u != NULL && u->gamma == 3.5, "a type-0 particle with type-2 partners: not the (0, 2) parameters");
     CHECK_TRUE(s.pair_class[0][1] == s.pair_class[0][0] && s.pair_class[1][1] == s.pair_class[0][0]
                && s.pair_class[0][2] != s.pair_class[0][0] && s.pair_class[2][2] == s.pair_class[0][2],
                "pair classes (0,0) %d (0,1) %d (1,1) %d (0,2) %d (2,2) %d", s.pair_class[0][0], s.pair_class[0][1],

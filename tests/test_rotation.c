@@ -215,14 +215,19 @@ static void cluster_forces_and_torques_sum_to_zero(void **state)
  * with and without gamma^S, with and without Lees-Edwards shear, with two
  * types and with one (whose parameters the lanes read once: uniform; its
  * batches read in place, and the one with a coincident pair compacted), and
- * with two types of one parameter set, the second frozen (on AVX-512 the
- * batches that mix them go to the one-type evaluator, which records the
- * drag and torque on the frozen particles as pair_record_eq1 does). */
+ * with two types of one parameter set, the second frozen (the batches that
+ * mix them go to the one-set lanes and, on AVX-512, to the one-type
+ * evaluator, which records the drag and torque on the frozen particles as
+ * pair_record_eq1 does), and with a frozen type whose pairs with either type
+ * form a set of their own (batches of that set, not of the first type's). */
 static void lanes_same_bits_as_pair_by_pair(void **state)
 {
     (void)state;
     const int best = simd_cap(-1);
-    for (int nt = 1; nt <= 3; nt++)   /* 3: two types of one parameter set, the second frozen */
+    /* nt = 3: two types of one parameter set, the second frozen; 4: the second frozen, its pairs
+     * with either type of one set apart from the first's, and particles 0 ... n/3 - 1 of it, so that
+     * the batches of those particles are of that set */
+    for (int nt = 1; nt <= 4; nt++)
     for (int le = 0; le <= 1; le++) {
         System s;
         memset(&s, 0, sizeof s);
@@ -230,20 +235,21 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         box_init(&s.box, 3, L, le ? 0.4 : 0.0);
         s.box.le_offset = le ? 1.3 : 0.0;
         s.kBT = 1.0; s.dt = 0.01; s.lambda = 0.5; s.seed = 17; s.step = 3;
-        s.ntypes = nt == 3 ? 2 : nt;
+        s.ntypes = nt >= 3 ? 2 : nt;
         for (int t = 0; t < 2; t++) {
             snprintf(s.types[t].name, sizeof s.types[t].name, "t%d", t);
             s.types[t].mass = 1.0; s.types[t].inertia = 0.1; s.types[t].body_force_flip_axis = -1;
         }
         system_set_pair(&s, 0, 0, (PairParams){.active = 1, .a = 25.0, .gamma = 4.5, .gamma_shear = 4.5, .s = 0.5, .rc = 1.0});
-        system_set_pair(&s, 0, 1, nt == 3 ? s.pair[0][0] : (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .gamma_shear = 0.0, .s = 1.0, .rc = 0.9});
-        system_set_pair(&s, 1, 1, nt == 3 ? s.pair[0][0] : (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 0.42, .rc = 1.0});
-        s.types[1].frozen = nt == 3;
+        const PairParams wall = {.active = 1, .a = 20.0, .gamma = 3.0, .gamma_shear = 1.5, .s = 1.0, .rc = 0.9};
+        system_set_pair(&s, 0, 1, nt == 3 ? s.pair[0][0] : nt == 4 ? wall : (PairParams){.active = 1, .a = 20.0, .gamma = 3.0, .gamma_shear = 0.0, .s = 1.0, .rc = 0.9});
+        system_set_pair(&s, 1, 1, nt == 3 ? s.pair[0][0] : nt == 4 ? wall : (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 0.42, .rc = 1.0});
+        s.types[1].frozen = nt >= 3;
         assert_int_equal(system_alloc(&s, 500), 0);
         uint64_t st = 33;
         for (int i = 0; i < s.n; i++) {
             s.id[i] = (uint32_t)(7 * i + 1);
-            s.type[i] = nt >= 2 && i % 3 == 0;
+            s.type[i] = nt == 4 ? 3 * i < s.n : nt >= 2 && i % 3 == 0;
             for (int a = 0; a < 3; a++) {
                 s.x[3 * i + a] = L[a] * tu_uniform(&st);
                 s.v_pred[3 * i + a] = s.v[3 * i + a] = 2.0 * tu_uniform(&st) - 1.0;
@@ -265,10 +271,11 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
         assert_non_null(f0);
         for (int pass = 0; pass < 2; pass++) {
             if (pass == 1 && nt == 2) system_set_pair(&s, 1, 1, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
-            if (pass == 1 && nt != 2)   /* every pair alike (nt = 3: types 0 and 1 stay one parameter set) */
+            if (pass == 1 && nt != 2)   /* nt = 1, 3: every pair alike; 4: the pairs with type 1 */
                 for (int a = 0; a < s.ntypes; a++)
                     for (int b = a; b < s.ntypes; b++)
-                        system_set_pair(&s, a, b, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
+                        if (nt != 4 || b == 1)
+                            system_set_pair(&s, a, b, (PairParams){.active = 1, .a = 15.0, .gamma = 6.0, .gamma_shear = 2.0, .s = 2.0, .rc = 1.0});
             PairVirial pv = {.bin_axis = -1};
             simd_cap(0);
             forces_compute(&s, &nl, &fw, &pv);   /* pair by pair (the portable level) */
@@ -277,7 +284,7 @@ static void lanes_same_bits_as_pair_by_pair(void **state)
             double fmaxv = 0.0, tmaxv = 0.0;
             for (int k = 0; k < 3 * s.n; k++) { fmaxv = fmax(fmaxv, fabs(s.f[k])); tmaxv = fmax(tmaxv, fabs(s.torque[k])); }
             CHECK_TRUE(fmaxv > 1.0 && tmaxv > 0.1, "no forces or torques (max %g, %g)", fmaxv, tmaxv);
-            CHECK_TRUE(nt != 3 || (pv.frozen_drag[1][0] != 0.0 && pv.frozen_torque_random[1][0] != 0.0),
+            CHECK_TRUE(nt < 3 || (pv.frozen_drag[1][0] != 0.0 && pv.frozen_torque_random[1][0] != 0.0),
                        "no drag or random torque recorded on the frozen type");
             for (int level = 0; level <= 2; level++) {
                 if (simd_cap(level) != level) continue;

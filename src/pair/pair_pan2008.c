@@ -97,14 +97,15 @@ static inline int pan_weight_mode(const PairParams *p)
  * noise from the batch's own arrays (L->dd, L->noise), so they are not copied. */
 static inline __attribute__((always_inline))
 int pan_lanes_fill(const System *s, int i, const int *near, double (*dd)[4], const double *noise, int m0,
-                   PanLanes *restrict L, int *m, const int le, const int uniform, const int direct)
+                   PanLanes *restrict L, int *m, const int le, const int uniform, const PairParams *u,
+                   const int direct)
 {
     const double *v = s->v_pred, *w = s->omega_pred;
     const int ti = s->type[i], k0 = *m;
-    const int u_mode = uniform ? pan_weight_mode(&s->pair[0][0]) : 0;   /* one type: no lookup per pair */
+    const int u_mode = uniform ? pan_weight_mode(u) : 0;   /* one parameter set (u): no lookup per pair */
     for (int q = 0; q < m0; q++) {
         const int j = near[q];
-        const PairParams *p = uniform ? &s->pair[0][0] : &s->pair[ti][s->type[j]];
+        const PairParams *p = uniform ? u : &s->pair[ti][s->type[j]];
         const double r2 = dd[q][3];
         if (!direct && !pair_interacts(p, r2)) continue;
         const int k = (*m)++;
@@ -154,8 +155,9 @@ void pan_lanes_apply(const PanLanes *restrict L, int k0, int c, PairAcc *acc)
 
 /* The pairs of particles [i, ie) of a walk batch without the virial, lane by
  * lane (the same bits as pan_pair), with their noise in rng_pair_normals'
- * planes; lanes: pass 2 at the level in use (PairKernels). One type, not a
- * general power: its parameters once, not per pair; and when every pair of
+ * planes; lanes: pass 2 at the level in use (PairKernels). One parameter set
+ * (pair_walk.h batch_one_type: one type, or several alike), not a general
+ * power: its parameters once, not per pair; and when every pair of
  * the batch interacts (one cutoff, none closer than PAIR_R_EPSILON), the
  * lanes read the separations and the noise where the walk left them (direct:
  * entry q of the batch is lane q). */
@@ -165,16 +167,17 @@ void pan_batch_lanes(const System *s, int i, int ie, int *near, double (*dd)[4],
 {
     PanLanes L;
     int m = 0, c[PAIR_BATCH];
-    const PairParams *u = s->ntypes == 1 && !weight_general(s->pair[0][0].s) ? &s->pair[0][0] : NULL;
+    const PairParams *u = batch_one_type(s, i, ie, near, count);   /* one parameter set, or NULL */
+    if (u && weight_general(u->s)) u = NULL;
     int total = 0, direct = u != NULL;
     for (int p = i; p < ie; p++) total += count[p - i];
     for (int q = 0; direct && q < total; q++) direct = pair_interacts(u, dd[q][3]);
     L.dd = direct ? (const double (*)[4])dd : NULL;
     L.noise = noise;
     for (int p = i, off = 0; p < ie; off += count[p - i], p++)
-        c[p - i] = direct ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 1)
-                 : u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, 0)
-                     : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0, 0);
+        c[p - i] = direct ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, u, 1)
+                 : u ? pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 1, u, 0)
+                     : pan_lanes_fill(s, p, near + off, dd + off, noise + off, count[p - i], &L, &m, le, 0, NULL, 0);
     lanes(&L, m, acc->inv_sqrt_dt, u);
     for (int p = i, k = 0; p < ie; k += c[p - i], p++) {
         pan_lanes_apply(&L, k, c[p - i], acc);
