@@ -79,6 +79,15 @@ if [ "$TIER" != quick ]; then
     for r in $ROWS; do
         "$ANALYSE" noise-row torque_noise_row$r "$(get . torque_row$r | cut -f2)" $(( $(row_steps $r) * $(row_reps $r) / 100 )) $(( $(row_reps $r) * 49 )) >> "$OUT/summary.tsv"
     done
+    # a second estimator of the stderr of a row with replicas (reported, no band): the mean of its
+    # runs' values with the stderr of their scatter, against drag_row* and torque_row*, whose stderr
+    # comes from each run's blocks (the same mean)
+    for r in $ROWS; do
+        [ "$(row_reps $r)" -ge 2 ] || continue
+        for q in drag:drag_on_colloid_x torque:torque_on_colloid_y; do
+            emit ${q%%:*}_row${r}_by_runs "$(for n in $(row_runs $r); do getv $n ${q#*:}; done | "$ANALYSE" mean-se)"
+        done
+    done
 fi
 # how many times its run each row's torque would need for a stderr of 0.5 % of eq. 22 (the paper
 # tier's aim, README), (se / 0.005)^2 of torque_ratio_row (the error falling as 1 / sqrt(length)); its
