@@ -140,6 +140,17 @@ for r in $ROWS; do
     t=$(for n in $(row_runs $r); do get $n steps; done | "$ANALYSE" production-time $(eq_steps))
     emit "torque_noise_row$r" $(noise $(get . torque_row$r | cut -f2) $t $((B * $(row_runs $r | wc -w))))
 done
+# a second estimator of the stderr of a row with replicas (reported, no band): the same mean over
+# eq. 23, its stderr from the scatter of the runs' means instead of the pooled blocks
+for r in $ROWS; do
+    [ "$(row_runs $r | wc -w)" -ge 2 ] || continue
+    read -r Fth Tth < <(eq23 $(row_l $r) $U)
+    for q in 2:drag:$Fth 3:torque:$Tth; do
+        IFS=: read -r c name th <<< "$q"
+        emit "${name}_ratio_row${r}_by_runs" "$("$ANALYSE" ratio "$(for n in $(row_runs $r); do
+            column_mean "$OUT/runs/$n/sphere_blocks.tsv" $c | cut -f1; done | "$ANALYSE" mean-se)" "$th	0")"
+    done
+done
 # row 3's replicas one by one (paper tier): each run's torque over eq. 23 alone (paper.md's second look
 # at the row's estimate, which does not reproduce)
 if [ "$TIER" = paper ]; then
