@@ -263,7 +263,7 @@ for u in 0.6 1.2; do
         read -r Tu seu cu
         est_row "tab03 torque l = 1" "stronger drive, u = $u (projected)" "30^3, the row's noise and cost per t.u." $Tu $seu $cu \
             "12^3 ladder: torque per u at 1.2 over 0.6 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_1.2_vs_0.6)"), at 2.4 over 1.2 $("$ANALYSE" fmt "%.3f +- %.3f" "$(sget "$T03" lr_torque_per_u_2.4_vs_1.2)"); drag per u 1.2 over 0.6 $("$ANALYSE" fmt "%.4f +- %.4f" "$(sget "$T03" lr_drag_per_u_1.2_vs_0.6)")" \
-            "$( [ $u = 0.6 ] && echo 'kept for l = 1 (bias about 1 %, README)' || echo 'no: linearity not shown at 2 %')"; }
+            "$( [ $u = 0.6 ] && echo 'no: linearity not shown at the precision of Table 3 (its paper tier runs at u = 0.3); used by the reduced tier projection only' || echo 'no: linearity not shown at 2 %')"; }
 done
 # D. D of eq. 16: one 10^3 box with 27 colloids against the 1/L extrapolation of three boxes
 est_row "eq16 D" "plain MSD, one box" "10^3, 27 colloids, 400 t.u. (eq16 reduced)" $(pair "$(sget "$EQ16" D_colloid)") \
