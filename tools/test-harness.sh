@@ -220,6 +220,8 @@ title: Fixture paper
 
 Verdicts: y {{verdict:x/y}}; miss {{verdict:x/miss}}; out {{verdict:x/out}}.
 
+Outcomes: in {{outcome:x/rule:in}}; edge {{outcome:x/rule:edge}}; out {{outcome:x/rule:out}}; pinned {{outcome:x/y@paper:eta}}.
+
 CPU: y {{cpu:x/y}} s; out {{cpu:x/out}} s.
 
 Values: {{x/y:eta}}; pinned quick {{x/y@quick:eta}}; pinned CPU {{cpu:x/y@quick}} s.
@@ -394,6 +396,7 @@ if [ -f "$G" ]; then
     in_file "paper-filter: summary not run" "$G" '^| `x/nores` | not run |'
     in_file "paper-filter: summary INCOMPLETE counts as not run" "$G" '^| `x/incomplete` | not run |'
     in_file "paper-filter: summary not yet built (from EXPERIMENTS.md)" "$G" '^| `x/ghost` | not yet built |'
+    in_file "paper-filter: inline outcomes of band rows follow the decision rule" "$G" '^Outcomes: in \[PASS\]{\.outcome \.pass} (quick tier); edge \[UNRESOLVED\]{\.outcome \.unresolved} (×4 run) (quick tier); out \[FAIL\]{\.outcome \.fail} (quick tier); pinned \[PASS\]{\.outcome \.pass}\.$'
     in_file "paper-filter: inline verdicts name their claims" "$G" '^Verdicts: y \*\*\[Re\]\*\* (paper tier: 2 of 2 claims pass); miss \*\*missing\*\* (quick tier: pass `a`); out \*\*\[¬Re\]\*\* (quick tier: fail `q`)\.$'
     in_file "paper-filter: summary [~Re], with the run length that decides" "$G" '^| `x/rule` | \[~Re\] | 2 / 1 / 3 | none | \*\*quick\*\* | inf |'
     in_file "paper-filter: an unresolved claim is not a pass" "$G" '^| `x/wide` | unresolved | 0 / 0 / 1 | 1 of 1 | \*\*quick\*\* | ×100 (0.056 CPU-h) |'
@@ -605,6 +608,7 @@ printf '%s\n' '## pan-2008/qbad: errors' '' 'a {{x/nonesuch@quick:q}} b {{cpu:x/
     'e {{x/paperonly@reduced:q}} f {{x/paperonly:nonesuch}}' \
     'j {{tsv:results/x/y/quick/none.tsv:1:a}}' \
     'k {{tsv:results/x/paperonly/paper/none.tsv:1:a}} l {{verdict:x/nores}}' \
+    'm {{outcome:x/rule:nosuch}} n {{outcome:x/rule}} o {{outcome:x/nores:q}}' \
     '<!-- figure: x/paperonly/other-paper.png -->' '<!-- figure: x/y/fig-quick.png -->' '<!-- figure: x/nores/fig-reduced.png -->' \
     '<!-- tsv: results/x/y/quick/none.tsv -->' '<!-- tsv: results/x/paperonly/paper/none.tsv -->' '<!-- tsv: results/x/nonesuch/quick/t.tsv -->' \
     '<!-- results: x/nores -->' '<!-- table: x/paperonly/none.tsv -->' > "$root/qbad.md"
@@ -618,13 +622,16 @@ has "paper-filter: a quantity absent from the paper tier fails" '{{x/paperonly:n
 has "paper-filter: a missing file of an existing quick tier fails" 'tsv:results/x/y/quick/none.tsv:1:a}}: no file'
 has "paper-filter: a missing file of the paper tier fails" 'tsv:results/x/paperonly/paper/none.tsv:1:a}}: .*not a valid result\|no file results/x/paperonly/paper/none.tsv'
 has "paper-filter: an unpinned verdict without results fails" '{{verdict:x/nores}}'
+has "paper-filter: an outcome of no band row fails" '{{outcome:x/rule:nosuch}}: no claim or gate row nosuch of x/rule at tier quick'
+has "paper-filter: an outcome without a quantity fails" '{{outcome:x/rule}}: expected outcome:PAPER/EXP\[@TIER\]:QUANTITY'
+has "paper-filter: an outcome of an experiment without results fails" '{{outcome:x/nores:q}}: no results for x/nores'
 has "paper-filter: a missing paper-tier figure fails" 'other-paper.png does not exist'
 has "paper-filter: a missing quick figure of an existing quick tier fails" 'fig-quick.png does not exist'
 has "paper-filter: a missing reduced-tier figure fails" 'fig-reduced.png does not exist'
 has "paper-filter: a missing table of an existing quick tier fails" 'tsv: results/x/y/quick/none.tsv -->: no file'
 has "paper-filter: a missing table of the paper tier fails" 'tsv: results/x/paperonly/paper/none.tsv -->: no file'
 has "paper-filter: a table of an unknown experiment's quick tier fails" 'tsv: results/x/nonesuch/quick/t.tsv -->: no file'
-has "paper-filter: counts them all as failures" '^paper-filter: 17 placeholder(s) could not be filled'
+has "paper-filter: counts them all as failures" '^paper-filter: 20 placeholder(s) could not be filled'
 lacks "paper-filter: none of them counted as awaiting the quick tier" 'await the quick tier'
 # once the quick tier exists, the same placeholders are filled from it (and marked as quick)
 mkres x/paperonly quick 12.4 <<EOF2

@@ -20,6 +20,8 @@
 --   {{PAPER/EXP:QUANTITY:FMT}}             the value in the printf number format FMT (%.2f, %.1e ...),
 --                                          "+- stderr" after it only if the stderr is positive
 --   {{verdict:PAPER/EXP}}                  the experiment's verdict from its bands, with the tier
+--   {{outcome:PAPER/EXP[@TIER]:QUANTITY}}  the outcome of one claim or gate row (PASS, FAIL, UNRESOLVED
+--                                          and its deciding factor) at the verdict's tier, or at TIER
 --   {{cpu:PAPER/EXP}}                      CPU seconds of the tier its numbers come from (provenance.tsv,
 --                                          rounded; the tier is named unless it is paper); several
 --                                          experiments joined by '+': their total
@@ -847,6 +849,32 @@ local function inline_verdict(id)
     return s .. ': ' .. table.concat(parts, '; ') .. ')'
 end
 
+-- {{outcome:ID[@TIER]:Q}}: the decision-rule outcome of band row Q (a claim or gate of bands.tsv) at
+-- the tier the experiment's verdict uses, or at TIER, as the claims tables show it (a coloured
+-- word, XFAIL as FAIL with its title; UNRESOLVED with the factor that decides it), so that prose
+-- saying whether a row passes follows the row when the result changes
+local function inline_outcome(arg)
+    local ph = '{{outcome:' .. arg .. '}}'
+    local spec, q = before_last(arg, ':'), after_last(arg, ':')
+    if not arg:find(':', 1, true) or spec == '' or q == '' then
+        return missing(ph, 'expected outcome:PAPER/EXP[@TIER]:QUANTITY', 'missing outcome: ' .. arg)
+    end
+    local id, tier = spec, nil
+    if spec:find('@', 1, true) then id, tier = before_last(spec, '@'), after_last(spec, '@')
+    else tier = verdict_of(id).tier end
+    if tier == '-' then return missing(ph, 'no results for ' .. id, 'missing outcome: ' .. arg) end
+    for _, r in ipairs(band_rows(id, tier)) do
+        if r[2] == q and (r[13] == 'claim' or r[13] == 'gate') then
+            local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
+            local text = OUTCOME_CLASS[o] and outcome_span(o, nil, r[9] == 'XFAIL' and 'a known non-reproduction (expect = fail)' or nil)
+                or '**' .. r[9] .. '**'
+            if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then text = text .. ' (×' .. r[15] .. ' run)' end
+            return text .. (tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
+        end
+    end
+    return missing(ph, 'no claim or gate row ' .. q .. ' of ' .. id .. ' at tier ' .. tier, 'missing outcome: ' .. arg)
+end
+
 -- the CPU seconds of one experiment ID[@TIER] as {{cpu:}} finds them: 'ok', seconds (string), tier |
 -- 'quick', id (awaits the quick tier) | 'missing'
 local function cpu_of(spec)
@@ -959,6 +987,7 @@ end
 -- the markdown of inline placeholder {{KIND:ARG}}
 local function expand_inline(kind, arg)
     if kind == 'verdict' then return inline_verdict(arg)
+    elseif kind == 'outcome' then return inline_outcome(arg)
     elseif kind == 'cpu' then return inline_cpu(arg)
     elseif kind == 'cpu-h' then return inline_cpu(arg, true)
     elseif kind == 'tsv' then return inline_tsv(arg)
