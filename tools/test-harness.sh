@@ -1116,6 +1116,10 @@ case $staged in
     *runs/b/*|*run.h5*|*checkpoint*) bad "carry-partial: staged the unfinished run or a large file: $staged" ;;
     *) ok "carry-partial: no unfinished run, run.h5 or checkpoint staged" ;;
 esac
+case $staged in
+    */.cwd*) bad "carry-partial: staged a file that names this machine's paths (.cwd): $staged" ;;
+    *) ok "carry-partial: no .cwd (this machine's paths) staged" ;;
+esac
 in_file "carry-partial: RESUME.txt names the binary's commit" "$rx/results/t/e/.quick.partial/RESUME.txt" 'built from commit fake1'
 ( cd "$rx" && git add .gitignore experiments tools && git -c user.name=t -c user.email=t@t commit -qm carry ) >/dev/null 2>&1
 rm -rf "$root/rx2"; git clone -q "$rx" "$root/rx2" 2>/dev/null
