@@ -359,6 +359,16 @@ local function outcome_span(word, n, title)
                          title and (' title="' .. title .. '"') or '')
 end
 
+-- band row R's outcome as a coloured word (XFAIL as FAIL, titled; UNRESOLVED with the factor of
+-- the run length that decides it): the claims tables and {{outcome:}}
+local function row_outcome(r)
+    local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
+    local text = OUTCOME_CLASS[o] and outcome_span(o, nil, r[9] == 'XFAIL' and 'a known non-reproduction (expect = fail)' or nil)
+        or '**' .. r[9] .. '**'
+    if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then text = text .. ' (×' .. r[15] .. ' run)' end
+    return text
+end
+
 -- band row R (tools/check --tsv) as "value ± se", "[lo, hi]"
 local function row_ours(r)
     if r[3] == '-' then return 'missing' end
@@ -415,11 +425,8 @@ local function group_rows(id, tier)
             local row = { name = grp.name, statement = grp.statement, paper = grp.paper, n = #grp.rows, counts = c }
             if #grp.rows == 1 then
                 local r = grp.rows[1]
-                local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
                 row.ours = row_ours(r); row.band = row_band(r)
-                row.outcome = OUTCOME_CLASS[o] and outcome_span(o, nil, r[9] == 'XFAIL' and 'a known non-reproduction (expect = fail)' or nil)
-                    or '**' .. r[9] .. '**'
-                if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then row.outcome = row.outcome .. ' (×' .. r[15] .. ' run)' end
+                row.outcome = row_outcome(r)
             else
                 row.ours = 'worst of ' .. #grp.rows .. ': `' .. worst[2] .. '` ' .. row_ours(worst)
                 local novalue = 0
@@ -865,11 +872,7 @@ local function inline_outcome(arg)
     if tier == '-' then return missing(ph, 'no results for ' .. id, 'missing outcome: ' .. arg) end
     for _, r in ipairs(band_rows(id, tier)) do
         if r[2] == q and (r[13] == 'claim' or r[13] == 'gate') then
-            local o = r[9] == 'XFAIL' and 'FAIL' or r[9]
-            local text = OUTCOME_CLASS[o] and outcome_span(o, nil, r[9] == 'XFAIL' and 'a known non-reproduction (expect = fail)' or nil)
-                or '**' .. r[9] .. '**'
-            if r[9] == 'UNRESOLVED' and (r[15] or '-') ~= '-' then text = text .. ' (×' .. r[15] .. ' run)' end
-            return text .. (tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
+            return row_outcome(r) .. (tier ~= 'paper' and ' (' .. tier .. ' tier)' or '')
         end
     end
     return missing(ph, 'no claim or gate row ' .. q .. ' of ' .. id .. ' at tier ' .. tier, 'missing outcome: ' .. arg)
