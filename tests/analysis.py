@@ -233,6 +233,19 @@ same('dt_within_1pct: an unstable rung (T and stderr nan) ends the ladder, not c
 same('largest_sigmas: the largest |value| / stderr and the count',
      A.largest_sigmas(tsv('s.tsv', 'quantity\tvalue\tstderr\nd_a1\t-3\t1\nd_a2\t1\t0\nd_a3\t2\t0.5\nother\t100\t1\n'), 'd'),
      ['largest_sigmas_d\t4\t0', 'largest_sigmas_d_cases\t2\t0'])
+# a value -1.003 +- 0.002 about theory -1: |d| = 0.003, t = (0.003 + 2 x 0.002) / 1 = 0.007
+tp = tsv('tp.tsv', 'quantity\tvalue\tstderr\np\t-1.003\t0.002\nq\t0.52\t0.01\n')
+r = A.tolerance_to_pass(tp, 'p', '-1', 'p_tol')[0].split('\t')
+same('tolerance_to_pass: the row it names', r[0], 'p_tol')
+close('tolerance_to_pass: (|v - theory| + 2 se) / |theory| at a negative theory', r[1], 0.007)
+close('tolerance_to_pass: its error se / |theory|', r[2], 0.002)
+r = A.tolerance_to_pass(tp, 'q', '0.5', 'q_tol')[0].split('\t')
+close('tolerance_to_pass: relative to theory (0.02 + 0.02) / 0.5', r[1], 0.08)
+try:
+    A.tolerance_to_pass(tp, 'absent', '1', 'x')
+    check('tolerance_to_pass: a missing row is an error', False, 'no error')
+except SystemExit as e:
+    check('tolerance_to_pass: a missing row is an error naming it', 'absent' in str(e), str(e))
 tol = tsv('tol.tsv', 'solver\ttolerance\teta\teta_se\terror\terror_se\titerations\tcpu_per_step\ttrue_rel_error\n'
                      'pcg\t1e-1\t1\t1\t1\t1\t1\t1\t1e-2\npcg\t1e-3\t1\t1\t1\t1\t1\t2\t1e-6\npcg\t1e-5\t1\t1\t1\t1\t1\t3\t1e-10\n')
 r = A.true_error_slopes(tol)[0].split('\t')

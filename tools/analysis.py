@@ -946,6 +946,23 @@ def summary_diff(summary, a, b, q):
     return [v_diff(V.get(a, ''), S.get(a, ''), V.get(b, ''), S.get(b, '')).row(q)]
 
 
+def tolerance_to_pass(summary, q, theory, out):
+    """the smallest relative tolerance t of a band theory (1 -+ t) that holds Q's value +- 2 se
+    (the decision rule's PASS): OUT = (|v - theory| + 2 se) / |theory|, its error se / |theory|
+    (the value's; the error of se itself is not carried). For a band whose tolerance was chosen
+    with the value known: how far below it the outcome would stay PASS"""
+    V, S = summary_dict(summary)
+    if q not in V:
+        raise SystemExit('analysis.py tolerance-to-pass: no row %s in %s' % (q, summary))
+    v, se, t = num(V[q]), num(S[q]), num(theory)
+    if isnan_text(V[q]) or isnan_text(S[q]) or t == 0:
+        return [Val().row(out)]
+    d = v - t
+    d = -d if d < 0 else d
+    a = -t if t < 0 else t
+    return [Val((d + 2 * se) / a, se / a).row(out)]
+
+
 def tab01_projected_cpu_hours(c, p, s):
     """mai-duy-2019/tab01-wavelengths: the paper tier's CPU-hours from a run's cost per
     particle-step c / (p s): 22 runs of 13500 + 6 k^3 particles (k = 3 ... 13), 8000 steps"""
@@ -3166,6 +3183,7 @@ COMMANDS = {
     'rename': lambda a: rename_rows(a[0], a[1:]),
     # summary-diff SUMMARY A B Q
     'summary-diff': lambda a: summary_diff(a[0], a[1], a[2], a[3]),
+    'tolerance-to-pass': lambda a: tolerance_to_pass(a[0], a[1], a[2], a[3]),
     'tab01-projected-cpu-hours': lambda a: tab01_projected_cpu_hours(a[0], a[1], a[2]),
     # tab01-tables SUMMARY PAPER1 TABLE1_OUT LAMBDA_OUT
     'tab01-tables': lambda a: _write2(tab01_tables(a[0], a[1]), a[2], a[3]),

@@ -50,6 +50,7 @@ T() { # T DESCRIPTION EXPECTED_RC COMMAND... ; output in $root/out
 has()   { if grep -q -e "$2" "$root/out"; then ok "$1"; else bad "$1: no match for '$2'" "$root/out"; fi; }
 lacks() { if grep -q -e "$2" "$root/out"; then bad "$1: unexpected match for '$2'" "$root/out"; else ok "$1"; fi; }
 in_file() { if grep -q -e "$3" "$2"; then ok "$1"; else bad "$1: no '$3' in ${2#"$root"/}" "$2"; fi; }
+not_in_file() { if grep -q -e "$3" "$2"; then bad "$1: unexpected '$3' in ${2#"$root"/}" "$2"; else ok "$1"; fi; }
 
 tab() { local IFS=$'\t'; printf '%s\n' "$*"; }
 BANDS_HEADER=$(tab quantity tier kind lo hi k_sigma resolution paper source expect)
@@ -983,6 +984,17 @@ T "run-experiment: an analysis that runs simulations itself" 0 RX "$rx/tools/run
 if [ "$(tr '\n' ' ' < "$log")" = "a resume=1 direct resume=0 " ]; then ok "run-experiment: the declared simulation on the pool, then the analysis's own"
 else bad "run-experiment: ran: $(tr '\n' ' ' < "$log")"; fi
 in_file "run-experiment: the analysis read its own simulation" "$rx/results/t/d/quick/summary.tsv" '^q_direct	1.5	0.1$'
+in_file "run-experiment: an analysis's own simulations: their simulator recorded" "$rx/results/t/d/quick/provenance.tsv" '^analysis_simulator	fake1$'
+# its reanalysis runs them again, here: a run, whose provenance is this attempt's (not the old
+# date and host a reanalysis of declared simulations keeps)
+sed -i 's/^date	.*/date	2001-01-01T00:00:00Z/; s/^host_cpu	.*/host_cpu	somewhere else/' "$rx/results/t/d/quick/provenance.tsv"
+: > "$log"
+T "run-experiment --reanalyse: an analysis that runs simulations itself" 0 RX "$rx/tools/run-experiment" t/d quick --reanalyse
+if [ "$(tr '\n' ' ' < "$log")" = "direct resume=0 " ]; then ok "run-experiment --reanalyse: the analysis's own simulation ran again, the declared one kept"
+else bad "run-experiment --reanalyse: ran: $(tr '\n' ' ' < "$log")"; fi
+not_in_file "run-experiment --reanalyse: simulations in the analysis, so not the old date" "$rx/results/t/d/quick/provenance.tsv" '^date	2001-01-01T00:00:00Z$'
+not_in_file "run-experiment --reanalyse: simulations in the analysis, so not the old host" "$rx/results/t/d/quick/provenance.tsv" '^host_cpu	somewhere else$'
+in_file "run-experiment --reanalyse: simulations in the analysis: their simulator" "$rx/results/t/d/quick/provenance.tsv" '^analysis_simulator	fake1$'
 # every experiment of the repository declares its simulations (functions simulations and analysis,
 # run.sh ending with the line experiment: tools/lib/exp.sh), or runs another's run.sh that does
 # (fig05-relative-viscosity-a650: fig04's with another repulsion)
