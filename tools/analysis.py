@@ -957,10 +957,7 @@ def tolerance_to_pass(summary, q, theory, out):
     v, se, t = num(V[q]), num(S[q]), num(theory)
     if isnan_text(V[q]) or isnan_text(S[q]) or t == 0:
         return [Val().row(out)]
-    d = v - t
-    d = -d if d < 0 else d
-    a = -t if t < 0 else t
-    return [Val((d + 2 * se) / a, se / a).row(out)]
+    return [Val((abs(v - t) + 2 * se) / abs(t), se / abs(t)).row(out)]
 
 
 def tab01_projected_cpu_hours(c, p, s):
@@ -3183,6 +3180,7 @@ COMMANDS = {
     'rename': lambda a: rename_rows(a[0], a[1:]),
     # summary-diff SUMMARY A B Q
     'summary-diff': lambda a: summary_diff(a[0], a[1], a[2], a[3]),
+    # tolerance-to-pass SUMMARY Q THEORY OUT
     'tolerance-to-pass': lambda a: tolerance_to_pass(a[0], a[1], a[2], a[3]),
     'tab01-projected-cpu-hours': lambda a: tab01_projected_cpu_hours(a[0], a[1], a[2]),
     # tab01-tables SUMMARY PAPER1 TABLE1_OUT LAMBDA_OUT
