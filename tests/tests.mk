@@ -31,7 +31,7 @@ $(BUILD)/tests/dpd: $(BUILD)/main.o $(BUILD)/libdpd.a
 TEST_SCRIPTS := tests/checkpoint.sh tests/io_errors.sh tests/scene_errors.sh tests/blowup.sh \
   tests/h5md.sh tests/layers.sh tests/tcaf_fit.sh tests/precision.sh tests/bare.sh tests/skips.sh \
   tests/analysis.py tests/bands_diff.sh tests/fit_line.sh tests/claim_groups.sh tests/library_exits.sh \
-  tests/in_flight.sh tests/version.sh tests/analyse_server.sh
+  tests/in_flight.sh tests/version.sh tests/analyse_server.sh tests/stage2_plan.sh
 SLOW_BINS := test_transverse_relaxation test_thermostat test_bonds test_msd test_rotation test_forces
 SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(notdir $(TEST_BINS)))
 # the suites that run no code a sanitizer instruments: source checks (layers, library_exits), the
@@ -39,7 +39,7 @@ SUITES := $(SLOW_BINS) $(notdir $(TEST_SCRIPTS)) $(filter-out $(SLOW_BINS),$(not
 # version.sh, which builds a release binary of its own. make test runs them; make test SANITIZE=1
 # (the same suites again under ASan and UBSan) leaves them out and says so.
 UNSANITIZED_SUITES := layers.sh library_exits.sh version.sh precision.sh analyse_server.sh analysis.py \
-  bands_diff.sh claim_groups.sh
+  bands_diff.sh claim_groups.sh stage2_plan.sh
 ifeq ($(SANITIZE),1)
   SUITES := $(filter-out $(UNSANITIZED_SUITES),$(SUITES))
 endif
