@@ -363,6 +363,50 @@ if [ "${MODULES:-1}" = 1 ]; then
     column -t -s $'\t' bench/modules.tsv
 fi
 
+# ---- the memory of a run's series: bench/series.cfg (every step sampled) at 2000 and 60000
+# production steps, a checkpoint every 10000 steps. What a sample costs: the peak RSS of the long
+# run less the short run's, over the samples added; what it holds: the growth of the checkpoint
+# between two of its writes (the series are the only part of it that grows), over the samples
+# between them. Their ratio is 1 when the series are held once; growth by doubling makes it up
+# to 2, and a checkpoint copied into a buffer before it is written adds 1 more. With
+# BASE=path/to/earlier/dpd the same for it, side by side in one run. Written to bench/series.tsv.
+# SERIES=0 skips it.
+if [ "${SERIES:-1}" = 1 ]; then
+    series_run() {  # BIN STEPS DIR -> "peak RSS [kB]<TAB>checkpoint bytes per step" (the second
+        # from the first two checkpoints seen while it runs; "-" if fewer were seen)
+        local b=$1 d=$out/$3 seen="" st sz
+        rm -rf "$d"
+        "$b" run bench/series.cfg --out "$d" --threads 1 --quiet --checkpoint-every 10000 --set steps="$2" >/dev/null &
+        local pid=$!
+        while kill -0 "$pid" 2>/dev/null; do
+            if [ -e "$d/checkpoint.dpd" ] && cp "$d/checkpoint.dpd" "$d.ck" 2>/dev/null &&
+               st=$("$DPD" checkpoint-info "$d.ck" 2>/dev/null | awk -F'\t' '$1 == "step" { print $2 }'); then
+                sz=$(stat -c %s "$d.ck")
+                case " $seen " in *" $st:"*) ;; *) seen="$seen $st:$sz" ;; esac
+            fi
+            sleep 0.1
+        done
+        wait "$pid"; rm -f "$d.ck"
+        printf '%s\t%s\n' "$(awk -F'\t' '$1 == "peak_rss_kb" { print $2 }' "$d/provenance.tsv")" \
+            "$(echo $seen | tr ' :' '\n ' | awk 'NF == 2 && n < 2 { s[++n] = $1; z[n] = $2 }
+                END { if (n == 2 && s[2] != s[1]) printf "%.1f", (z[2] - z[1]) / (s[2] - s[1]); else print "-" }')"
+    }
+    {
+        printf 'binary\tpeak RSS, 2000 steps [kB]\tpeak RSS, 60000 steps [kB]\tmemory per sample [B]\tseries per sample [B]\tmemory / series\tnote\n'
+        for b in "$DPD" ${BASE:+"$BASE"}; do
+            short=$(series_run "$b" 2000 series-short | cut -f1); read -r long held < <(series_run "$b" 60000 series-long)
+            per=$(awk -v s="$short" -v l="$long" 'BEGIN{printf "%.1f", (l - s) * 1024 / 58000}')
+            printf '%s\t%s\t%s\t%s\t%s\t%s\tbench/series.cfg, 1 thread, every step sampled\n' "$("$b" --version 2>&1 | head -1)" \
+                "$short" "$long" "$per" "$held" "$(awk -v p="$per" -v h="$held" 'BEGIN{ if (h + 0 > 0) printf "%.2f", p / h; else print "-" }')"
+        done
+        printf 'date, commit\t%s\t%s\t-\t-\t-\t%s\n' "$(date -u +%Y-%m-%d)" "$(stamp)" "$(uname -m)"
+    } > "$out/series.tsv"
+    cp "$out/series.tsv" bench/series.tsv
+    echo
+    echo "the memory of a run's series (bench/series.tsv):"
+    column -t -s $'\t' bench/series.tsv
+fi
+
 # ---- a refactor against the binary before it (issue 24): BASE=path/to/earlier/dpd (e.g. built by
 # `git worktree add /tmp/base COMMIT && make -C /tmp/base bin/dpd`). For the four kernels -- the
 # standard scene, the general weight exponent (the mai-duy-2019 solvent, bench/mai-duy-solvent.cfg in

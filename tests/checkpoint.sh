@@ -147,6 +147,25 @@ check "checkpoint-info: the time is step x dt, the particles the header's" \
 check "checkpoint-info: no checkpoint there, status 2, named" bash -c "[ $st -eq 2 ] && grep -q 'no checkpoint $tmp/checkpoint.dpd' '$tmp/err'"
 "$DPD" checkpoint-info "$scene" 2>"$tmp/err"; st=$?
 check "checkpoint-info: a scene file is not a checkpoint, status 2" bash -c "[ $st -eq 2 ] && grep -q 'is not a dpd checkpoint' '$tmp/err'"
+# the checksum is summed over the file in 64 KiB chunks, the last 8 bytes (the stored sum) held
+# back: files of the real header (magic to time, 40 bytes), zero padding and their sum (reseal), of
+# every size that splits the sum across a chunk boundary, at one and on either side, are read; a
+# byte flipped in the padding just before the sum, or in the sum, is corrupt
+cut_ok=0 cut_bad=""
+for size in 48 65535 65536 65537 65538 65539 65540 65541 65542 65543 65544 65545 131075; do
+    f=$tmp/cut$size.dpd
+    { head -c 40 "$tmp/trunc/checkpoint.dpd"; head -c $((size - 40)) /dev/zero; } > "$f"
+    reseal "$f" ""
+    if [ "$(info "$f" step)" = "$raw_step" ]; then cut_ok=$((cut_ok + 1)); else cut_bad="$cut_bad $size"; fi
+    cp "$f" "$f.pad"; printf '\001' | dd of="$f.pad" bs=1 seek=$((size - 9)) conv=notrunc 2>/dev/null
+    cp "$f" "$f.sum"; printf '\001' | dd of="$f.sum" bs=1 seek=$((size - 4)) conv=notrunc 2>/dev/null
+    for g in "$f.pad" "$f.sum"; do
+        "$DPD" checkpoint-info "$g" > /dev/null 2> "$tmp/err" && cut_bad="$cut_bad $size:${g##*.}-accepted"
+        grep -q 'is corrupt' "$tmp/err" || cut_bad="$cut_bad $size:${g##*.}-message"
+    done
+done
+check "checkpoint-info: 13 file sizes around the 64 KiB read boundary read, and each with a byte flipped before or in the sum corrupt ($cut_ok read;${cut_bad:- none wrong})" \
+    test "$cut_ok" = 13 -a -z "$cut_bad"
 truncate -s 1000 "$tmp/trunc/checkpoint.dpd"
 "$DPD" checkpoint-info "$tmp/trunc" 2>"$tmp/err"; st=$?
 check "checkpoint-info: a truncated checkpoint, status 2, corrupt" bash -c "[ $st -eq 2 ] && grep -q 'checkpoint.dpd is corrupt' '$tmp/err'"

@@ -8,6 +8,7 @@ int series_push(Series *s, double x)
 {
     if (s->n == s->cap) {
         size_t cap = s->cap ? 2 * s->cap : 256;
+        if (cap < s->expect) cap = s->expect;
         double *p = realloc(s->v, cap * sizeof *p);
         if (!p) return -1;
         s->v = p;

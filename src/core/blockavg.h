@@ -14,9 +14,14 @@
 typedef struct {
     double *v;
     size_t n, cap;
+    /* the samples the run will push, when known (0: not known): the first
+     * growth reserves them all, so that a long run holds its series once and
+     * not up to twice over (doubling); untouched pages cost no memory */
+    size_t expect;
 } Series;
 
 int    series_push(Series *s, double x);
+/* Free the values; the expected count stays. */
 void   series_free(Series *s);
 /* Mean and the standard error from nblocks equal contiguous blocks (the
  * remainder at the start is dropped). With fewer samples than blocks, or more

@@ -4,6 +4,13 @@
 #include <string.h>
 #include "io.h"
 
+uint64_t io_fnv1a(const void *data, size_t len, uint64_t h)
+{
+    const unsigned char *p = data;
+    for (size_t k = 0; k < len; k++) { h ^= p[k]; h *= 1099511628211ULL; }
+    return h;
+}
+
 void io_fail(Io *io, const char *what)
 {
     io->bad = 1;
@@ -15,6 +22,7 @@ void io_bytes(Io *io, void *p, size_t len, const char *what)
     if (io->bad || len == 0) return;
     if (!io->reading) {
         if (fwrite(p, 1, len, io->out) != len) io_fail(io, what);
+        io->sum = io_fnv1a(p, len, io->sum);
         return;
     }
     if (len > io->len - io->pos) { io_fail(io, what); return; }
@@ -39,10 +47,12 @@ void io_series(Io *io, Series *s, const char *what)
     if (io->reading) {
         if (n > (io->len - io->pos) / sizeof(double)) { io_fail(io, what); return; }
         series_free(s);
-        if (n > 0) {
-            s->v = malloc((size_t)n * sizeof(double));
+        if (n > 0) {   /* room for the samples still to come, as series_push would reserve */
+            const size_t cap = s->expect > n ? s->expect : (size_t)n;
+            s->v = malloc(cap * sizeof(double));
             if (!s->v) { io_fail(io, what); return; }
-            s->n = s->cap = (size_t)n;
+            s->n = (size_t)n;
+            s->cap = cap;
         }
     }
     io_bytes(io, s->v, (size_t)n * sizeof(double), what);

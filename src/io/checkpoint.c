@@ -35,10 +35,7 @@ static const char MAGIC[8] = {'D', 'P', 'D', 'C', 'K', 'P', 'T', '\n'};
 
 uint64_t checkpoint_hash(const void *data, size_t len, uint64_t h)
 {
-    const unsigned char *p = data;
-    if (h == 0) h = 1469598103934665603ULL;
-    for (size_t k = 0; k < len; k++) { h ^= p[k]; h *= 1099511628211ULL; }
-    return h;
+    return io_fnv1a(data, len, h ? h : IO_FNV_BASIS);
 }
 
 /* step, time, the Lees-Edwards offset and the particles in their current order */
@@ -184,34 +181,30 @@ static void header(Io *io, uint64_t *hash, uint32_t *version, uint32_t *n, char 
 int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, const NeighborList *nl,
                      const Measure *m, const CheckpointExtra *x, char *err, size_t errlen)
 {
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *mem = open_memstream(&buf, &len);
-    if (!mem) { snprintf(err, errlen, "out of memory for the checkpoint"); return -1; }
-    Io io = {.reading = 0, .out = mem};
-    uint64_t h = scene_hash;
-    uint32_t version = CHECKPOINT_VERSION, n = (uint32_t)s->n;
-    char magic[8];
-    memcpy(magic, MAGIC, 8);
-    header(&io, &h, &version, &n, magic);
-    /* the traversal only reads through these pointers when writing */
-    io_state(&io, (System *)s, (NeighborList *)nl, (Measure *)m, (CheckpointExtra *)x);
-    if (fclose(mem) || io.bad) { free(buf); snprintf(err, errlen, "out of memory for the checkpoint"); return -1; }
-    const uint64_t sum = checkpoint_hash(buf, len, 0);
     char path[1100], tmp[1100];
     snprintf(path, sizeof path, "%s/%s", dir, CHECKPOINT_FILE);
     snprintf(tmp, sizeof tmp, "%s/.%s.part", dir, CHECKPOINT_FILE);
+    /* written straight to the file, its checksum summed on the way: a run's
+     * series are held once, not copied into a buffer every checkpoint */
     FILE *f = fopen(tmp, "wb");
     int bad = !f;
     if (f) {
-        bad |= fwrite(buf, 1, len, f) != len;
+        Io io = {.reading = 0, .out = f, .sum = IO_FNV_BASIS};
+        uint64_t h = scene_hash;
+        uint32_t version = CHECKPOINT_VERSION, n = (uint32_t)s->n;
+        char magic[8];
+        memcpy(magic, MAGIC, 8);
+        header(&io, &h, &version, &n, magic);
+        /* the traversal only reads through these pointers when writing */
+        io_state(&io, (System *)s, (NeighborList *)nl, (Measure *)m, (CheckpointExtra *)x);
+        const uint64_t sum = io.sum;
+        bad |= io.bad;
         bad |= fwrite(&sum, sizeof sum, 1, f) != 1;
         bad |= fflush(f) != 0;
         bad |= fsync(fileno(f)) != 0;
         bad |= fclose(f) != 0;
     }
     const int e = errno;
-    free(buf);
     if (bad || rename(tmp, path)) {
         snprintf(err, errlen, "cannot write the checkpoint %s: %s", path, strerror(bad ? e : errno));
         unlink(tmp);
@@ -223,8 +216,10 @@ int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, cons
 }
 
 /* The content of the checkpoint file at path, its checksum verified and stripped: 0 (*buf malloc'd,
- * *len its bytes), 1 (no such file) or -1 with err set. */
-static int read_verified(const char *path, char **buf, size_t *len, char *err, size_t errlen)
+ * *len its bytes), 1 (no such file) or -1 with err set. The checksum is summed over the file in
+ * chunks before anything is kept, so the content is held once; with keep < the content's length
+ * only its first keep bytes are (checkpoint_info: the header of a checkpoint of any size). */
+static int read_verified(const char *path, size_t keep, char **buf, size_t *len, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
@@ -233,31 +228,53 @@ static int read_verified(const char *path, char **buf, size_t *len, char *err, s
         return -1;
     }
     *buf = NULL;
-    *len = 0;
-    FILE *mem = open_memstream(buf, len);
-    if (!mem) { fclose(f); snprintf(err, errlen, "out of memory reading %s", path); return -1; }
-    char chunk[65536];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) fwrite(chunk, 1, got, mem);
+    uint64_t h = IO_FNV_BASIS, sum = 0;
+    unsigned char chunk[65536], tail[8];
+    size_t total = 0, got, held = 0;   /* the last 8 bytes read are held back: the stored sum */
+    char magic[8] = {0};
+    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
+        if (total < 8) memcpy(magic + total, chunk, got < 8 - total ? got : 8 - total);
+        const size_t n = held + got;   /* bytes not yet summed: tail[0..held) then chunk */
+        const size_t sum_n = n > 8 ? n - 8 : 0;
+        const size_t from_tail = sum_n < held ? sum_n : held;
+        h = io_fnv1a(tail, from_tail, h);
+        h = io_fnv1a(chunk, sum_n - from_tail, h);
+        unsigned char rest[8];   /* the last min(n, 8) bytes become the new tail */
+        size_t r = 0;
+        for (size_t k = from_tail; k < held; k++) rest[r++] = tail[k];
+        for (size_t k = sum_n - from_tail; k < got; k++) rest[r++] = chunk[k];
+        memcpy(tail, rest, r);
+        held = r;
+        total += got;
+    }
     const int rerr = ferror(f);
-    fclose(f);
-    if (fclose(mem) || rerr) { free(*buf); snprintf(err, errlen, "cannot read the checkpoint %s", path); return -1; }
-    uint64_t sum;
-    if (*len < 8 || memcmp(*buf, MAGIC, 8)) {   /* another file: no advice to delete it */
-        free(*buf);
+    if (rerr) { fclose(f); snprintf(err, errlen, "cannot read the checkpoint %s", path); return -1; }
+    if (total < 8 || memcmp(magic, MAGIC, 8)) {   /* another file: no advice to delete it */
+        fclose(f);
         snprintf(err, errlen, "%s is not a dpd checkpoint", path);
         return -1;
     }
-    if (*len < sizeof sum + 8) {
-        free(*buf);
-        snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, *len);
+    if (total < sizeof sum + 8) {
+        fclose(f);
+        snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, total);
         return -1;
     }
-    memcpy(&sum, *buf + *len - sizeof sum, sizeof sum);
-    *len -= sizeof sum;
-    if (checkpoint_hash(*buf, *len, 0) != sum) {
-        free(*buf);
+    memcpy(&sum, tail, sizeof sum);
+    if (h != sum) {
+        fclose(f);
         snprintf(err, errlen, "checkpoint %s is corrupt (checksum mismatch); delete it to start afresh", path);
+        return -1;
+    }
+    *len = total - sizeof sum;
+    if (keep < *len) *len = keep;
+    *buf = malloc(*len ? *len : 1);
+    if (!*buf) { fclose(f); snprintf(err, errlen, "out of memory reading %s", path); return -1; }
+    rewind(f);
+    const size_t back = fread(*buf, 1, *len, f);
+    fclose(f);
+    if (back != *len) {   /* the file changed under us */
+        free(*buf);
+        snprintf(err, errlen, "cannot read the checkpoint %s", path);
         return -1;
     }
     return 0;
@@ -267,7 +284,7 @@ int checkpoint_info(const char *path, CheckpointInfo *ci, char *err, size_t errl
 {
     char *buf;
     size_t len;
-    const int got = read_verified(path, &buf, &len, err, errlen);
+    const int got = read_verified(path, 64, &buf, &len, err, errlen);   /* header, step and time */
     if (got == 1) snprintf(err, errlen, "no checkpoint %s", path);
     if (got) return -1;
     Io io = {.reading = 1, .in = (const unsigned char *)buf, .len = len};
@@ -288,7 +305,7 @@ int checkpoint_read(const char *dir, uint64_t scene_hash, System *s, NeighborLis
     snprintf(path, sizeof path, "%s/%s", dir, CHECKPOINT_FILE);
     char *buf;
     size_t len;
-    const int got = read_verified(path, &buf, &len, err, errlen);
+    const int got = read_verified(path, SIZE_MAX, &buf, &len, err, errlen);
     if (got) return got;
     Io io = {.reading = 1, .in = (const unsigned char *)buf, .len = len};
     uint64_t h = 0;

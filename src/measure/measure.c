@@ -44,9 +44,25 @@ static int msd_groups_init(Measure *m, const System *s)
     return 0;
 }
 
+/* The series sampled every `every` production steps (sample_thermo, sample_com)
+ * expect nsamples_expected values: each reserves them at its first sample. */
+static void expect_samples(Measure *m)
+{
+    const size_t n = m->nsamples_expected > 0 ? (size_t)m->nsamples_expected : 0;
+    m->temperature.expect = m->pressure.expect = m->epot.expect = m->rot_temperature.expect = n;
+    for (int p = 0; p < STRESS_PARTS; p++)
+        for (int k = 0; k < 9; k++) m->P[p][k].expect = n;
+    for (int t = 0; t < DPD_MAX_TYPES; t++)
+        for (int d = 0; d < 3; d++)
+            m->frozen_force[t][d].expect = m->frozen_torque[t][d].expect = m->frozen_drag[t][d].expect =
+                m->frozen_torque_random[t][d].expect = n;
+    for (int d = 0; d < 3; d++) m->com_v[d].expect = m->com_r[d].expect = n;
+}
+
 int measure_init(Measure *m, const System *s)
 {
     m->n = s->n;
+    expect_samples(m);
     if (field_init(&m->field, &m->field_par, s, m->nblocks)) return -1;
     m->n_mobile = 0;
     for (int i = 0; i < s->n; i++) m->n_mobile += !s->types[s->type[i]].frozen;
