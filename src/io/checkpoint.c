@@ -272,9 +272,11 @@ static int read_verified(const char *path, size_t keep, char **buf, size_t *len,
     rewind(f);
     const size_t back = fread(*buf, 1, *len, f);
     fclose(f);
-    if (back != *len) {   /* the file changed under us */
+    /* the bytes kept are the bytes summed (a writer replaces the file, never rewrites it in place,
+     * but a copy or a restore might): the whole content is summed again */
+    if (back != *len || (*len == total - sizeof sum && io_fnv1a(*buf, *len, IO_FNV_BASIS) != sum)) {
         free(*buf);
-        snprintf(err, errlen, "cannot read the checkpoint %s", path);
+        snprintf(err, errlen, "checkpoint %s changed while it was read; run again", path);
         return -1;
     }
     return 0;
