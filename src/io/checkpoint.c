@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <unistd.h>
+#include <sys/stat.h>
 #include "checkpoint.h"
 #include "io.h"
 #include "bonds.h"
@@ -228,28 +229,16 @@ static int read_verified(const char *path, size_t keep, char **buf, size_t *len,
         return -1;
     }
     *buf = NULL;
-    uint64_t h = IO_FNV_BASIS, sum = 0;
-    unsigned char chunk[65536], tail[8];
-    size_t total = 0, got, held = 0;   /* the last 8 bytes read are held back: the stored sum */
-    char magic[8] = {0};
-    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
-        if (total < 8) memcpy(magic + total, chunk, got < 8 - total ? got : 8 - total);
-        const size_t n = held + got;   /* bytes not yet summed: tail[0..held) then chunk */
-        const size_t sum_n = n > 8 ? n - 8 : 0;
-        const size_t from_tail = sum_n < held ? sum_n : held;
-        h = io_fnv1a(tail, from_tail, h);
-        h = io_fnv1a(chunk, sum_n - from_tail, h);
-        unsigned char rest[8];   /* the last min(n, 8) bytes become the new tail */
-        size_t r = 0;
-        for (size_t k = from_tail; k < held; k++) rest[r++] = tail[k];
-        for (size_t k = sum_n - from_tail; k < got; k++) rest[r++] = chunk[k];
-        memcpy(tail, rest, r);
-        held = r;
-        total += got;
+    struct stat st;
+    if (fstat(fileno(f), &st) != 0) {
+        fclose(f);
+        snprintf(err, errlen, "cannot read the checkpoint %s: %s", path, strerror(errno));
+        return -1;
     }
-    const int rerr = ferror(f);
-    if (rerr) { fclose(f); snprintf(err, errlen, "cannot read the checkpoint %s", path); return -1; }
-    if (total < 8 || memcmp(magic, MAGIC, 8)) {   /* another file: no advice to delete it */
+    const size_t total = st.st_size > 0 ? (size_t)st.st_size : 0;
+    uint64_t sum = 0;
+    char magic[8] = {0};
+    if (total < 8 || fread(magic, 1, 8, f) != 8 || memcmp(magic, MAGIC, 8)) {   /* another file: no advice to delete it */
         fclose(f);
         snprintf(err, errlen, "%s is not a dpd checkpoint", path);
         return -1;
@@ -259,7 +248,22 @@ static int read_verified(const char *path, size_t keep, char **buf, size_t *len,
         snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, total);
         return -1;
     }
-    memcpy(&sum, tail, sizeof sum);
+    /* the content summed in chunks, then the stored sum after it */
+    uint64_t h = io_fnv1a(magic, 8, IO_FNV_BASIS);
+    unsigned char chunk[65536];
+    size_t left = total - sizeof sum - 8;
+    int rerr = 0;
+    while (left > 0 && !rerr) {
+        const size_t want = left < sizeof chunk ? left : sizeof chunk;
+        rerr = fread(chunk, 1, want, f) != want;
+        h = io_fnv1a(chunk, want, h);
+        left -= want;
+    }
+    if (rerr || fread(&sum, sizeof sum, 1, f) != 1) {
+        fclose(f);
+        snprintf(err, errlen, "cannot read the checkpoint %s", path);
+        return -1;
+    }
     if (h != sum) {
         fclose(f);
         snprintf(err, errlen, "checkpoint %s is corrupt (checksum mismatch); delete it to start afresh", path);
