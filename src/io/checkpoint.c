@@ -217,9 +217,9 @@ int checkpoint_write(const char *dir, uint64_t scene_hash, const System *s, cons
 }
 
 /* The content of the checkpoint file at path, its checksum verified and stripped: 0 (*buf malloc'd,
- * *len its bytes), 1 (no such file) or -1 with err set. The checksum is summed over the file in
- * chunks before anything is kept, so the content is held once; with keep < the content's length
- * only its first keep bytes are (checkpoint_info: the header of a checkpoint of any size). */
+ * *len its bytes), 1 (no such file) or -1 with err set. The file is read once, in chunks: the
+ * content is held once, and with keep < its length only its first keep bytes are
+ * (checkpoint_info: the header of a checkpoint of any size), all of it summed. */
 static int read_verified(const char *path, size_t keep, char **buf, size_t *len, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
@@ -248,39 +248,34 @@ static int read_verified(const char *path, size_t keep, char **buf, size_t *len,
         snprintf(err, errlen, "checkpoint %s is truncated (%zu bytes)", path, total);
         return -1;
     }
-    /* the content summed in chunks, then the stored sum after it */
+    /* one pass: the content summed in chunks, its first *len bytes kept as they go by (so the
+     * bytes kept are the bytes summed), then the stored sum after it */
+    const size_t content = total - sizeof sum;
+    *len = keep < content ? keep : content;
+    *buf = malloc(*len ? *len : 1);
+    if (!*buf) { fclose(f); snprintf(err, errlen, "out of memory reading %s", path); return -1; }
+    memcpy(*buf, magic, *len < 8 ? *len : 8);
     uint64_t h = io_fnv1a(magic, 8, IO_FNV_BASIS);
     unsigned char chunk[65536];
-    size_t left = total - sizeof sum - 8;
+    size_t pos = 8;
     int rerr = 0;
-    while (left > 0 && !rerr) {
-        const size_t want = left < sizeof chunk ? left : sizeof chunk;
+    while (pos < content && !rerr) {
+        const size_t want = content - pos < sizeof chunk ? content - pos : sizeof chunk;
         rerr = fread(chunk, 1, want, f) != want;
         h = io_fnv1a(chunk, want, h);
-        left -= want;
+        if (pos < *len) memcpy(*buf + pos, chunk, *len - pos < want ? *len - pos : want);
+        pos += want;
     }
-    if (rerr || fread(&sum, sizeof sum, 1, f) != 1) {
-        fclose(f);
+    rerr = rerr || fread(&sum, sizeof sum, 1, f) != 1;
+    fclose(f);
+    if (rerr) {
+        free(*buf);
         snprintf(err, errlen, "cannot read the checkpoint %s", path);
         return -1;
     }
     if (h != sum) {
-        fclose(f);
-        snprintf(err, errlen, "checkpoint %s is corrupt (checksum mismatch); delete it to start afresh", path);
-        return -1;
-    }
-    *len = total - sizeof sum;
-    if (keep < *len) *len = keep;
-    *buf = malloc(*len ? *len : 1);
-    if (!*buf) { fclose(f); snprintf(err, errlen, "out of memory reading %s", path); return -1; }
-    rewind(f);
-    const size_t back = fread(*buf, 1, *len, f);
-    fclose(f);
-    /* the bytes kept are the bytes summed (a writer replaces the file, never rewrites it in place,
-     * but a copy or a restore might): the whole content is summed again */
-    if (back != *len || (*len == total - sizeof sum && io_fnv1a(*buf, *len, IO_FNV_BASIS) != sum)) {
         free(*buf);
-        snprintf(err, errlen, "checkpoint %s changed while it was read; run again", path);
+        snprintf(err, errlen, "checkpoint %s is corrupt (checksum mismatch); delete it to start afresh", path);
         return -1;
     }
     return 0;
